@@ -1,0 +1,67 @@
+/**
+ * \file
+ * \brief The interface every device backend implements.
+ */
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ptz_action_server/core/types.h"
+
+namespace ptz_action_server
+{
+/// A name/value pair a backend reports in the node's diagnostics.
+using DiagnosticValue = std::pair<std::string, std::string>;
+
+/**
+ * \brief A pan-tilt(-zoom) device, seen by the node.
+ *
+ * Threading contract (as ros_control's RobotHW states which calls may block):
+ * - start() may block for a bounded time (opening a port, a handshake); it is called once, before any other call
+ *   but name()/capabilities(), from the node's main thread.
+ * - goTo(), moveAtVelocity(), stop(), sample(), lastFault() and diagnostics() never block on I/O: commands are
+ *   queued to the backend's own I/O thread, and sample() returns the latest snapshot. They may be called from
+ *   any thread.
+ * - The destructor stops the I/O thread and joins it.
+ *
+ * Commands retarget the device from wherever it is: a goTo() while moving must not stop in between.
+ */
+class PtzBackend
+{
+public:
+  virtual ~PtzBackend() = default;
+
+  /// Short backend name, as used to load it ("sim", "pantilt_udp", ...).
+  virtual std::string name() const = 0;
+
+  /// Limits and speeds of the device. Valid after start(); backends that read them from the device do so there.
+  virtual Capabilities capabilities() const = 0;
+
+  /// Opens the device and starts the I/O thread. Throws BackendError with a reason when it cannot.
+  virtual void start() = 0;
+
+  /// Moves every present axis to \p position (pan, tilt in rad; zoom as X-factor).
+  virtual void goTo(const AxisValues& position) = 0;
+
+  /// Moves every present axis at \p velocity (rad/s, X/s) until stop(), another command or a limit.
+  virtual void moveAtVelocity(const AxisValues& velocity) = 0;
+
+  /// Decelerates every axis to rest where it is.
+  virtual void stop() = 0;
+
+  /// The latest state of the device. Never blocks on I/O.
+  virtual PtzSample sample() const = 0;
+
+  /// Text of the most recent device fault (the one that last incremented PtzSample::fault_count).
+  virtual std::string lastFault() const = 0;
+
+  /// Appends link details and counters (dropped frames and the like) for the node's diagnostics.
+  virtual void diagnostics(std::vector<DiagnosticValue>& values) const
+  {
+    (void)values;
+  }
+};
+
+}  // namespace ptz_action_server

@@ -1,0 +1,96 @@
+/**
+ * \file
+ * \brief Decides, sample by sample, whether an active goal has succeeded, failed or goes on.
+ *
+ * gripper_action_controller's checkForSuccess is the single-axis model: success only when every axis is inside its
+ * tolerance and the device has settled; a stall, a timeout, a lost link or a device fault end the goal with a reason.
+ */
+#pragma once
+
+#include <string>
+
+#include "ptz_action_server/core/types.h"
+
+namespace ptz_action_server
+{
+/// How goals are judged. The ROS layer fills it from parameters once.
+struct GoalMonitorConfig
+{
+  AxisValues tolerance{ { 0.005, 0.005, 0.05 } };  ///< position tolerance: rad, rad, X
+  double stall_timeout = 1.0;   ///< s an axis may stay still while it still has to move
+  double timeout_scale = 1.5;   ///< goal timeout = expected duration x scale + margin ...
+  double timeout_margin = 2.0;  ///< ... in s
+  double fixed_timeout = 0.0;   ///< > 0: use this timeout (s) instead of the estimate
+  double stop_timeout = 5.0;    ///< s a cancelled goal waits for the device to come to rest
+};
+
+enum class GoalPhase
+{
+  ACTIVE,
+  SUCCEEDED,
+  ABORTED,
+};
+
+/// What a sample means for the goal.
+struct GoalVerdict
+{
+  GoalPhase phase = GoalPhase::ACTIVE;
+  AxisValues remaining{};     ///< goal minus current, signed: positions, or velocities for a velocity goal
+  std::string reason;         ///< why the goal ended (empty while ACTIVE)
+  bool device_fault = false;  ///< the device reported a fault: the caller appends the backend's fault text
+  bool stop_device = false;   ///< the caller must stop the device (a velocity goal hit a limit)
+};
+
+/// Watches one goal. Not thread-safe: one owner thread calls update().
+class GoalMonitor
+{
+public:
+  /// A goal to reach \p target (absent axes are ignored).
+  static GoalMonitor forPosition(const AxisValues& target, const PtzSample& start, const Capabilities& capabilities,
+                                 const GoalMonitorConfig& config, TimePoint now);
+  /// A goal to move at \p velocity; all zeros means "stop", which succeeds once the device rests.
+  static GoalMonitor forVelocity(const AxisValues& velocity, const PtzSample& start,
+                                 const Capabilities& capabilities, const GoalMonitorConfig& config, TimePoint now);
+  /// A cancelled goal whose device is being stopped: it ends once the device rests (or stop_timeout passes).
+  static GoalMonitor forStop(const PtzSample& start, const GoalMonitorConfig& config, TimePoint now);
+
+  /// Judges the goal at \p sample. Once it returns a final verdict, the goal is over.
+  GoalVerdict update(const PtzSample& sample, TimePoint now);
+
+  /// The timeout of a position goal in s (0 for goals without one).
+  double timeout() const
+  {
+    return timeout_;
+  }
+
+private:
+  enum class Kind
+  {
+    POSITION,
+    VELOCITY,
+    STOP,
+  };
+
+  GoalMonitor(Kind kind, const AxisValues& goal, const PtzSample& start, const Capabilities& capabilities,
+              const GoalMonitorConfig& config, TimePoint now);
+
+  GoalVerdict updatePosition(const PtzSample& sample, TimePoint now, GoalVerdict verdict);
+  GoalVerdict updateVelocity(const PtzSample& sample, TimePoint now, GoalVerdict verdict);
+  GoalVerdict updateStop(const PtzSample& sample, TimePoint now, GoalVerdict verdict);
+  /// Marks progress on moving axes; returns the axis that has not moved for stall_timeout, or AXIS_COUNT.
+  std::size_t findStalledAxis(const PtzSample& sample, TimePoint now, const std::array<bool, AXIS_COUNT>& must_move);
+  std::string describePosition(const PtzSample& sample) const;
+
+  Kind kind_;
+  AxisValues goal_;  ///< target position or velocity
+  Capabilities capabilities_;
+  GoalMonitorConfig config_;
+  TimePoint started_at_;
+  double expected_duration_ = 0.0;
+  double timeout_ = 0.0;
+  std::uint64_t start_fault_count_ = 0;
+  AxisValues last_moved_position_{};          ///< position where each axis was last seen moving
+  std::array<TimePoint, AXIS_COUNT> last_moved_at_{};
+};
+
+}  // namespace ptz_action_server

@@ -1,0 +1,59 @@
+/**
+ * \file
+ * \brief The simulated backend: a SimDeviceModel behind the PtzBackend interface, with fault hooks.
+ */
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "ptz_action_server/core/backend.h"
+#include "ptz_action_server/core/sim_device_model.h"
+
+namespace ptz_action_server
+{
+/**
+ * \brief A pan-tilt-zoom unit that exists only in memory.
+ *
+ * The model is evaluated in closed form at the clock's current time, so there is no I/O and no thread: every call
+ * takes the mutex for a few microseconds and returns. Faults (stalls, lag, dropout) can be switched at any time.
+ */
+class SimBackend : public PtzBackend
+{
+public:
+  explicit SimBackend(const SimDeviceConfig& config,
+                      std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
+
+  std::string name() const override
+  {
+    return "sim";
+  }
+  Capabilities capabilities() const override;
+  void start() override;
+  void goTo(const AxisValues& position) override;
+  void moveAtVelocity(const AxisValues& velocity) override;
+  void stop() override;
+  PtzSample sample() const override;
+  std::string lastFault() const override;
+  void diagnostics(std::vector<DiagnosticValue>& values) const override;
+
+  /// Replaces the fault set. With \p dropout the device falls silent: state freezes, commands are lost.
+  void setFaults(const SimFaults& faults, bool dropout);
+
+private:
+  /// True (and counts the command as lost) while the device is dropped out. Call with mutex_ held.
+  bool dropCommand();
+
+  const std::shared_ptr<const Clock> clock_;
+  const Capabilities capabilities_;
+  mutable std::mutex mutex_;              ///< guards everything below
+  mutable SimDeviceModel model_;          ///< mutable: sampling applies commands whose lag has passed
+  bool dropout_ = false;
+  PtzSample frozen_sample_;               ///< what the device last said before it dropped out
+  std::uint64_t commands_received_ = 0;
+  std::uint64_t commands_lost_ = 0;
+};
+
+}  // namespace ptz_action_server

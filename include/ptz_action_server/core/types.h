@@ -1,0 +1,148 @@
+/**
+ * \file
+ * \brief Plain types shared by the core: axes, per-axis values, clocks, device samples and errors.
+ *
+ * Nothing in core/ includes ROS; the ROS layer converts to and from these types.
+ */
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace ptz_action_server
+{
+/// Index of an axis in every per-axis array of the core.
+enum Axis : std::size_t
+{
+  PAN = 0,
+  TILT = 1,
+  ZOOM = 2,
+};
+
+constexpr std::size_t AXIS_COUNT = 3;
+constexpr std::array<Axis, AXIS_COUNT> ALL_AXES = { PAN, TILT, ZOOM };
+
+/// Lower-case axis name for messages ("pan", "tilt", "zoom").
+const char* axisName(Axis axis);
+
+/// One value per axis: pan and tilt in rad (or rad/s), zoom as X-factor (or X/s).
+using AxisValues = std::array<double, AXIS_COUNT>;
+
+/// The monotonic clock the core runs on. Backends take a Clock so tests can drive time by hand.
+using SteadyClock = std::chrono::steady_clock;
+using TimePoint = SteadyClock::time_point;
+
+/// Seconds between two time points, as double.
+inline double secondsBetween(TimePoint from, TimePoint to)
+{
+  return std::chrono::duration<double>(to - from).count();
+}
+
+/// A time point plus a duration in (fractional) seconds.
+inline TimePoint addSeconds(TimePoint t, double seconds)
+{
+  return t + std::chrono::duration_cast<SteadyClock::duration>(std::chrono::duration<double>(seconds));
+}
+
+/// \brief Source of time for backends and goal supervision. Thread-safe.
+class Clock
+{
+public:
+  virtual ~Clock() = default;
+  virtual TimePoint now() const = 0;
+};
+
+/// The real steady clock.
+class SystemClock : public Clock
+{
+public:
+  TimePoint now() const override
+  {
+    return SteadyClock::now();
+  }
+};
+
+/// A clock that only moves when told to: tests and benchmarks drive time by hand with it.
+class ManualClock : public Clock
+{
+public:
+  explicit ManualClock(TimePoint start = TimePoint(std::chrono::seconds(1000))) : nanoseconds_(toNanoseconds(start))
+  {
+  }
+  TimePoint now() const override
+  {
+    return TimePoint(std::chrono::nanoseconds(nanoseconds_.load()));
+  }
+  /// Moves time forward by \p seconds.
+  void advance(double seconds)
+  {
+    nanoseconds_ += static_cast<std::int64_t>(seconds * 1e9);
+  }
+
+private:
+  static std::int64_t toNanoseconds(TimePoint t)
+  {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(t.time_since_epoch()).count();
+  }
+  std::atomic<std::int64_t> nanoseconds_;
+};
+
+/// Inclusive range of an axis.
+struct AxisRange
+{
+  double min = 0.0;  ///< lowest allowed value
+  double max = 0.0;  ///< highest allowed value
+
+  bool contains(double value) const
+  {
+    return value >= min && value <= max;
+  }
+};
+
+/// What a device can do on one axis.
+struct AxisCapability
+{
+  bool present = true;       ///< false: the device has no such axis (e.g. no zoom); goals ignore it
+  AxisRange range;           ///< position limits
+  double max_speed = 1.0;    ///< largest speed the device accepts, per second
+  double acceleration = 0.0; ///< per second squared; 0 means "unknown, treat as instant"
+};
+
+/// What a backend's device can do; the node intersects the ranges with the URDF joint limits.
+struct Capabilities
+{
+  std::array<AxisCapability, AXIS_COUNT> axes;
+};
+
+/// \brief One snapshot of the device, as a backend last knew it.
+///
+/// Small and copyable without allocation, because the node takes one every state tick.
+struct PtzSample
+{
+  TimePoint stamp{};           ///< when the device's state was measured (or received)
+  bool link_up = false;        ///< true while the backend hears valid state from the device
+  AxisValues position{};       ///< pan, tilt (rad), zoom (X)
+  AxisValues velocity{};       ///< pan, tilt (rad/s), zoom (X/s); 0 when the device does not report it
+  bool moving = false;         ///< the device is still in motion (false = settled)
+  std::uint64_t fault_count = 0;  ///< increments each time the device refuses or fails a command
+};
+
+/// A configuration value is missing, of the wrong type or out of range. The message names it.
+class ConfigError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A backend could not reach or set up its device.
+class BackendError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace ptz_action_server

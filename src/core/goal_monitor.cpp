@@ -1,0 +1,239 @@
+#include "ptz_action_server/core/goal_monitor.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ptz_action_server/core/motion_profile.h"
+#include "ptz_action_server/core/text.h"
+
+namespace ptz_action_server
+{
+namespace
+{
+/// An axis counts as moving when it travels more than this share of its tolerance.
+constexpr double MOVEMENT_SHARE_OF_TOLERANCE = 0.25;
+/// Acceleration assumed for the timeout estimate when a device does not state one.
+constexpr double UNKNOWN_ACCELERATION = 1e3;
+
+const char* unitOf(Axis axis)
+{
+  return axis == ZOOM ? "X" : "rad";
+}
+
+/// Expected duration of a position goal: the slowest axis' closed-form trapezoid, plus braking from its speed.
+double expectedDuration(const AxisValues& target, const PtzSample& start, const Capabilities& capabilities)
+{
+  double longest = 0.0;
+  for (Axis axis : ALL_AXES)
+  {
+    const AxisCapability& capability = capabilities.axes[axis];
+    if (!capability.present || !(capability.max_speed > 0.0))
+    {
+      continue;
+    }
+    AxisMotionLimits limits;
+    limits.max_speed = capability.max_speed;
+    limits.acceleration = capability.acceleration > 0.0 ? capability.acceleration : UNKNOWN_ACCELERATION;
+    const double braking = 2.0 * std::abs(start.velocity[axis]) / limits.acceleration;
+    const double distance = std::abs(target[axis] - start.position[axis]) + std::abs(start.velocity[axis]) * braking;
+    longest = std::max(longest, braking + TrapezoidProfile::minimumDuration(distance, limits));
+  }
+  return longest;
+}
+}  // namespace
+
+GoalMonitor GoalMonitor::forPosition(const AxisValues& target, const PtzSample& start,
+                                     const Capabilities& capabilities, const GoalMonitorConfig& config, TimePoint now)
+{
+  return GoalMonitor(Kind::POSITION, target, start, capabilities, config, now);
+}
+
+GoalMonitor GoalMonitor::forVelocity(const AxisValues& velocity, const PtzSample& start,
+                                     const Capabilities& capabilities, const GoalMonitorConfig& config, TimePoint now)
+{
+  return GoalMonitor(Kind::VELOCITY, velocity, start, capabilities, config, now);
+}
+
+GoalMonitor GoalMonitor::forStop(const PtzSample& start, const GoalMonitorConfig& config, TimePoint now)
+{
+  return GoalMonitor(Kind::STOP, AxisValues{}, start, Capabilities{}, config, now);
+}
+
+GoalMonitor::GoalMonitor(Kind kind, const AxisValues& goal, const PtzSample& start, const Capabilities& capabilities,
+                         const GoalMonitorConfig& config, TimePoint now)
+  : kind_(kind)
+  , goal_(goal)
+  , capabilities_(capabilities)
+  , config_(config)
+  , started_at_(now)
+  , start_fault_count_(start.fault_count)
+  , last_moved_position_(start.position)
+{
+  last_moved_at_.fill(now);
+  if (kind == Kind::POSITION)
+  {
+    expected_duration_ = expectedDuration(goal, start, capabilities);
+    timeout_ = config.fixed_timeout > 0.0 ? config.fixed_timeout :
+                                            expected_duration_ * config.timeout_scale + config.timeout_margin;
+  }
+  else if (kind == Kind::STOP)
+  {
+    timeout_ = config.stop_timeout;
+  }
+}
+
+GoalVerdict GoalMonitor::update(const PtzSample& sample, TimePoint now)
+{
+  GoalVerdict verdict;
+  if (kind_ == Kind::STOP)
+  {
+    return updateStop(sample, now, verdict);
+  }
+  for (Axis axis : ALL_AXES)
+  {
+    if (capabilities_.axes[axis].present)
+    {
+      verdict.remaining[axis] = goal_[axis] - (kind_ == Kind::VELOCITY ? sample.velocity[axis] : sample.position[axis]);
+    }
+  }
+  if (!sample.link_up)
+  {
+    verdict.phase = GoalPhase::ABORTED;
+    verdict.reason = "link lost: the device stopped reporting its state";
+    return verdict;
+  }
+  if (sample.fault_count != start_fault_count_)
+  {
+    verdict.phase = GoalPhase::ABORTED;
+    verdict.reason = "device fault";
+    verdict.device_fault = true;
+    return verdict;
+  }
+  return kind_ == Kind::POSITION ? updatePosition(sample, now, verdict) : updateVelocity(sample, now, verdict);
+}
+
+GoalVerdict GoalMonitor::updatePosition(const PtzSample& sample, TimePoint now, GoalVerdict verdict)
+{
+  std::array<bool, AXIS_COUNT> outside_tolerance{};
+  bool all_inside = true;
+  for (Axis axis : ALL_AXES)
+  {
+    outside_tolerance[axis] =
+        capabilities_.axes[axis].present && std::abs(verdict.remaining[axis]) > config_.tolerance[axis];
+    all_inside = all_inside && !outside_tolerance[axis];
+  }
+  if (all_inside && !sample.moving)
+  {
+    verdict.phase = GoalPhase::SUCCEEDED;
+    verdict.reason = "reached " + describePosition(sample);
+    return verdict;
+  }
+  const std::size_t stalled = findStalledAxis(sample, now, outside_tolerance);
+  if (stalled != AXIS_COUNT)
+  {
+    const Axis axis = static_cast<Axis>(stalled);
+    verdict.phase = GoalPhase::ABORTED;
+    verdict.reason = formatText("stalled: %s made no progress for %.2f s (remaining %.4f %s)", axisName(axis),
+                                config_.stall_timeout, verdict.remaining[axis], unitOf(axis));
+    return verdict;
+  }
+  const double elapsed = secondsBetween(started_at_, now);
+  if (elapsed > timeout_)
+  {
+    verdict.phase = GoalPhase::ABORTED;
+    verdict.reason = formatText("timed out after %.2f s (expected %.2f s) at %s", elapsed, expected_duration_,
+                                describePosition(sample).c_str());
+  }
+  return verdict;
+}
+
+GoalVerdict GoalMonitor::updateVelocity(const PtzSample& sample, TimePoint now, GoalVerdict verdict)
+{
+  std::array<bool, AXIS_COUNT> must_move{};
+  bool any_commanded = false;
+  for (Axis axis : ALL_AXES)
+  {
+    const AxisCapability& capability = capabilities_.axes[axis];
+    if (!capability.present || goal_[axis] == 0.0)
+    {
+      continue;
+    }
+    any_commanded = true;
+    const bool upward = goal_[axis] > 0.0;
+    const double limit = upward ? capability.range.max : capability.range.min;
+    if (std::abs(sample.position[axis] - limit) <= config_.tolerance[axis])
+    {
+      verdict.phase = GoalPhase::SUCCEEDED;
+      verdict.stop_device = true;
+      verdict.reason = formatText("%s reached its %s limit %.4f %s", axisName(axis), upward ? "upper" : "lower", limit,
+                                  unitOf(axis));
+      return verdict;
+    }
+    must_move[axis] = true;
+  }
+  if (!any_commanded)
+  {
+    if (!sample.moving)
+    {
+      verdict.phase = GoalPhase::SUCCEEDED;
+      verdict.reason = "stopped at " + describePosition(sample);
+    }
+    return verdict;
+  }
+  const std::size_t stalled = findStalledAxis(sample, now, must_move);
+  if (stalled != AXIS_COUNT)
+  {
+    verdict.phase = GoalPhase::ABORTED;
+    verdict.reason = formatText("stalled: %s did not move for %.2f s at %.4f %s", axisName(static_cast<Axis>(stalled)),
+                                config_.stall_timeout, sample.position[stalled], unitOf(static_cast<Axis>(stalled)));
+  }
+  return verdict;
+}
+
+GoalVerdict GoalMonitor::updateStop(const PtzSample& sample, TimePoint now, GoalVerdict verdict)
+{
+  if (!sample.link_up)
+  {
+    verdict.phase = GoalPhase::ABORTED;
+    verdict.reason = "link lost while stopping";
+  }
+  else if (!sample.moving)
+  {
+    verdict.phase = GoalPhase::SUCCEEDED;
+    verdict.reason = "stopped at " + describePosition(sample);
+  }
+  else if (secondsBetween(started_at_, now) > timeout_)
+  {
+    verdict.phase = GoalPhase::ABORTED;
+    verdict.reason = formatText("still moving %.2f s after the stop command", timeout_);
+  }
+  return verdict;
+}
+
+std::size_t GoalMonitor::findStalledAxis(const PtzSample& sample, TimePoint now,
+                                         const std::array<bool, AXIS_COUNT>& must_move)
+{
+  std::size_t stalled = AXIS_COUNT;
+  for (Axis axis : ALL_AXES)
+  {
+    const double step = MOVEMENT_SHARE_OF_TOLERANCE * config_.tolerance[axis];
+    if (!must_move[axis] || std::abs(sample.position[axis] - last_moved_position_[axis]) > step)
+    {
+      last_moved_position_[axis] = sample.position[axis];
+      last_moved_at_[axis] = now;
+    }
+    else if (stalled == AXIS_COUNT && secondsBetween(last_moved_at_[axis], now) > config_.stall_timeout)
+    {
+      stalled = axis;
+    }
+  }
+  return stalled;
+}
+
+std::string GoalMonitor::describePosition(const PtzSample& sample) const
+{
+  return formatText("pan %.4f rad, tilt %.4f rad, zoom %.2f X", sample.position[PAN], sample.position[TILT],
+                    sample.position[ZOOM]);
+}
+
+}  // namespace ptz_action_server

@@ -1,0 +1,101 @@
+#include "ptz_action_server/core/sim_backend.h"
+
+#include "ptz_action_server/core/text.h"
+
+namespace ptz_action_server
+{
+SimBackend::SimBackend(const SimDeviceConfig& config, std::shared_ptr<const Clock> clock)
+  : clock_(std::move(clock)), capabilities_(config.capabilities()), model_(config, clock_->now())
+{
+}
+
+Capabilities SimBackend::capabilities() const
+{
+  return capabilities_;
+}
+
+void SimBackend::start()
+{
+}
+
+void SimBackend::goTo(const AxisValues& position)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!dropCommand())
+  {
+    model_.goTo(position, clock_->now());
+  }
+}
+
+void SimBackend::moveAtVelocity(const AxisValues& velocity)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!dropCommand())
+  {
+    model_.moveAtVelocity(velocity, clock_->now());
+  }
+}
+
+void SimBackend::stop()
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!dropCommand())
+  {
+    model_.stop(clock_->now());
+  }
+}
+
+PtzSample SimBackend::sample() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return dropout_ ? frozen_sample_ : model_.sample(clock_->now());
+}
+
+std::string SimBackend::lastFault() const
+{
+  return {};  // the simulated device never refuses a command
+}
+
+void SimBackend::diagnostics(std::vector<DiagnosticValue>& values) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const SimFaults& faults = model_.faults();
+  std::string stalled;
+  for (Axis axis : ALL_AXES)
+  {
+    if (faults.stalled[axis])
+    {
+      stalled += stalled.empty() ? axisName(axis) : std::string(", ") + axisName(axis);
+    }
+  }
+  values.emplace_back("commands received", std::to_string(commands_received_));
+  values.emplace_back("commands lost in dropout", std::to_string(commands_lost_));
+  values.emplace_back("fault: stalled axes", stalled.empty() ? "none" : stalled);
+  values.emplace_back("fault: lag (s)", formatText("%.3f", faults.lag));
+  values.emplace_back("fault: dropout", dropout_ ? "yes" : "no");
+}
+
+void SimBackend::setFaults(const SimFaults& faults, bool dropout)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const TimePoint now = clock_->now();
+  model_.setFaults(faults, now);
+  if (dropout && !dropout_)
+  {
+    frozen_sample_ = model_.sample(now);
+    frozen_sample_.link_up = false;
+  }
+  dropout_ = dropout;
+}
+
+bool SimBackend::dropCommand()
+{
+  ++commands_received_;
+  if (dropout_)
+  {
+    ++commands_lost_;
+  }
+  return dropout_;
+}
+
+}  // namespace ptz_action_server
