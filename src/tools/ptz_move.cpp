@@ -1,0 +1,269 @@
+/**
+ * \file
+ * \brief Command-line client: sends one goal of any PTZ action, shows progress from feedback, prints the result.
+ */
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include <actionlib/client/simple_action_client.h>
+#include <ros/ros.h>
+
+#include "ptz_action_server/PtzAction.h"
+#include "ptz_action_server/PtzFrameAction.h"
+#include "ptz_action_server/PtzRelToAction.h"
+#include "ptz_action_server/PtzState.h"
+
+namespace
+{
+const char* USAGE = R"(usage: ptz_move [options] COMMAND ARGS...
+
+Commands (angles in rad, or degrees with --degrees; zoom as X-factor):
+  abs    PAN TILT [ZOOM]           go to an absolute position (ZOOM defaults to the current zoom)
+  rel    PAN TILT [ZOOM]           move by an offset from the current position
+  vel    PAN TILT [ZOOM]           move at a velocity (per s) until Ctrl-C, --for, or a limit
+  abs_tf FRAME PAN TILT [ZOOM]     go to a pan and tilt expressed in the axes of a tf frame
+  frame  FRAME [ZOOM]              point the camera at the origin of a tf frame
+  state                            print the current PtzState once
+
+Options:
+  --ns NAMESPACE   namespace of the node (default: /ptz)
+  --degrees        angles (and angular speeds) in degrees
+  --for SECONDS    cancel the goal after SECONDS (useful with vel)
+  --wait SECONDS   how long to wait for the server (default 5)
+
+Ctrl-C cancels the goal: the device decelerates to rest and the goal ends PREEMPTED.
+)";
+
+volatile std::sig_atomic_t interrupted = 0;
+
+void onSigint(int)
+{
+  interrupted = 1;
+}
+
+struct Options
+{
+  std::string ns = "/ptz";
+  bool degrees = false;
+  double cancel_after = 0.0;
+  double wait = 5.0;
+  std::vector<std::string> words;
+};
+
+bool parseNumber(const std::string& text, double& value)
+{
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return end != text.c_str() && *end == '\0';
+}
+
+[[noreturn]] void fail(const std::string& message)
+{
+  std::fprintf(stderr, "ptz_move: %s\n\n%s", message.c_str(), USAGE);
+  std::exit(2);
+}
+
+Options parseOptions(const std::vector<std::string>& args)
+{
+  Options options;
+  for (std::size_t index = 0; index < args.size(); ++index)
+  {
+    const std::string& arg = args[index];
+    auto value = [&]() {
+      if (index + 1 >= args.size())
+      {
+        fail("option " + arg + " needs a value");
+      }
+      return args[++index];
+    };
+    if (arg == "--ns")
+    {
+      options.ns = value();
+    }
+    else if (arg == "--degrees")
+    {
+      options.degrees = true;
+    }
+    else if (arg == "--for" || arg == "--wait")
+    {
+      double seconds = 0.0;
+      if (!parseNumber(value(), seconds) || seconds < 0.0)
+      {
+        fail(arg + " needs a number of seconds");
+      }
+      (arg == "--for" ? options.cancel_after : options.wait) = seconds;
+    }
+    else if (arg == "-h" || arg == "--help")
+    {
+      std::printf("%s", USAGE);
+      std::exit(0);
+    }
+    else
+    {
+      options.words.push_back(arg);
+    }
+  }
+  return options;
+}
+
+/// Parses words[first..] as numbers; angles (the first \p angles of them) convert from degrees if asked.
+std::vector<double> numbers(const Options& options, std::size_t first, std::size_t min_count, std::size_t max_count)
+{
+  const std::size_t count = options.words.size() - first;
+  if (count < min_count || count > max_count)
+  {
+    fail("'" + options.words[0] + "' takes " + std::to_string(min_count) + " to " + std::to_string(max_count) +
+         " numbers");
+  }
+  std::vector<double> values;
+  for (std::size_t index = first; index < options.words.size(); ++index)
+  {
+    double value = 0.0;
+    if (!parseNumber(options.words[index], value))
+    {
+      fail("'" + options.words[index] + "' is not a number");
+    }
+    const bool angle = values.size() < 2;
+    values.push_back(options.degrees && angle ? value * M_PI / 180.0 : value);
+  }
+  return values;
+}
+
+/// Waits for the latest PtzState (for the default zoom and the "state" command).
+bool currentState(const std::string& ns, ptz_action_server::PtzState& state, double wait)
+{
+  const auto message =
+      ros::topic::waitForMessage<ptz_action_server::PtzState>(ns + "/ptz_state", ros::Duration(wait));
+  if (!message)
+  {
+    return false;
+  }
+  state = *message;
+  return true;
+}
+
+/// Sends \p goal, prints each feedback on one line, cancels on Ctrl-C or after --for; returns the exit code.
+template <class Action, class Goal>
+int run(const Options& options, const std::string& action, const Goal& goal)
+{
+  actionlib::SimpleActionClient<Action> client(options.ns + "/move_ptz/" + action, true);
+  if (!client.waitForServer(ros::Duration(options.wait)))
+  {
+    std::fprintf(stderr, "ptz_move: no action server at %s/move_ptz/%s (is the node running?)\n", options.ns.c_str(),
+                 action.c_str());
+    return 1;
+  }
+  const double scale = options.degrees ? 180.0 / M_PI : 1.0;
+  const char* unit = options.degrees ? "deg" : "rad";
+  client.sendGoal(
+      goal, typename actionlib::SimpleActionClient<Action>::SimpleDoneCallback(),
+      typename actionlib::SimpleActionClient<Action>::SimpleActiveCallback(),
+      [&](const typename Action::_action_feedback_type::_feedback_type::ConstPtr& feedback) {
+        std::printf("\r  remaining: pan %+9.4f %s  tilt %+9.4f %s  zoom %+7.2f   ", feedback->pan_remaining * scale,
+                    unit, feedback->tilt_remaining * scale, unit, feedback->zoom_remaining);
+        std::fflush(stdout);
+      });
+  const ros::WallTime started = ros::WallTime::now();
+  bool cancelled = false;
+  while (ros::ok() && !client.getState().isDone())
+  {
+    const bool expired = options.cancel_after > 0.0 && (ros::WallTime::now() - started).toSec() >= options.cancel_after;
+    if (!cancelled && (interrupted || expired))
+    {
+      std::printf("\n  cancelling...\n");
+      client.cancelGoal();
+      cancelled = true;
+    }
+    ros::WallDuration(0.02).sleep();
+  }
+  const actionlib::SimpleClientGoalState state = client.getState();
+  const auto result = client.getResult();
+  std::printf("\n%s: %s%s%s (success = %s, %.2f s)\n", action.c_str(), state.toString().c_str(),
+              state.getText().empty() ? "" : ": ", state.getText().c_str(),
+              result && result->success ? "true" : "false", (ros::WallTime::now() - started).toSec());
+  return state == actionlib::SimpleClientGoalState::SUCCEEDED ||
+                 (cancelled && state == actionlib::SimpleClientGoalState::PREEMPTED) ?
+             0 :
+             1;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "ptz_move", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
+  const Options options = parseOptions(std::vector<std::string>(argv + 1, argv + argc));
+  if (options.words.empty())
+  {
+    fail("no command given");
+  }
+  std::signal(SIGINT, onSigint);
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+
+  using namespace ptz_action_server;
+  const std::string& command = options.words[0];
+  if (command == "state")
+  {
+    PtzState state;
+    if (!currentState(options.ns, state, options.wait))
+    {
+      std::fprintf(stderr, "ptz_move: no PtzState on %s/ptz_state\n", options.ns.c_str());
+      return 1;
+    }
+    std::printf("mode %d  pan %.4f rad  tilt %.4f rad  zoom %.2f X\n", state.mode, state.pan, state.tilt, state.zoom);
+    return 0;
+  }
+  if (command == "abs" || command == "rel" || command == "vel")
+  {
+    const std::vector<double> values = numbers(options, 1, 2, 3);
+    PtzGoal goal;
+    goal.pan = values[0];
+    goal.tilt = values[1];
+    goal.zoom = values.size() > 2 ? values[2] : 0.0;
+    if (command == "abs" && values.size() == 2)
+    {
+      PtzState state;
+      goal.zoom = currentState(options.ns, state, options.wait) ? state.zoom : 1.0;
+    }
+    const std::string action = command == "abs" ? "position_abs" : (command == "rel" ? "position_rel" : "velocity");
+    return run<PtzAction>(options, action, goal);
+  }
+  if (command == "abs_tf")
+  {
+    if (options.words.size() < 2)
+    {
+      fail("abs_tf needs a frame");
+    }
+    Options numeric = options;
+    numeric.words.erase(numeric.words.begin() + 1);
+    const std::vector<double> values = numbers(numeric, 1, 2, 3);
+    PtzRelToGoal goal;
+    goal.frame_id = options.words[1];
+    goal.pan = values[0];
+    goal.tilt = values[1];
+    PtzState state;
+    goal.zoom = values.size() > 2 ? values[2] : (currentState(options.ns, state, options.wait) ? state.zoom : 1.0);
+    return run<PtzRelToAction>(options, "position_abs_tf", goal);
+  }
+  if (command == "frame")
+  {
+    if (options.words.size() < 2 || options.words.size() > 3)
+    {
+      fail("frame takes a frame and an optional zoom");
+    }
+    PtzFrameGoal goal;
+    goal.frame_id = options.words[1];
+    double zoom = 0.0;
+    PtzState state;
+    if (options.words.size() == 3 && !parseNumber(options.words[2], zoom))
+    {
+      fail("'" + options.words[2] + "' is not a number");
+    }
+    goal.zoom = options.words.size() == 3 ? zoom : (currentState(options.ns, state, options.wait) ? state.zoom : 1.0);
+    return run<PtzFrameAction>(options, "frame", goal);
+  }
+  fail("unknown command '" + command + "'");
+}
