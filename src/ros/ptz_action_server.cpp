@@ -101,6 +101,7 @@ public:
   }
   void accept(const std::string& text) override
   {
+    note_ = text;
     handle_.setAccepted(text);
   }
   void reject(const std::string& text) override
@@ -118,20 +119,26 @@ public:
   void succeed(const std::string& text) override
   {
     ROS_DEBUG("%s goal succeeded: %s", actionName(kind_), text.c_str());
-    handle_.setSucceeded(result(true), text);
+    handle_.setSucceeded(result(true), withNote(text));
   }
   void abort(const std::string& text) override
   {
     ROS_WARN("%s goal aborted: %s", actionName(kind_), text.c_str());
-    handle_.setAborted(result(false), text);
+    handle_.setAborted(result(false), withNote(text));
   }
   void preempt(const std::string& text) override
   {
     ROS_DEBUG("%s goal preempted: %s", actionName(kind_), text.c_str());
-    handle_.setCanceled(result(false), text);
+    handle_.setCanceled(result(false), withNote(text));
   }
 
 private:
+  /// The final status text keeps the clamping note of the accepted goal.
+  std::string withNote(const std::string& text) const
+  {
+    return note_.empty() ? text : text + " (" + note_ + ")";
+  }
+
   static Result result(bool success)
   {
     Result result;
@@ -142,6 +149,7 @@ private:
   Handle handle_;
   ActionKind kind_;
   std::string id_;
+  std::string note_;  ///< what validation changed (clamping), empty if nothing
   Feedback feedback_;
 };
 }  // namespace

@@ -1,0 +1,404 @@
+/**
+ * \file
+ * \brief Benchmark of the node with the sim backend. Prints a table of figures; asserts nothing.
+ *
+ * The program forks. The child is the node: the same PtzActionServer and SimBackend the ptz_action_server executable
+ * runs, with the backend wrapped by a recorder that stamps every command into shared memory (CLOCK_MONOTONIC is one
+ * clock for both processes). The parent is the clients, talking to the child over real ROS TCP connections.
+ *
+ * Usage: ptz_bench URDF_FILE [--storm-seconds 30] [--zero-goals 1000] [--idle-seconds 10]
+ * A rosmaster must be running (bench/run starts one).
+ */
+#include <sys/mman.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <mutex>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <actionlib/client/action_client.h>
+#include <actionlib/client/simple_action_client.h>
+#include <ros/ros.h>
+
+#include "ptz_action_server/PtzAction.h"
+#include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/core/motion_profile.h"
+#include "ptz_action_server/core/sim_backend.h"
+#include "ptz_action_server/ros/ptz_action_server.h"
+
+namespace
+{
+using namespace ptz_action_server;
+using PtzClient = actionlib::SimpleActionClient<PtzAction>;
+
+/// Written by the node process, read by the client process.
+struct SharedCounters
+{
+  std::atomic<std::uint64_t> commands{ 0 };
+  std::atomic<std::int64_t> last_command_ns{ 0 };
+};
+
+std::int64_t monotonicNanoseconds()
+{
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(SteadyClock::now().time_since_epoch()).count();
+}
+
+/// Passes everything to the real backend and stamps each command.
+class RecordingBackend : public PtzBackend
+{
+public:
+  RecordingBackend(std::shared_ptr<PtzBackend> inner, SharedCounters* counters)
+    : inner_(std::move(inner)), counters_(counters)
+  {
+  }
+  std::string name() const override
+  {
+    return inner_->name();
+  }
+  Capabilities capabilities() const override
+  {
+    return inner_->capabilities();
+  }
+  void start() override
+  {
+    inner_->start();
+  }
+  void goTo(const AxisValues& position) override
+  {
+    record();
+    inner_->goTo(position);
+  }
+  void moveAtVelocity(const AxisValues& velocity) override
+  {
+    record();
+    inner_->moveAtVelocity(velocity);
+  }
+  void stop() override
+  {
+    record();
+    inner_->stop();
+  }
+  PtzSample sample() const override
+  {
+    return inner_->sample();
+  }
+  std::string lastFault() const override
+  {
+    return inner_->lastFault();
+  }
+
+private:
+  void record()
+  {
+    counters_->last_command_ns = monotonicNanoseconds();
+    counters_->commands++;
+  }
+  std::shared_ptr<PtzBackend> inner_;
+  SharedCounters* counters_;
+};
+
+std::string readFile(const std::string& path)
+{
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+/// The node process: runs until SIGTERM.
+int runNode(int argc, char** argv, const std::string& urdf, SharedCounters* counters)
+{
+  ros::init(argc, argv, "ptz_action_server");
+  ros::NodeHandle node_handle("/ptz");
+  node_handle.setParam("robot_description", urdf);
+  const PtzKinematics kinematics = PtzKinematics::fromUrdf(urdf);
+  SimDeviceConfig device = SimDeviceConfig::defaults();
+  const Capabilities urdf_limits = PtzActionServer::urdfLimits(kinematics);
+  for (Axis axis : { PAN, TILT })
+  {
+    device.axes[axis].range = urdf_limits.axes[axis].range;
+    device.axes[axis].motion.max_speed = urdf_limits.axes[axis].max_speed;
+  }
+  auto backend = std::make_shared<RecordingBackend>(std::make_shared<SimBackend>(device), counters);
+  PtzActionServer server(node_handle, NodeConfig(), kinematics, backend);
+  server.start();
+  ros::spin();
+  return 0;
+}
+
+struct CpuSample
+{
+  double cpu_seconds;
+  double wall_seconds;
+};
+
+CpuSample cpuOf(pid_t pid)
+{
+  std::ifstream file("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  std::istringstream fields(text.substr(text.rfind(')') + 2));
+  std::string field;
+  double utime = 0;
+  double stime = 0;
+  for (int index = 3; index <= 15 && fields >> field; ++index)
+  {
+    if (index == 14)
+    {
+      utime = std::stod(field);
+    }
+    if (index == 15)
+    {
+      stime = std::stod(field);
+    }
+  }
+  const double ticks = static_cast<double>(sysconf(_SC_CLK_TCK));
+  return { (utime + stime) / ticks, secondsBetween(TimePoint(), SteadyClock::now()) };
+}
+
+double cpuPercent(const CpuSample& from, const CpuSample& to)
+{
+  return 100.0 * (to.cpu_seconds - from.cpu_seconds) / (to.wall_seconds - from.wall_seconds);
+}
+
+long peakRssKilobytes(pid_t pid)
+{
+  std::ifstream file("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(file, line))
+  {
+    if (line.rfind("VmHWM:", 0) == 0)
+    {
+      return std::stol(line.substr(6));
+    }
+  }
+  return -1;
+}
+
+double percentile(std::vector<double> values, double share)
+{
+  if (values.empty())
+  {
+    return 0.0;
+  }
+  std::sort(values.begin(), values.end());
+  const std::size_t index = std::min(values.size() - 1, static_cast<std::size_t>(share * values.size()));
+  return values[index];
+}
+
+PtzGoal ptzGoal(double pan, double tilt, double zoom)
+{
+  PtzGoal goal;
+  goal.pan = pan;
+  goal.tilt = tilt;
+  goal.zoom = zoom;
+  return goal;
+}
+
+struct Row
+{
+  std::string figure;
+  std::string value;
+  std::string target;
+};
+
+int runClients(pid_t node, SharedCounters* counters, double storm_seconds, int zero_goals, double idle_seconds)
+{
+  ros::NodeHandle node_handle("/ptz");
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  PtzClient client("move_ptz/position_abs", true);
+  if (!client.waitForServer(ros::Duration(30.0)))
+  {
+    std::fprintf(stderr, "ptz_bench: the node did not come up\n");
+    return 1;
+  }
+  std::vector<Row> rows;
+  char text[128];
+
+  // Idle CPU: nothing but the 10 Hz state.
+  ros::WallDuration(1.0).sleep();
+  const CpuSample idle_start = cpuOf(node);
+  ros::WallDuration(idle_seconds).sleep();
+  std::snprintf(text, sizeof(text), "%.2f %%", cpuPercent(idle_start, cpuOf(node)));
+  rows.push_back({ "node CPU, idle (" + std::to_string(static_cast<int>(idle_seconds)) + " s)", text, "<= 1 %" });
+
+  // Reach time of a 2 rad pan goal against the trapezoid's closed-form minimum.
+  client.sendGoal(ptzGoal(-1.0, 0.0, 1.0));
+  client.waitForResult(ros::Duration(10.0));
+  const double minimum = TrapezoidProfile::minimumDuration(2.0, AxisMotionLimits{ 1.5, 3.0, 0.0 });
+  std::vector<double> ratios;
+  for (int run = 0; run < 6; ++run)
+  {
+    const double target = run % 2 == 0 ? 1.0 : -1.0;
+    const ros::WallTime sent = ros::WallTime::now();
+    client.sendGoal(ptzGoal(target, 0.0, 1.0));
+    client.waitForResult(ros::Duration(10.0));
+    ratios.push_back((ros::WallTime::now() - sent).toSec() / minimum);
+  }
+  std::snprintf(text, sizeof(text), "%.3f mean, %.3f max (minimum %.3f s)",
+                std::accumulate(ratios.begin(), ratios.end(), 0.0) / ratios.size(),
+                *std::max_element(ratios.begin(), ratios.end()), minimum);
+  rows.push_back({ "2 rad goal: reach time / closed-form minimum", text, "<= 1.10" });
+
+  // Zero-length goals: goal -> result, and goal -> first backend command.
+  std::vector<double> result_ms;
+  std::vector<double> command_ms;
+  for (int index = 0; index < zero_goals; ++index)
+  {
+    const std::uint64_t commands_before = counters->commands;
+    const std::int64_t sent_ns = monotonicNanoseconds();
+    client.sendGoal(ptzGoal(-1.0, 0.0, 1.0));
+    client.waitForResult(ros::Duration(5.0));
+    const std::int64_t done_ns = monotonicNanoseconds();
+    result_ms.push_back((done_ns - sent_ns) / 1e6);
+    if (counters->commands > commands_before)
+    {
+      command_ms.push_back((counters->last_command_ns - sent_ns) / 1e6);
+    }
+  }
+  std::snprintf(text, sizeof(text), "p50 %.2f ms, p99 %.2f ms (%d goals)", percentile(result_ms, 0.5),
+                percentile(result_ms, 0.99), zero_goals);
+  rows.push_back({ "zero-length goal -> result", text, "p99 <= 5 ms" });
+  std::snprintf(text, sizeof(text), "p50 %.2f ms, p99 %.2f ms", percentile(command_ms, 0.5),
+                percentile(command_ms, 0.99));
+  rows.push_back({ "goal -> first backend command", text, "" });
+
+  // The storm: 4 clients at ~50 Hz each for storm_seconds, while ptz_state is timed on arrival.
+  std::mutex state_mutex;
+  std::vector<double> arrivals;
+  std::atomic<bool> storming{ true };
+  const ros::Subscriber state_subscriber =
+      node_handle.subscribe<PtzState>("ptz_state", 100, [&](const PtzState::ConstPtr&) {
+        std::lock_guard<std::mutex> lock(state_mutex);
+        if (storming)
+        {
+          arrivals.push_back(secondsBetween(TimePoint(), SteadyClock::now()));
+        }
+      });
+  ros::WallDuration(0.5).sleep();
+  {
+    std::lock_guard<std::mutex> lock(state_mutex);
+    arrivals.clear();
+  }
+  std::vector<std::thread> threads;
+  std::atomic<int> goals_sent{ 0 };
+  std::atomic<int> goals_done{ 0 };
+  const CpuSample storm_start = cpuOf(node);
+  for (int index = 0; index < 4; ++index)
+  {
+    threads.emplace_back([&, index]() {
+      actionlib::ActionClient<PtzAction> storm_client(node_handle, "move_ptz/position_abs");
+      storm_client.waitForActionServerToStart(ros::Duration(10.0));
+      std::vector<actionlib::ClientGoalHandle<PtzAction>> handles;
+      ros::WallRate rate(50.0);
+      int round = 0;
+      while (storming)
+      {
+        handles.push_back(storm_client.sendGoal(ptzGoal(0.5 * std::sin(0.05 * round + index), 0.1 * index, 1.0)));
+        ++goals_sent;
+        ++round;
+        rate.sleep();
+      }
+      const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(10.0);
+      for (auto& handle : handles)
+      {
+        while (handle.getCommState() != actionlib::CommState::DONE && ros::WallTime::now() < deadline)
+        {
+          ros::WallDuration(0.01).sleep();
+        }
+        goals_done += handle.getCommState() == actionlib::CommState::DONE;
+      }
+    });
+  }
+  ros::WallDuration(storm_seconds).sleep();
+  const CpuSample storm_end = cpuOf(node);
+  storming = false;
+  for (std::thread& thread : threads)
+  {
+    thread.join();
+  }
+  std::vector<double> intervals_ms;
+  double rate_hz = 0.0;
+  {
+    std::lock_guard<std::mutex> lock(state_mutex);
+    for (std::size_t index = 1; index < arrivals.size(); ++index)
+    {
+      intervals_ms.push_back((arrivals[index] - arrivals[index - 1]) * 1e3);
+    }
+    if (arrivals.size() > 1)
+    {
+      rate_hz = (arrivals.size() - 1) / (arrivals.back() - arrivals.front());
+    }
+  }
+  std::snprintf(text, sizeof(text), "%.3f Hz", rate_hz);
+  rows.push_back({ "ptz_state rate under the storm", text, "10 Hz +- 2 %" });
+  std::snprintf(text, sizeof(text), "p50 %.1f ms, p99 %.1f ms, max %.1f ms", percentile(intervals_ms, 0.5),
+                percentile(intervals_ms, 0.99), percentile(intervals_ms, 1.0));
+  rows.push_back({ "ptz_state interval under the storm", text, "p99 <= 120 ms" });
+  std::snprintf(text, sizeof(text), "%d sent, %d ended (%.0f goals/s)", goals_sent.load(), goals_done.load(),
+                goals_sent / storm_seconds);
+  rows.push_back({ "storm goals (4 clients x ~50 Hz)", text, "none lost" });
+  std::snprintf(text, sizeof(text), "%.1f %%", cpuPercent(storm_start, storm_end));
+  rows.push_back({ "node CPU under the storm", text, "" });
+  std::snprintf(text, sizeof(text), "%.1f MB", peakRssKilobytes(node) / 1024.0);
+  rows.push_back({ "node peak RSS", text, "" });
+
+  std::printf("\n| figure | value | target |\n|---|---|---|\n");
+  for (const Row& row : rows)
+  {
+    std::printf("| %s | %s | %s |\n", row.figure.c_str(), row.value.c_str(), row.target.c_str());
+  }
+  return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  if (argc < 2)
+  {
+    std::fprintf(stderr, "usage: ptz_bench URDF_FILE [--storm-seconds S] [--zero-goals N] [--idle-seconds S]\n");
+    return 2;
+  }
+  const std::string urdf = readFile(argv[1]);
+  double storm_seconds = 30.0;
+  int zero_goals = 1000;
+  double idle_seconds = 10.0;
+  for (int index = 2; index + 1 < argc; index += 2)
+  {
+    const std::string option = argv[index];
+    if (option == "--storm-seconds")
+    {
+      storm_seconds = std::stod(argv[index + 1]);
+    }
+    else if (option == "--zero-goals")
+    {
+      zero_goals = std::stoi(argv[index + 1]);
+    }
+    else if (option == "--idle-seconds")
+    {
+      idle_seconds = std::stod(argv[index + 1]);
+    }
+  }
+  auto* counters = static_cast<SharedCounters*>(
+      mmap(nullptr, sizeof(SharedCounters), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0));
+  new (counters) SharedCounters();
+  const pid_t node = fork();
+  if (node == 0)
+  {
+    return runNode(argc, argv, urdf, counters);
+  }
+  ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
+  const int status = runClients(node, counters, storm_seconds, zero_goals, idle_seconds);
+  kill(node, SIGINT);
+  waitpid(node, nullptr, 0);
+  return status;
+}

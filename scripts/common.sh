@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Shared by scripts/demo, scripts/test and bench/run: puts Debian's ROS first in PATH, installs what is missing,
+# builds the package with plain CMake into _build/.
+set -euo pipefail
+
+# The image's pyenv python3 hides the ROS Python modules (catkin_pkg, rospy): Debian's python3 must come first.
+export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
+export PYTHONNOUSERSITE=1
+
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+# Not "build/": rosrun skips executables below <package>/build/.
+BUILD_DIR=${PTZ_BUILD_DIR:-$ROOT/_build}
+JOBS=${PTZ_JOBS:-$(nproc)}
+
+# Everything the package needs to build, test and run, from Debian bookworm's own packages.
+PTZ_APT_PACKAGES=(
+  build-essential cmake
+  ros-base-dev rosbash python3-rostest librostest-dev
+  libactionlib-dev python3-actionlib
+  libtf2-ros-dev libtf2-eigen-dev libtf2-geometry-msgs-dev
+  liburdfdom-dev liburdfdom-tools libeigen3-dev
+  libdiagnostic-updater-dev pluginlib-dev
+  libsensor-msgs-dev libgeometry-msgs-dev
+  ros-robot-state-publisher
+  googletest libgtest-dev
+)
+
+log() {
+  printf '\033[1m==> %s\033[0m\n' "$*"
+}
+
+# apt-get install the given packages that are not installed yet.
+install_packages() {
+  local missing=()
+  local package
+  for package in "$@"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    return 0
+  fi
+  log "installing ${missing[*]}"
+  local sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+install_dependencies() {
+  install_packages "${PTZ_APT_PACKAGES[@]}"
+}
+
+# Configures and builds everything (tests included when $1 = with-tests).
+build_package() {
+  log "building into ${BUILD_DIR}"
+  cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCATKIN_ENABLE_TESTING=ON >"$BUILD_DIR.cmake.log" 2>&1 ||
+    { cat "$BUILD_DIR.cmake.log"; return 1; }
+  cmake --build "$BUILD_DIR" -j "$JOBS"
+  if [ "${1:-}" = "with-tests" ]; then
+    cmake --build "$BUILD_DIR" -j "$JOBS" --target tests
+  fi
+  # shellcheck disable=SC1091
+  set +u
+  source "$BUILD_DIR/devel/setup.bash"
+  set -u
+}
+
+# A free TCP port on 127.0.0.1, for a private rosmaster.
+free_port() {
+  /usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'
+}
