@@ -2,9 +2,10 @@
  * \file
  * \brief Benchmark of the node with the sim backend. Prints a table of figures; asserts nothing.
  *
- * The program forks. The child is the node: the same PtzActionServer and SimBackend the ptz_action_server executable
- * runs, with the backend wrapped by a recorder that stamps every command into shared memory (CLOCK_MONOTONIC is one
- * clock for both processes). The parent is the clients, talking to the child over real ROS TCP connections.
+ * The program forks twice. One child is the node: the same PtzActionServer and SimBackend the ptz_action_server
+ * executable runs, with the backend wrapped by a recorder that stamps every command into shared memory
+ * (CLOCK_MONOTONIC is one clock for all processes). The other child only subscribes to ptz_state and stamps each
+ * arrival, as a user's node would see it. The parent is the clients, talking to the node over real ROS connections.
  *
  * Usage: ptz_bench URDF_FILE [--storm-seconds 30] [--zero-goals 1000] [--idle-seconds 10]
  * A rosmaster must be running (bench/run starts one).
@@ -17,6 +18,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <mutex>
 #include <numeric>
@@ -40,11 +42,16 @@ namespace
 using namespace ptz_action_server;
 using PtzClient = actionlib::SimpleActionClient<PtzAction>;
 
-/// Written by the node process, read by the client process.
+constexpr std::size_t MAX_STATE_ARRIVALS = 4096;
+
+/// Shared by the three processes: the node stamps commands, the observer stamps ptz_state arrivals.
 struct SharedCounters
 {
   std::atomic<std::uint64_t> commands{ 0 };
   std::atomic<std::int64_t> last_command_ns{ 0 };
+  std::atomic<bool> record_states{ false };
+  std::atomic<std::uint32_t> state_count{ 0 };
+  std::int64_t state_arrivals_ns[MAX_STATE_ARRIVALS];
 };
 
 std::int64_t monotonicNanoseconds()
@@ -135,33 +142,47 @@ int runNode(int argc, char** argv, const std::string& urdf, SharedCounters* coun
   return 0;
 }
 
+/// The observer process: a separate ptz_state subscriber, so the storm clients' own load does not skew arrivals.
+int runObserver(int argc, char** argv, SharedCounters* counters)
+{
+  ros::init(argc, argv, "ptz_bench_observer", ros::init_options::AnonymousName);
+  ros::NodeHandle node_handle("/ptz");
+  const ros::Subscriber subscriber =
+      node_handle.subscribe<PtzState>("ptz_state", 100, [counters](const PtzState::ConstPtr&) {
+        if (counters->record_states)
+        {
+          const std::uint32_t index = counters->state_count++;
+          if (index < MAX_STATE_ARRIVALS)
+          {
+            counters->state_arrivals_ns[index] = monotonicNanoseconds();
+          }
+        }
+      });
+  ros::spin();
+  return 0;
+}
+
 struct CpuSample
 {
   double cpu_seconds;
   double wall_seconds;
 };
 
+/// CPU time of every thread of \p pid (from schedstat, in ns resolution) and the wall clock.
 CpuSample cpuOf(pid_t pid)
 {
-  std::ifstream file("/proc/" + std::to_string(pid) + "/stat");
-  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  std::istringstream fields(text.substr(text.rfind(')') + 2));
-  std::string field;
-  double utime = 0;
-  double stime = 0;
-  for (int index = 3; index <= 15 && fields >> field; ++index)
+  double cpu_seconds = 0.0;
+  const std::string tasks = "/proc/" + std::to_string(pid) + "/task";
+  for (const auto& task : std::filesystem::directory_iterator(tasks))
   {
-    if (index == 14)
+    std::ifstream file(task.path() / "schedstat");
+    double nanoseconds = 0.0;
+    if (file >> nanoseconds)
     {
-      utime = std::stod(field);
-    }
-    if (index == 15)
-    {
-      stime = std::stod(field);
+      cpu_seconds += nanoseconds * 1e-9;
     }
   }
-  const double ticks = static_cast<double>(sysconf(_SC_CLK_TCK));
-  return { (utime + stime) / ticks, secondsBetween(TimePoint(), SteadyClock::now()) };
+  return { cpu_seconds, secondsBetween(TimePoint(), SteadyClock::now()) };
 }
 
 double cpuPercent(const CpuSample& from, const CpuSample& to)
@@ -215,7 +236,7 @@ int runClients(pid_t node, SharedCounters* counters, double storm_seconds, int z
   ros::NodeHandle node_handle("/ptz");
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  PtzClient client("move_ptz/position_abs", true);
+  PtzClient client(node_handle, "move_ptz/position_abs", true);
   if (!client.waitForServer(ros::Duration(30.0)))
   {
     std::fprintf(stderr, "ptz_bench: the node did not come up\n");
@@ -252,6 +273,7 @@ int runClients(pid_t node, SharedCounters* counters, double storm_seconds, int z
   // Zero-length goals: goal -> result, and goal -> first backend command.
   std::vector<double> result_ms;
   std::vector<double> command_ms;
+  int zero_failed = 0;
   for (int index = 0; index < zero_goals; ++index)
   {
     const std::uint64_t commands_before = counters->commands;
@@ -259,40 +281,33 @@ int runClients(pid_t node, SharedCounters* counters, double storm_seconds, int z
     client.sendGoal(ptzGoal(-1.0, 0.0, 1.0));
     client.waitForResult(ros::Duration(5.0));
     const std::int64_t done_ns = monotonicNanoseconds();
+    if (client.getState() != actionlib::SimpleClientGoalState::SUCCEEDED)
+    {
+      ++zero_failed;
+      continue;
+    }
     result_ms.push_back((done_ns - sent_ns) / 1e6);
     if (counters->commands > commands_before)
     {
       command_ms.push_back((counters->last_command_ns - sent_ns) / 1e6);
     }
   }
-  std::snprintf(text, sizeof(text), "p50 %.2f ms, p99 %.2f ms (%d goals)", percentile(result_ms, 0.5),
-                percentile(result_ms, 0.99), zero_goals);
+  std::snprintf(text, sizeof(text), "p50 %.2f ms, p99 %.2f ms (%d goals, %d not succeeded)", percentile(result_ms, 0.5),
+                percentile(result_ms, 0.99), zero_goals, zero_failed);
   rows.push_back({ "zero-length goal -> result", text, "p99 <= 5 ms" });
   std::snprintf(text, sizeof(text), "p50 %.2f ms, p99 %.2f ms", percentile(command_ms, 0.5),
                 percentile(command_ms, 0.99));
   rows.push_back({ "goal -> first backend command", text, "" });
 
-  // The storm: 4 clients at ~50 Hz each for storm_seconds, while ptz_state is timed on arrival.
-  std::mutex state_mutex;
-  std::vector<double> arrivals;
+  // The storm: 4 clients at ~50 Hz each for storm_seconds, while the observer process times ptz_state arrivals.
   std::atomic<bool> storming{ true };
-  const ros::Subscriber state_subscriber =
-      node_handle.subscribe<PtzState>("ptz_state", 100, [&](const PtzState::ConstPtr&) {
-        std::lock_guard<std::mutex> lock(state_mutex);
-        if (storming)
-        {
-          arrivals.push_back(secondsBetween(TimePoint(), SteadyClock::now()));
-        }
-      });
-  ros::WallDuration(0.5).sleep();
-  {
-    std::lock_guard<std::mutex> lock(state_mutex);
-    arrivals.clear();
-  }
+  counters->state_count = 0;
+  counters->record_states = true;
   std::vector<std::thread> threads;
   std::atomic<int> goals_sent{ 0 };
   std::atomic<int> goals_done{ 0 };
   const CpuSample storm_start = cpuOf(node);
+  const CpuSample clients_start = cpuOf(getpid());
   for (int index = 0; index < 4; ++index)
   {
     threads.emplace_back([&, index]() {
@@ -321,24 +336,24 @@ int runClients(pid_t node, SharedCounters* counters, double storm_seconds, int z
   }
   ros::WallDuration(storm_seconds).sleep();
   const CpuSample storm_end = cpuOf(node);
+  const CpuSample clients_end = cpuOf(getpid());
+  counters->record_states = false;
   storming = false;
   for (std::thread& thread : threads)
   {
     thread.join();
   }
+  counters->record_states = false;
   std::vector<double> intervals_ms;
-  double rate_hz = 0.0;
+  const std::size_t arrivals = std::min<std::size_t>(counters->state_count, MAX_STATE_ARRIVALS);
+  for (std::size_t index = 1; index < arrivals; ++index)
   {
-    std::lock_guard<std::mutex> lock(state_mutex);
-    for (std::size_t index = 1; index < arrivals.size(); ++index)
-    {
-      intervals_ms.push_back((arrivals[index] - arrivals[index - 1]) * 1e3);
-    }
-    if (arrivals.size() > 1)
-    {
-      rate_hz = (arrivals.size() - 1) / (arrivals.back() - arrivals.front());
-    }
+    intervals_ms.push_back((counters->state_arrivals_ns[index] - counters->state_arrivals_ns[index - 1]) / 1e6);
   }
+  const double rate_hz =
+      arrivals > 1 ?
+          (arrivals - 1) / ((counters->state_arrivals_ns[arrivals - 1] - counters->state_arrivals_ns[0]) / 1e9) :
+          0.0;
   std::snprintf(text, sizeof(text), "%.3f Hz", rate_hz);
   rows.push_back({ "ptz_state rate under the storm", text, "10 Hz +- 2 %" });
   std::snprintf(text, sizeof(text), "p50 %.1f ms, p99 %.1f ms, max %.1f ms", percentile(intervals_ms, 0.5),
@@ -349,6 +364,8 @@ int runClients(pid_t node, SharedCounters* counters, double storm_seconds, int z
   rows.push_back({ "storm goals (4 clients x ~50 Hz)", text, "none lost" });
   std::snprintf(text, sizeof(text), "%.1f %%", cpuPercent(storm_start, storm_end));
   rows.push_back({ "node CPU under the storm", text, "" });
+  std::snprintf(text, sizeof(text), "%.1f %%", cpuPercent(clients_start, clients_end));
+  rows.push_back({ "client process CPU under the storm", text, "" });
   std::snprintf(text, sizeof(text), "%.1f MB", peakRssKilobytes(node) / 1024.0);
   rows.push_back({ "node peak RSS", text, "" });
 
@@ -396,9 +413,17 @@ int main(int argc, char** argv)
   {
     return runNode(argc, argv, urdf, counters);
   }
+  const pid_t observer = fork();
+  if (observer == 0)
+  {
+    return runObserver(argc, argv, counters);
+  }
   ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
   const int status = runClients(node, counters, storm_seconds, zero_goals, idle_seconds);
-  kill(node, SIGINT);
-  waitpid(node, nullptr, 0);
+  for (pid_t child : { observer, node })
+  {
+    kill(child, SIGINT);
+    waitpid(child, nullptr, 0);
+  }
   return status;
 }

@@ -53,8 +53,9 @@ install_dependencies() {
 # Configures and builds everything (tests included when $1 = with-tests).
 build_package() {
   log "building into ${BUILD_DIR}"
-  cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCATKIN_ENABLE_TESTING=ON >"$BUILD_DIR.cmake.log" 2>&1 ||
-    { cat "$BUILD_DIR.cmake.log"; return 1; }
+  mkdir -p "$BUILD_DIR"
+  cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCATKIN_ENABLE_TESTING=ON >"$BUILD_DIR/configure.log" 2>&1 ||
+    { cat "$BUILD_DIR/configure.log"; return 1; }
   cmake --build "$BUILD_DIR" -j "$JOBS"
   if [ "${1:-}" = "with-tests" ]; then
     cmake --build "$BUILD_DIR" -j "$JOBS" --target tests

@@ -42,8 +42,8 @@ double expectedDuration(const AxisValues& target, const PtzSample& start, const 
 }
 }  // namespace
 
-GoalMonitor GoalMonitor::forPosition(const AxisValues& target, const PtzSample& start,
-                                     const Capabilities& capabilities, const GoalMonitorConfig& config, TimePoint now)
+GoalMonitor GoalMonitor::forPosition(const AxisValues& target, const PtzSample& start, const Capabilities& capabilities,
+                                     const GoalMonitorConfig& config, TimePoint now)
 {
   return GoalMonitor(Kind::POSITION, target, start, capabilities, config, now);
 }

@@ -38,9 +38,9 @@ bool checkRange(Axis axis, double low, double high, bool velocity, bool clamp, V
   if (!clamp)
   {
     goal.message = velocity ? formatText("%s velocity %.4f %s exceeds the maximum speed %.4f %s", axisName(axis), value,
-                                     unit, high, unit) :
-                              formatText("%s %.4f %s is outside the limits [%.4f, %.4f] %s", axisName(axis), value, unit,
-                                     low, high, unit);
+                                         unit, high, unit) :
+                              formatText("%s %.4f %s is outside the limits [%.4f, %.4f] %s", axisName(axis), value,
+                                         unit, low, high, unit);
     return false;
   }
   appendNote(goal.message, formatText("%s %.4f -> %.4f %s", axisName(axis), value, bounded, unit));

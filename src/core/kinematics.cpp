@@ -11,8 +11,8 @@ namespace ptz_action_server
 namespace
 {
 constexpr int MAX_AIM_ITERATIONS = 50;
-constexpr double AIM_TOLERANCE = 1e-10;     ///< rad of remaining aiming error
-constexpr double JACOBIAN_STEP = 1e-6;      ///< rad, for the numerical Jacobian
+constexpr double AIM_TOLERANCE = 1e-10;  ///< rad of remaining aiming error
+constexpr double JACOBIAN_STEP = 1e-6;   ///< rad, for the numerical Jacobian
 constexpr double MIN_TARGET_DISTANCE = 1e-6;
 constexpr int GRID_PAN_STEPS = 16;
 constexpr int GRID_TILT_STEPS = 8;
@@ -107,8 +107,8 @@ PtzKinematics PtzKinematics::fromUrdf(const std::string& urdf_xml, const Kinemat
     const urdf::JointConstSharedPtr joint = link->parent_joint;
     if (!joint)
     {
-      throw ConfigError("URDF camera link '" + names.camera_link + "' is not below the pan joint '" +
-                        names.pan_joint + "'");
+      throw ConfigError("URDF camera link '" + names.camera_link + "' is not below the pan joint '" + names.pan_joint +
+                        "'");
     }
     ChainJoint step;
     step.joint = toJointModel(*joint);

@@ -182,8 +182,7 @@ void SimDeviceModel::apply(const PendingCommand& command)
       motion.profile =
           TrapezoidProfile::plan(state, clampAndQuantise(axis, command.value), motion.cruise_speed, config.motion);
       break;
-    case CommandKind::VELOCITY:
-    {
+    case CommandKind::VELOCITY: {
       const double velocity = std::clamp(command.value, -config.motion.max_speed, config.motion.max_speed);
       if (!(std::abs(velocity) > MIN_SPEED))  // also catches NaN
       {
@@ -192,8 +191,7 @@ void SimDeviceModel::apply(const PendingCommand& command)
       }
       // Velocity mode is a move towards the limit in that direction at that speed: it stops at the limit.
       const double limit = velocity > 0.0 ? config.range.max : config.range.min;
-      motion.profile =
-          TrapezoidProfile::plan(state, clampAndQuantise(axis, limit), std::abs(velocity), config.motion);
+      motion.profile = TrapezoidProfile::plan(state, clampAndQuantise(axis, limit), std::abs(velocity), config.motion);
       break;
     }
     case CommandKind::STOP:

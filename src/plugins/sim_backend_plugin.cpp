@@ -74,7 +74,8 @@ private:
     backend->setFaults(faults, request.dropout != 0);
     response.success = true;
     response.message = "faults set";
-    const bool any = request.stall_pan || request.stall_tilt || request.stall_zoom || request.lag > 0.0 || request.dropout;
+    const bool any =
+        request.stall_pan || request.stall_tilt || request.stall_zoom || request.lag > 0.0 || request.dropout;
     ROS_LOG(any ? ros::console::levels::Warn : ros::console::levels::Debug, ROSCONSOLE_DEFAULT_NAME,
             "sim: faults set: stall pan=%d tilt=%d zoom=%d, lag %.3f s, dropout=%d", request.stall_pan,
             request.stall_tilt, request.stall_zoom, request.lag, request.dropout);

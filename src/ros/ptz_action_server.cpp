@@ -16,7 +16,7 @@ namespace
 {
 constexpr double STATE_RATE = 10.0;  ///< Hz, fixed by the contract
 constexpr double STATE_RATE_TOLERANCE = 0.02;
-constexpr int STATE_RATE_WINDOW = 10;  ///< ticks the measured rate is averaged over
+constexpr int STATE_RATE_WINDOW = 10;             ///< ticks the measured rate is averaged over
 constexpr double FRAME_LOOKUP_CACHE_TIME = 10.0;  ///< s of tf history kept for frame goals
 
 Eigen::Isometry3d identity()
@@ -173,6 +173,7 @@ NodeConfig NodeConfig::load(const ParamReader& params)
   monitor.timeout_margin = params.number("goal_timeout_margin", monitor.timeout_margin, 0.0, 600.0);
   monitor.stop_timeout = params.number("stop_timeout", monitor.stop_timeout, 0.1, 60.0);
   config.action_queue_size = params.integer("action_queue_size", config.action_queue_size, 1, 100000);
+  config.status_list_timeout = params.number("status_list_timeout", config.status_list_timeout, 0.1, 3600.0);
   return config;
 }
 
@@ -291,9 +292,12 @@ void PtzActionServer::start()
   state_spinner_->start();
 
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>(ros::Duration(FRAME_LOOKUP_CACHE_TIME));
-  tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, node_handle_, true);
+  // No dedicated thread: tf2_ros polls its queue every 10 ms, which alone costs more than the idle budget.
+  tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, node_handle_, false);
 
-  // Large actionlib queues: a storm of goals from several clients must lose none.
+  // A storm of goals from several clients must lose none: large actionlib queues, and finished goals leave the
+  // status list after status_list_timeout, since actionlib republishes the whole list on every goal transition.
+  // Parameters already set under an action's namespace win.
   for (ActionKind kind : { ActionKind::POSITION_ABS, ActionKind::POSITION_REL, ActionKind::VELOCITY,
                            ActionKind::POSITION_ABS_TF, ActionKind::FRAME })
   {
@@ -304,6 +308,10 @@ void PtzActionServer::start()
       {
         action_handle.setParam(name, config_.action_queue_size);
       }
+    }
+    if (!action_handle.hasParam("status_list_timeout"))
+    {
+      action_handle.setParam("status_list_timeout", config_.status_list_timeout);
     }
   }
   auto make_ptz_server = [this](ActionKind kind) {

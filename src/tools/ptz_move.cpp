@@ -135,8 +135,7 @@ std::vector<double> numbers(const Options& options, std::size_t first, std::size
 /// Waits for the latest PtzState (for the default zoom and the "state" command).
 bool currentState(const std::string& ns, ptz_action_server::PtzState& state, double wait)
 {
-  const auto message =
-      ros::topic::waitForMessage<ptz_action_server::PtzState>(ns + "/ptz_state", ros::Duration(wait));
+  const auto message = ros::topic::waitForMessage<ptz_action_server::PtzState>(ns + "/ptz_state", ros::Duration(wait));
   if (!message)
   {
     return false;
@@ -158,14 +157,14 @@ int run(const Options& options, const std::string& action, const Goal& goal)
   }
   const double scale = options.degrees ? 180.0 / M_PI : 1.0;
   const char* unit = options.degrees ? "deg" : "rad";
-  client.sendGoal(
-      goal, typename actionlib::SimpleActionClient<Action>::SimpleDoneCallback(),
-      typename actionlib::SimpleActionClient<Action>::SimpleActiveCallback(),
-      [&](const typename Action::_action_feedback_type::_feedback_type::ConstPtr& feedback) {
-        std::printf("\r  remaining: pan %+9.4f %s  tilt %+9.4f %s  zoom %+7.2f   ", feedback->pan_remaining * scale,
-                    unit, feedback->tilt_remaining * scale, unit, feedback->zoom_remaining);
-        std::fflush(stdout);
-      });
+  client.sendGoal(goal, typename actionlib::SimpleActionClient<Action>::SimpleDoneCallback(),
+                  typename actionlib::SimpleActionClient<Action>::SimpleActiveCallback(),
+                  [&](const typename Action::_action_feedback_type::_feedback_type::ConstPtr& feedback) {
+                    std::printf("\r  remaining: pan %+9.4f %s  tilt %+9.4f %s  zoom %+7.2f   ",
+                                feedback->pan_remaining * scale, unit, feedback->tilt_remaining * scale, unit,
+                                feedback->zoom_remaining);
+                    std::fflush(stdout);
+                  });
   const ros::WallTime started = ros::WallTime::now();
   bool cancelled = false;
   while (ros::ok() && !client.getState().isDone())

@@ -38,9 +38,9 @@ TEST(TrapezoidProfile, TrapezoidMatchesClosedForm)
   const double expected = 2.0 / 1.5 + 1.5 / 3.0;
   EXPECT_NEAR(profile.duration(), expected, 1e-9);
   EXPECT_NEAR(TrapezoidProfile::minimumDuration(2.0, PAN_LIMITS), expected, 1e-9);
-  EXPECT_NEAR(profile.at(0.5).velocity, 1.5, 1e-9);              // end of the ramp
-  EXPECT_NEAR(profile.at(0.5).position, 0.375, 1e-9);            // a t^2 / 2
-  EXPECT_NEAR(profile.at(expected / 2).position, 1.0, 1e-9);     // symmetric
+  EXPECT_NEAR(profile.at(0.5).velocity, 1.5, 1e-9);               // end of the ramp
+  EXPECT_NEAR(profile.at(0.5).position, 0.375, 1e-9);             // a t^2 / 2
+  EXPECT_NEAR(profile.at(expected / 2).position, 1.0, 1e-9);      // symmetric
   EXPECT_NEAR(profile.at(expected - 0.25).velocity, 0.75, 1e-9);  // braking
   EXPECT_DOUBLE_EQ(profile.at(expected + 1.0).position, 2.0);
   EXPECT_DOUBLE_EQ(profile.at(expected + 1.0).velocity, 0.0);

@@ -528,8 +528,7 @@ TEST_F(NodeTest, FrameGoalsPointAtTfFrames)
   {
     frame_->sendGoal(frame_goal);
     ASSERT_TRUE(frame_->waitForResult(ros::Duration(GOAL_WAIT)));
-  } while (frame_->getState() == State::REJECTED && ros::WallTime::now() < deadline &&
-           ros::WallDuration(0.05).sleep());
+  } while (frame_->getState() == State::REJECTED && ros::WallTime::now() < deadline && ros::WallDuration(0.05).sleep());
   ASSERT_EQ(frame_->getState(), State::SUCCEEDED) << frame_->getState().getText();
   ASSERT_TRUE(observer_->waitTicks(2));
   const auto target = tf_buffer_->lookupTransform("ptz_camera_link", "test_target", ros::Time(0));

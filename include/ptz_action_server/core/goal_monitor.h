@@ -17,11 +17,11 @@ namespace ptz_action_server
 struct GoalMonitorConfig
 {
   AxisValues tolerance{ { 0.005, 0.005, 0.05 } };  ///< position tolerance: rad, rad, X
-  double stall_timeout = 1.0;   ///< s an axis may stay still while it still has to move
-  double timeout_scale = 1.5;   ///< goal timeout = expected duration x scale + margin ...
-  double timeout_margin = 2.0;  ///< ... in s
-  double fixed_timeout = 0.0;   ///< > 0: use this timeout (s) instead of the estimate
-  double stop_timeout = 5.0;    ///< s a cancelled goal waits for the device to come to rest
+  double stall_timeout = 1.0;                      ///< s an axis may stay still while it still has to move
+  double timeout_scale = 1.5;                      ///< goal timeout = expected duration x scale + margin ...
+  double timeout_margin = 2.0;                     ///< ... in s
+  double fixed_timeout = 0.0;                      ///< > 0: use this timeout (s) instead of the estimate
+  double stop_timeout = 5.0;                       ///< s a cancelled goal waits for the device to come to rest
 };
 
 enum class GoalPhase
@@ -49,8 +49,8 @@ public:
   static GoalMonitor forPosition(const AxisValues& target, const PtzSample& start, const Capabilities& capabilities,
                                  const GoalMonitorConfig& config, TimePoint now);
   /// A goal to move at \p velocity; all zeros means "stop", which succeeds once the device rests.
-  static GoalMonitor forVelocity(const AxisValues& velocity, const PtzSample& start,
-                                 const Capabilities& capabilities, const GoalMonitorConfig& config, TimePoint now);
+  static GoalMonitor forVelocity(const AxisValues& velocity, const PtzSample& start, const Capabilities& capabilities,
+                                 const GoalMonitorConfig& config, TimePoint now);
   /// A cancelled goal whose device is being stopped: it ends once the device rests (or stop_timeout passes).
   static GoalMonitor forStop(const PtzSample& start, const GoalMonitorConfig& config, TimePoint now);
 
@@ -89,7 +89,7 @@ private:
   double expected_duration_ = 0.0;
   double timeout_ = 0.0;
   std::uint64_t start_fault_count_ = 0;
-  AxisValues last_moved_position_{};          ///< position where each axis was last seen moving
+  AxisValues last_moved_position_{};  ///< position where each axis was last seen moving
   std::array<TimePoint, AXIS_COUNT> last_moved_at_{};
 };
 

@@ -48,10 +48,10 @@ private:
 
   const std::shared_ptr<const Clock> clock_;
   const Capabilities capabilities_;
-  mutable std::mutex mutex_;              ///< guards everything below
-  mutable SimDeviceModel model_;          ///< mutable: sampling applies commands whose lag has passed
+  mutable std::mutex mutex_;      ///< guards everything below
+  mutable SimDeviceModel model_;  ///< mutable: sampling applies commands whose lag has passed
   bool dropout_ = false;
-  PtzSample frozen_sample_;               ///< what the device last said before it dropped out
+  PtzSample frozen_sample_;  ///< what the device last said before it dropped out
   std::uint64_t commands_received_ = 0;
   std::uint64_t commands_lost_ = 0;
 };

@@ -17,10 +17,10 @@ namespace ptz_action_server
 /// One simulated axis.
 struct SimAxisConfig
 {
-  bool present = true;        ///< false: the device has no such axis; it stays at its initial value
-  AxisRange range;            ///< mechanical limits; targets are clamped into them
-  AxisMotionLimits motion;    ///< max speed, acceleration, base speed
-  double resolution = 0.0;    ///< encoder step; positions are quantised to it (0 = continuous)
+  bool present = true;      ///< false: the device has no such axis; it stays at its initial value
+  AxisRange range;          ///< mechanical limits; targets are clamped into them
+  AxisMotionLimits motion;  ///< max speed, acceleration, base speed
+  double resolution = 0.0;  ///< encoder step; positions are quantised to it (0 = continuous)
   double initial_position = 0.0;
 };
 
@@ -41,7 +41,7 @@ struct SimDeviceConfig
 struct SimFaults
 {
   std::array<bool, AXIS_COUNT> stalled{};  ///< a stalled axis freezes where it is and ignores commands
-  double lag = 0.0;                         ///< seconds between a command and the moment the device acts on it
+  double lag = 0.0;                        ///< seconds between a command and the moment the device acts on it
 };
 
 /**

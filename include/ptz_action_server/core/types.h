@@ -106,10 +106,10 @@ struct AxisRange
 /// What a device can do on one axis.
 struct AxisCapability
 {
-  bool present = true;       ///< false: the device has no such axis (e.g. no zoom); goals ignore it
-  AxisRange range;           ///< position limits
-  double max_speed = 1.0;    ///< largest speed the device accepts, per second
-  double acceleration = 0.0; ///< per second squared; 0 means "unknown, treat as instant"
+  bool present = true;        ///< false: the device has no such axis (e.g. no zoom); goals ignore it
+  AxisRange range;            ///< position limits
+  double max_speed = 1.0;     ///< largest speed the device accepts, per second
+  double acceleration = 0.0;  ///< per second squared; 0 means "unknown, treat as instant"
 };
 
 /// What a backend's device can do; the node intersects the ranges with the URDF joint limits.
@@ -123,11 +123,11 @@ struct Capabilities
 /// Small and copyable without allocation, because the node takes one every state tick.
 struct PtzSample
 {
-  TimePoint stamp{};           ///< when the device's state was measured (or received)
-  bool link_up = false;        ///< true while the backend hears valid state from the device
-  AxisValues position{};       ///< pan, tilt (rad), zoom (X)
-  AxisValues velocity{};       ///< pan, tilt (rad/s), zoom (X/s); 0 when the device does not report it
-  bool moving = false;         ///< the device is still in motion (false = settled)
+  TimePoint stamp{};              ///< when the device's state was measured (or received)
+  bool link_up = false;           ///< true while the backend hears valid state from the device
+  AxisValues position{};          ///< pan, tilt (rad), zoom (X)
+  AxisValues velocity{};          ///< pan, tilt (rad/s), zoom (X/s); 0 when the device does not report it
+  bool moving = false;            ///< the device is still in motion (false = settled)
   std::uint64_t fault_count = 0;  ///< increments each time the device refuses or fails a command
 };
 

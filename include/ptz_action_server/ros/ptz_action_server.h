@@ -41,9 +41,11 @@ struct NodeConfig
   KinematicsNames names;             ///< URDF joint and link names
   GoalMonitorConfig monitor;         ///< tolerances, stall and timeout rules
   int action_queue_size = 2000;      ///< actionlib goal/cancel subscriber and publisher queues
+  double status_list_timeout = 1.0;  ///< s a finished goal stays in actionlib's status list (actionlib: 5)
 
   /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
-  /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size.
+  /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,
+  /// ~status_list_timeout.
   static NodeConfig load(const ParamReader& params);
 };
 
@@ -128,7 +130,7 @@ private:
   void diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper& status);
   ros::Time toRosTime(TimePoint stamp) const;
 
-  ros::NodeHandle node_handle_;  ///< the node's namespace: actions and topics; the main callback queue
+  ros::NodeHandle node_handle_;        ///< the node's namespace: actions and topics; the main callback queue
   ros::NodeHandle state_node_handle_;  ///< same namespace on state_queue_
   NodeConfig config_;
   PtzKinematics kinematics_;
@@ -161,7 +163,7 @@ private:
   double state_rate_max_ = 0.0;
   std::unique_ptr<diagnostic_updater::FrequencyStatus> state_rate_;
 
-  // Frame lookups for position_abs_tf and frame goals (the listener runs its own thread).
+  // Frame lookups for position_abs_tf and frame goals; the listener feeds the buffer from the main queue.
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
 
