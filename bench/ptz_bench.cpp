@@ -32,6 +32,7 @@
 #include <ros/ros.h>
 
 #include "ptz_action_server/PtzAction.h"
+#include "ptz_action_server/ros/ptz_goal.h"
 #include "ptz_action_server/PtzState.h"
 #include "ptz_action_server/core/motion_profile.h"
 #include "ptz_action_server/core/sim_backend.h"
@@ -215,15 +216,6 @@ double percentile(std::vector<double> values, double share)
   return values[index];
 }
 
-PtzGoal ptzGoal(double pan, double tilt, double zoom)
-{
-  PtzGoal goal;
-  goal.pan = pan;
-  goal.tilt = tilt;
-  goal.zoom = zoom;
-  return goal;
-}
-
 struct Row
 {
   std::string figure;
@@ -253,7 +245,7 @@ int runClients(pid_t node, SharedCounters* counters, double storm_seconds, int z
   rows.push_back({ "node CPU, idle (" + std::to_string(static_cast<int>(idle_seconds)) + " s)", text, "<= 1 %" });
 
   // Reach time of a 2 rad pan goal against the trapezoid's closed-form minimum.
-  client.sendGoal(ptzGoal(-1.0, 0.0, 1.0));
+  client.sendGoal(makePtzGoal(-1.0, 0.0, 1.0));
   client.waitForResult(ros::Duration(10.0));
   const double minimum = TrapezoidProfile::minimumDuration(2.0, AxisMotionLimits{ 1.5, 3.0, 0.0 });
   std::vector<double> ratios;
@@ -261,7 +253,7 @@ int runClients(pid_t node, SharedCounters* counters, double storm_seconds, int z
   {
     const double target = run % 2 == 0 ? 1.0 : -1.0;
     const ros::WallTime sent = ros::WallTime::now();
-    client.sendGoal(ptzGoal(target, 0.0, 1.0));
+    client.sendGoal(makePtzGoal(target, 0.0, 1.0));
     client.waitForResult(ros::Duration(10.0));
     ratios.push_back((ros::WallTime::now() - sent).toSec() / minimum);
   }
@@ -278,7 +270,7 @@ int runClients(pid_t node, SharedCounters* counters, double storm_seconds, int z
   {
     const std::uint64_t commands_before = counters->commands;
     const std::int64_t sent_ns = monotonicNanoseconds();
-    client.sendGoal(ptzGoal(-1.0, 0.0, 1.0));
+    client.sendGoal(makePtzGoal(-1.0, 0.0, 1.0));
     client.waitForResult(ros::Duration(5.0));
     const std::int64_t done_ns = monotonicNanoseconds();
     if (client.getState() != actionlib::SimpleClientGoalState::SUCCEEDED)
@@ -318,7 +310,7 @@ int runClients(pid_t node, SharedCounters* counters, double storm_seconds, int z
       int round = 0;
       while (storming)
       {
-        handles.push_back(storm_client.sendGoal(ptzGoal(0.5 * std::sin(0.05 * round + index), 0.1 * index, 1.0)));
+        handles.push_back(storm_client.sendGoal(makePtzGoal(0.5 * std::sin(0.05 * round + index), 0.1 * index, 1.0)));
         ++goals_sent;
         ++round;
         rate.sleep();

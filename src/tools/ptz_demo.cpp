@@ -15,11 +15,13 @@
 #include <tf2_ros/static_transform_broadcaster.h>
 
 #include "ptz_action_server/PtzAction.h"
+#include "ptz_action_server/ros/ptz_goal.h"
 #include "ptz_action_server/PtzFrameAction.h"
 #include "ptz_action_server/PtzState.h"
 
 namespace
 {
+using ptz_action_server::makePtzGoal;
 using ptz_action_server::PtzAction;
 using ptz_action_server::PtzFrameAction;
 using ptz_action_server::PtzGoal;
@@ -66,15 +68,6 @@ void printFeedback(const char* label, const FeedbackPtr& feedback)
               label, feedback->pan_remaining, feedback->tilt_remaining, feedback->zoom_remaining,
               modeName(latest_state.mode), latest_state.pan, latest_state.tilt, latest_state.zoom);
   std::fflush(stdout);
-}
-
-PtzGoal ptzGoal(double pan, double tilt, double zoom)
-{
-  PtzGoal goal;
-  goal.pan = pan;
-  goal.tilt = tilt;
-  goal.zoom = zoom;
-  return goal;
 }
 
 /// Waits for the client's goal to end and reports whether it ended as \p expected.
@@ -155,24 +148,24 @@ int main(int argc, char** argv)
 
   bool all_ok = true;
   std::printf("\n[1/6] position_abs: pan 0.8 rad (right), tilt 0.3 rad (up), zoom 4x\n");
-  send(absolute, ptzGoal(0.8, 0.3, 4.0), "abs");
+  send(absolute, makePtzGoal(0.8, 0.3, 4.0), "abs");
   all_ok &= expectEnd(absolute, "position_abs", State::SUCCEEDED);
 
   std::printf("\n[2/6] position_abs to pan -0.8, preempted after 0.6 s by position_abs to pan 0.3, tilt 0.1, 2x\n");
-  send(absolute, ptzGoal(-0.8, -0.2, 1.0), "first");
+  send(absolute, makePtzGoal(-0.8, -0.2, 1.0), "first");
   ros::WallDuration(0.6).sleep();
-  send(preempting, ptzGoal(0.3, 0.1, 2.0), "second");
+  send(preempting, makePtzGoal(0.3, 0.1, 2.0), "second");
   all_ok &= expectEnd(absolute, "first goal", State::PREEMPTED);
   all_ok &= expectEnd(preempting, "second goal", State::SUCCEEDED);
 
   std::printf("\n[3/6] velocity: pan at -0.5 rad/s, cancelled after 1 s (the device decelerates to rest)\n");
-  send(velocity, ptzGoal(-0.5, 0.0, 0.0), "velocity");
+  send(velocity, makePtzGoal(-0.5, 0.0, 0.0), "velocity");
   ros::WallDuration(1.0).sleep();
   velocity.cancelGoal();
   all_ok &= expectEnd(velocity, "velocity goal", State::PREEMPTED);
 
   std::printf("\n[4/6] position_rel: pan +0.3 rad, tilt -0.1 rad from where it stopped\n");
-  send(relative, ptzGoal(0.3, -0.1, 0.0), "rel");
+  send(relative, makePtzGoal(0.3, -0.1, 0.0), "rel");
   all_ok &= expectEnd(relative, "position_rel", State::SUCCEEDED);
 
   std::printf("\n[5/6] frame: point at '%s' (2 m ahead, 1 m right, 0.5 m up), zoom 3x\n", TARGET_FRAME);
@@ -184,7 +177,7 @@ int main(int argc, char** argv)
   all_ok &= expectEnd(frame, "frame goal", State::SUCCEEDED);
 
   std::printf("\n[6/6] an invalid goal: pan NaN is rejected and nothing moves\n");
-  send(absolute, ptzGoal(std::numeric_limits<double>::quiet_NaN(), 0.0, 1.0), "nan");
+  send(absolute, makePtzGoal(std::numeric_limits<double>::quiet_NaN(), 0.0, 1.0), "nan");
   all_ok &= expectEnd(absolute, "NaN goal", State::REJECTED);
 
   ros::WallDuration(0.25).sleep();  // one more state tick

@@ -15,6 +15,7 @@
 #include "ptz_action_server/PtzFrameAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
 #include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/ros/ptz_goal.h"
 
 namespace
 {
@@ -218,10 +219,7 @@ int main(int argc, char** argv)
   if (command == "abs" || command == "rel" || command == "vel")
   {
     const std::vector<double> values = numbers(options, 1, 2, 3);
-    PtzGoal goal;
-    goal.pan = values[0];
-    goal.tilt = values[1];
-    goal.zoom = values.size() > 2 ? values[2] : 0.0;
+    PtzGoal goal = makePtzGoal(values[0], values[1], values.size() > 2 ? values[2] : 0.0);
     if (command == "abs" && values.size() == 2)
     {
       PtzState state;

@@ -24,11 +24,13 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "ptz_action_server/PtzAction.h"
+#include "ptz_action_server/ros/ptz_goal.h"
 #include "ptz_action_server/PtzFrameAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
 #include "ptz_action_server/PtzState.h"
 #include "ptz_action_server/SetSimFaults.h"
 
+using ptz_action_server::makePtzGoal;
 using ptz_action_server::PtzAction;
 using ptz_action_server::PtzFeedbackConstPtr;
 using ptz_action_server::PtzFrameAction;
@@ -128,15 +130,6 @@ private:
   sensor_msgs::JointState joints_;
 };
 
-PtzGoal ptzGoal(double pan, double tilt, double zoom)
-{
-  PtzGoal goal;
-  goal.pan = pan;
-  goal.tilt = tilt;
-  goal.zoom = zoom;
-  return goal;
-}
-
 /// Records feedback of one goal.
 template <class Feedback>
 struct FeedbackLog
@@ -211,7 +204,7 @@ protected:
   /// Sends a goal and waits for its end; returns the final state.
   State moveTo(double pan, double tilt, double zoom)
   {
-    absolute_->sendGoal(ptzGoal(pan, tilt, zoom));
+    absolute_->sendGoal(makePtzGoal(pan, tilt, zoom));
     EXPECT_TRUE(absolute_->waitForResult(ros::Duration(GOAL_WAIT)));
     return absolute_->getState();
   }
@@ -273,7 +266,7 @@ TEST_F(NodeTest, PositionGoalSucceedsWithFeedback)
   ASSERT_EQ(moveTo(0.0, 0.0, 1.0), State::SUCCEEDED);
   FeedbackLog<ptz_action_server::PtzFeedback> feedback;
   observer_->clear();
-  absolute_->sendGoal(ptzGoal(0.6, -0.3, 5.0), PtzClient::SimpleDoneCallback(), PtzClient::SimpleActiveCallback(),
+  absolute_->sendGoal(makePtzGoal(0.6, -0.3, 5.0), PtzClient::SimpleDoneCallback(), PtzClient::SimpleActiveCallback(),
                       [&](const PtzFeedbackConstPtr& item) { feedback.add(*item); });
   ASSERT_TRUE(absolute_->waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(absolute_->getState(), State::SUCCEEDED) << absolute_->getState().getText();
@@ -315,9 +308,9 @@ TEST_F(NodeTest, SecondGoalPreemptsWithoutAStopInBetween)
 {
   ASSERT_EQ(moveTo(-1.0, 0.0, 1.0), State::SUCCEEDED);
   observer_->clear();
-  absolute_->sendGoal(ptzGoal(1.0, 0.0, 1.0));
+  absolute_->sendGoal(makePtzGoal(1.0, 0.0, 1.0));
   ASSERT_TRUE(observer_->waitFor([](const PtzState& state) { return state.pan > -0.3; }, 5.0));  // well under way
-  second_absolute_->sendGoal(ptzGoal(1.6, 0.2, 1.0));
+  second_absolute_->sendGoal(makePtzGoal(1.6, 0.2, 1.0));
   ASSERT_TRUE(absolute_->waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(absolute_->getState(), State::PREEMPTED);
   EXPECT_NE(absolute_->getState().getText().find("preempted"), std::string::npos) << absolute_->getState().getText();
@@ -342,7 +335,7 @@ TEST_F(NodeTest, SecondGoalPreemptsWithoutAStopInBetween)
 TEST_F(NodeTest, CancelDeceleratesTheDeviceToRest)
 {
   ASSERT_EQ(moveTo(-1.5, 0.0, 1.0), State::SUCCEEDED);
-  absolute_->sendGoal(ptzGoal(1.5, 0.0, 1.0));
+  absolute_->sendGoal(makePtzGoal(1.5, 0.0, 1.0));
   ASSERT_TRUE(observer_->waitFor([](const PtzState& state) { return state.pan > -0.2; }, 5.0));
   const double at_cancel = observer_->latest().pan;
   absolute_->cancelGoal();
@@ -375,14 +368,14 @@ TEST_F(NodeTest, InvalidGoalsAreRejectedAndNothingMoves)
     const char* reason;
   };
   const std::vector<Case> cases = {
-    { absolute_, ptzGoal(nan, 0.0, 1.0), "pan position is NaN" },
-    { absolute_, ptzGoal(0.0, 0.0, inf), "zoom position is +Inf" },
-    { absolute_, ptzGoal(0.0, 2.0, 1.0), "tilt 2.0000 rad is outside the limits" },
-    { absolute_, ptzGoal(-4.0, 0.0, 1.0), "pan -4.0000 rad is outside the limits" },
-    { relative_, ptzGoal(0.0, nan, 0.0), "tilt offset is NaN" },
-    { relative_, ptzGoal(3.5, 0.0, 0.0), "is outside the limits" },
-    { velocity_, ptzGoal(0.0, -inf, 0.0), "tilt velocity is -Inf" },
-    { velocity_, ptzGoal(50.0, 0.0, 0.0), "exceeds the maximum speed" },
+    { absolute_, makePtzGoal(nan, 0.0, 1.0), "pan position is NaN" },
+    { absolute_, makePtzGoal(0.0, 0.0, inf), "zoom position is +Inf" },
+    { absolute_, makePtzGoal(0.0, 2.0, 1.0), "tilt 2.0000 rad is outside the limits" },
+    { absolute_, makePtzGoal(-4.0, 0.0, 1.0), "pan -4.0000 rad is outside the limits" },
+    { relative_, makePtzGoal(0.0, nan, 0.0), "tilt offset is NaN" },
+    { relative_, makePtzGoal(3.5, 0.0, 0.0), "is outside the limits" },
+    { velocity_, makePtzGoal(0.0, -inf, 0.0), "tilt velocity is -Inf" },
+    { velocity_, makePtzGoal(50.0, 0.0, 0.0), "exceeds the maximum speed" },
   };
   for (const Case& item : cases)
   {
@@ -411,7 +404,7 @@ TEST_F(NodeTest, StalledAxisAbortsWithoutSuccess)
   ptz_action_server::SetSimFaults::Request faults;
   faults.stall_tilt = true;
   ASSERT_TRUE(setFaults(faults));
-  absolute_->sendGoal(ptzGoal(0.3, 0.4, 1.0));
+  absolute_->sendGoal(makePtzGoal(0.3, 0.4, 1.0));
   ASSERT_TRUE(absolute_->waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(absolute_->getState(), State::ABORTED);
   EXPECT_NE(absolute_->getState().getText().find("stalled: tilt"), std::string::npos)
@@ -429,7 +422,7 @@ TEST_F(NodeTest, LostLinkAbortsAndTheNodeRecovers)
     GTEST_SKIP() << "fault hooks belong to the sim backend";
   }
   ASSERT_EQ(moveTo(0.0, 0.0, 1.0), State::SUCCEEDED);
-  absolute_->sendGoal(ptzGoal(2.0, 0.0, 1.0));
+  absolute_->sendGoal(makePtzGoal(2.0, 0.0, 1.0));
   ASSERT_TRUE(observer_->waitFor([](const PtzState& state) { return state.pan > 0.2; }, 5.0));
   ptz_action_server::SetSimFaults::Request dropout;
   dropout.dropout = true;
@@ -451,7 +444,7 @@ TEST_F(NodeTest, RelativeGoalMovesByTheOffset)
   ASSERT_EQ(moveTo(0.1, -0.2, 3.0), State::SUCCEEDED);
   ASSERT_TRUE(observer_->waitTicks(1));
   const PtzState start = observer_->latest();
-  relative_->sendGoal(ptzGoal(0.25, 0.15, 1.0));
+  relative_->sendGoal(makePtzGoal(0.25, 0.15, 1.0));
   ASSERT_TRUE(relative_->waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(relative_->getState(), State::SUCCEEDED) << relative_->getState().getText();
   ASSERT_TRUE(observer_->waitTicks(1));
@@ -467,7 +460,7 @@ TEST_F(NodeTest, VelocityGoalMovesUntilStoppedOrAtTheLimit)
 {
   ASSERT_EQ(moveTo(0.0, 0.0, 1.0), State::SUCCEEDED);
   FeedbackLog<ptz_action_server::PtzFeedback> feedback;
-  velocity_->sendGoal(ptzGoal(-0.4, 0.0, 0.0), PtzClient::SimpleDoneCallback(), PtzClient::SimpleActiveCallback(),
+  velocity_->sendGoal(makePtzGoal(-0.4, 0.0, 0.0), PtzClient::SimpleDoneCallback(), PtzClient::SimpleActiveCallback(),
                       [&](const PtzFeedbackConstPtr& item) { feedback.add(*item); });
   ASSERT_TRUE(observer_->waitFor([](const PtzState& state) { return state.pan < -0.3; }, 5.0));
   EXPECT_EQ(observer_->latest().mode, PtzState::MODE_VELOCITY);
@@ -478,7 +471,7 @@ TEST_F(NodeTest, VelocityGoalMovesUntilStoppedOrAtTheLimit)
   // An all-zero velocity goal preempts it and stops the device.
   PtzClient stopper("move_ptz/velocity", true);
   ASSERT_TRUE(stopper.waitForServer(ros::Duration(5.0)));
-  stopper.sendGoal(ptzGoal(0.0, 0.0, 0.0));
+  stopper.sendGoal(makePtzGoal(0.0, 0.0, 0.0));
   ASSERT_TRUE(velocity_->waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(velocity_->getState(), State::PREEMPTED);
   ASSERT_TRUE(stopper.waitForResult(ros::Duration(GOAL_WAIT)));
@@ -489,7 +482,7 @@ TEST_F(NodeTest, VelocityGoalMovesUntilStoppedOrAtTheLimit)
   EXPECT_EQ(observer_->latest().pan, stopped);
 
   // Tilt up at 1 rad/s runs into the upper limit, and the goal ends there.
-  velocity_->sendGoal(ptzGoal(0.0, 1.0, 0.0));
+  velocity_->sendGoal(makePtzGoal(0.0, 1.0, 0.0));
   ASSERT_TRUE(velocity_->waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(velocity_->getState(), State::SUCCEEDED) << velocity_->getState().getText();
   EXPECT_NE(velocity_->getState().getText().find("tilt reached its upper limit"), std::string::npos)
@@ -581,7 +574,7 @@ TEST_F(NodeTest, StormOfGoalsFromSeveralClientsLosesNone)
   {
     for (int index = 0; index < CLIENTS; ++index)
     {
-      handles.push_back(clients[index]->sendGoal(ptzGoal(0.01 * round - 0.2, 0.005 * index, 1.0)));
+      handles.push_back(clients[index]->sendGoal(makePtzGoal(0.01 * round - 0.2, 0.005 * index, 1.0)));
     }
     rate.sleep();
   }
@@ -615,7 +608,7 @@ class ClampTest : public NodeTest
 
 TEST_F(ClampTest, OutOfRangeGoalsAreClampedAndSaySo)
 {
-  absolute_->sendGoal(ptzGoal(4.0, -2.0, 1.0));
+  absolute_->sendGoal(makePtzGoal(4.0, -2.0, 1.0));
   ASSERT_TRUE(absolute_->waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(absolute_->getState(), State::SUCCEEDED) << absolute_->getState().getText();
   EXPECT_NE(absolute_->getState().getText().find("clamped pan 4.0000 -> 3.1416 rad, tilt -2.0000 -> -1.5708 rad"),
@@ -626,7 +619,7 @@ TEST_F(ClampTest, OutOfRangeGoalsAreClampedAndSaySo)
   EXPECT_NEAR(observer_->latest().tilt, -M_PI / 2, TOLERANCE);
 
   // Clamping never makes NaN acceptable.
-  absolute_->sendGoal(ptzGoal(std::numeric_limits<double>::quiet_NaN(), 0.0, 1.0));
+  absolute_->sendGoal(makePtzGoal(std::numeric_limits<double>::quiet_NaN(), 0.0, 1.0));
   ASSERT_TRUE(absolute_->waitForResult(ros::Duration(5.0)));
   EXPECT_EQ(absolute_->getState(), State::REJECTED);
 }
