@@ -1,13 +1,16 @@
 /**
  * \file
- * \brief Benchmark of the node with the sim backend. Prints a table of figures; asserts nothing.
+ * \brief Benchmark of the node with the sim or pantilt_udp backend. Prints tables of figures; asserts nothing.
  *
  * The program forks twice. One child is the node: the same PtzActionServer and SimBackend the ptz_action_server
  * executable runs, with the backend wrapped by a recorder that stamps every command into shared memory
  * (CLOCK_MONOTONIC is one clock for all processes). The other child only subscribes to ptz_state and stamps each
  * arrival, as a user's node would see it. The parent is the clients, talking to the node over real ROS connections.
  *
- * Usage: ptz_bench URDF_FILE [--storm-seconds 30] [--zero-goals 1000] [--idle-seconds 10]
+ * Usage: ptz_bench URDF_FILE [--backend sim|pantilt_udp] [--storm-seconds 30] [--zero-goals 1000]
+ *                  [--idle-seconds 10] [--goals 1000]
+ * With --backend pantilt_udp the node runs the UDP backend against an emulator in the parent process, and the
+ * figure is goal -> first datagram at the emulator.
  * A rosmaster must be running (bench/run starts one).
  */
 #include <sys/mman.h>
@@ -35,6 +38,8 @@
 #include "ptz_action_server/ros/ptz_goal.h"
 #include "ptz_action_server/PtzState.h"
 #include "ptz_action_server/core/motion_profile.h"
+#include "ptz_action_server/core/pantilt/pantilt_udp_backend.h"
+#include "ptz_action_server/core/pantilt/pantilt_udp_device.h"
 #include "ptz_action_server/core/sim_backend.h"
 #include "ptz_action_server/ros/ptz_action_server.h"
 
@@ -122,21 +127,33 @@ std::string readFile(const std::string& path)
   return text.str();
 }
 
-/// The node process: runs until SIGTERM.
-int runNode(int argc, char** argv, const std::string& urdf, SharedCounters* counters)
+/// The node process: runs until SIGINT. \p device_port > 0 selects the pantilt_udp backend, else sim.
+int runNode(int argc, char** argv, const std::string& urdf, SharedCounters* counters, std::uint16_t device_port)
 {
   ros::init(argc, argv, "ptz_action_server");
   ros::NodeHandle node_handle("/ptz");
   node_handle.setParam("robot_description", urdf);
   const PtzKinematics kinematics = PtzKinematics::fromUrdf(urdf);
-  SimDeviceConfig device = SimDeviceConfig::defaults();
   const Capabilities urdf_limits = PtzActionServer::urdfLimits(kinematics);
-  for (Axis axis : { PAN, TILT })
+  std::shared_ptr<PtzBackend> device_backend;
+  if (device_port > 0)
   {
-    device.axes[axis].range = urdf_limits.axes[axis].range;
-    device.axes[axis].motion.max_speed = urdf_limits.axes[axis].max_speed;
+    PanTiltUdpConfig config;
+    config.device_port = device_port;
+    config.local_host = "127.0.0.1";
+    device_backend = std::make_shared<PanTiltUdpBackend>(config);
   }
-  auto backend = std::make_shared<RecordingBackend>(std::make_shared<SimBackend>(device), counters);
+  else
+  {
+    SimDeviceConfig device = SimDeviceConfig::defaults();
+    for (Axis axis : { PAN, TILT })
+    {
+      device.axes[axis].range = urdf_limits.axes[axis].range;
+      device.axes[axis].motion.max_speed = urdf_limits.axes[axis].max_speed;
+    }
+    device_backend = std::make_shared<SimBackend>(device);
+  }
+  auto backend = std::make_shared<RecordingBackend>(device_backend, counters);
   PtzActionServer server(node_handle, NodeConfig(), kinematics, backend);
   server.start();
   ros::spin();
@@ -222,6 +239,16 @@ struct Row
   std::string value;
   std::string target;
 };
+
+void printTable(const char* title, const std::vector<Row>& rows)
+{
+  std::printf("\n%s\n\n| figure | value | target |\n|---|---|---|\n", title);
+  for (const Row& row : rows)
+  {
+    std::printf("| %s | %s | %s |\n", row.figure.c_str(), row.value.c_str(), row.target.c_str());
+  }
+  std::fflush(stdout);
+}
 
 int runClients(pid_t node, SharedCounters* counters, double storm_seconds, int zero_goals, double idle_seconds)
 {
@@ -361,11 +388,67 @@ int runClients(pid_t node, SharedCounters* counters, double storm_seconds, int z
   std::snprintf(text, sizeof(text), "%.1f MB", peakRssKilobytes(node) / 1024.0);
   rows.push_back({ "node peak RSS", text, "" });
 
-  std::printf("\n| figure | value | target |\n|---|---|---|\n");
-  for (const Row& row : rows)
+  printTable("sim backend", rows);
+  return 0;
+}
+
+/// pantilt_udp: goal -> first datagram at the emulator, over \p goals goals.
+int runUdpClients(cr::pantilt::PanTiltUdpDevice& device, int goals)
+{
+  ros::NodeHandle node_handle("/ptz");
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  actionlib::ActionClient<PtzAction> client(node_handle, "move_ptz/position_abs");
+  if (!client.waitForActionServerToStart(ros::Duration(30.0)))
   {
-    std::printf("| %s | %s | %s |\n", row.figure.c_str(), row.value.c_str(), row.target.c_str());
+    std::fprintf(stderr, "ptz_bench: the node did not come up\n");
+    return 1;
   }
+  auto commands = [&device]() {
+    std::size_t count = 0;
+    for (const cr::pantilt::ReceivedDatagram& datagram : device.received())
+    {
+      count += !datagram.bytes.empty() && datagram.bytes[0] != cr::pantilt::PARAMS_HEADER;
+    }
+    return count;
+  };
+  ros::WallDuration(1.0).sleep();  // the link is up and the first speeds are sent
+  std::vector<double> latency_ms;
+  std::vector<actionlib::ClientGoalHandle<PtzAction>> handles;
+  for (int index = 0; index < goals; ++index)
+  {
+    const std::size_t before = commands();
+    const TimePoint sent = SteadyClock::now();
+    handles.push_back(client.sendGoal(makePtzGoal(index % 2 == 0 ? 0.10 : 0.12, 0.0, 1.0)));
+    const TimePoint deadline = addSeconds(sent, 1.0);
+    while (commands() == before && SteadyClock::now() < deadline)
+    {
+      std::this_thread::yield();
+    }
+    // The first datagram of this goal: the earliest one after the count we saw before sending.
+    const std::vector<cr::pantilt::ReceivedDatagram> received = device.received();
+    std::size_t seen = 0;
+    for (const cr::pantilt::ReceivedDatagram& datagram : received)
+    {
+      if (!datagram.bytes.empty() && datagram.bytes[0] != cr::pantilt::PARAMS_HEADER && ++seen == before + 1)
+      {
+        latency_ms.push_back(secondsBetween(sent, datagram.at) * 1e3);
+        break;
+      }
+    }
+    ros::WallDuration(0.002).sleep();  // let the goal's remaining frames go out before the next goal
+    if (handles.size() > 100)
+    {
+      handles.erase(handles.begin(), handles.begin() + 50);
+    }
+  }
+  std::vector<Row> rows;
+  char text[128];
+  std::snprintf(text, sizeof(text), "p50 %.2f ms, p99 %.2f ms, max %.2f ms (%zu of %d goals)",
+                percentile(latency_ms, 0.5), percentile(latency_ms, 0.99), percentile(latency_ms, 1.0),
+                latency_ms.size(), goals);
+  rows.push_back({ "pantilt_udp: goal -> first datagram at the emulator", text, "p99 <= 5 ms" });
+  printTable("pantilt_udp backend", rows);
   return 0;
 }
 }  // namespace
@@ -374,45 +457,79 @@ int main(int argc, char** argv)
 {
   if (argc < 2)
   {
-    std::fprintf(stderr, "usage: ptz_bench URDF_FILE [--storm-seconds S] [--zero-goals N] [--idle-seconds S]\n");
+    std::fprintf(stderr, "usage: ptz_bench URDF_FILE [--backend sim|pantilt_udp] [--storm-seconds S] "
+                         "[--zero-goals N] [--idle-seconds S] [--goals N]\n");
     return 2;
   }
   const std::string urdf = readFile(argv[1]);
+  std::string backend = "sim";
   double storm_seconds = 30.0;
   int zero_goals = 1000;
   double idle_seconds = 10.0;
+  int goals = 1000;
   for (int index = 2; index + 1 < argc; index += 2)
   {
     const std::string option = argv[index];
-    if (option == "--storm-seconds")
+    const std::string value = argv[index + 1];
+    if (option == "--backend")
     {
-      storm_seconds = std::stod(argv[index + 1]);
+      backend = value;
+    }
+    else if (option == "--storm-seconds")
+    {
+      storm_seconds = std::stod(value);
     }
     else if (option == "--zero-goals")
     {
-      zero_goals = std::stoi(argv[index + 1]);
+      zero_goals = std::stoi(value);
     }
     else if (option == "--idle-seconds")
     {
-      idle_seconds = std::stod(argv[index + 1]);
+      idle_seconds = std::stod(value);
+    }
+    else if (option == "--goals")
+    {
+      goals = std::stoi(value);
     }
   }
   auto* counters = static_cast<SharedCounters*>(
       mmap(nullptr, sizeof(SharedCounters), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0));
   new (counters) SharedCounters();
+
+  std::uint16_t device_port = 0;
+  if (backend == "pantilt_udp")
+  {
+    UdpSocket probe;  // an ephemeral port for the emulator, found before the fork
+    probe.bind("127.0.0.1", 0);
+    device_port = probe.localEndpoint().port();
+  }
   const pid_t node = fork();
   if (node == 0)
   {
-    return runNode(argc, argv, urdf, counters);
+    return runNode(argc, argv, urdf, counters, device_port);
   }
-  const pid_t observer = fork();
-  if (observer == 0)
+  std::vector<pid_t> children = { node };
+  int status = 0;
+  if (backend == "pantilt_udp")
   {
-    return runObserver(argc, argv, counters);
+    cr::pantilt::PanTiltUdpDeviceConfig config;
+    config.port = device_port;
+    cr::pantilt::PanTiltUdpDevice device(config);
+    ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
+    status = runUdpClients(device, goals);
   }
-  ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
-  const int status = runClients(node, counters, storm_seconds, zero_goals, idle_seconds);
-  for (pid_t child : { observer, node })
+  else
+  {
+    const pid_t observer = fork();
+    if (observer == 0)
+    {
+      return runObserver(argc, argv, counters);
+    }
+    children.insert(children.begin(), observer);
+    ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
+    status = runClients(node, counters, storm_seconds, zero_goals, idle_seconds);
+  }
+  for (pid_t child : children)
   {
     kill(child, SIGINT);
     waitpid(child, nullptr, 0);

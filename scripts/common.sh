@@ -22,7 +22,8 @@ PTZ_APT_PACKAGES=(
   libdiagnostic-updater-dev pluginlib-dev
   libsensor-msgs-dev libgeometry-msgs-dev
   ros-robot-state-publisher
-  googletest libgtest-dev
+  googletest libgtest-dev libbenchmark-dev
+  nlohmann-json3-dev
 )
 
 log() {

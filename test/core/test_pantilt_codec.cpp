@@ -209,10 +209,9 @@ TEST(PanTiltRoundTrip, ParamsWithEveryMask)
   for (WireVersion version : BOTH_VERSIONS)
   {
     // The fields of this format, in frame order, as mask members.
-    std::vector<bool PanTiltParamsMask::*> fields = {
-      &PanTiltParamsMask::panMotorPosition, &PanTiltParamsMask::tiltMotorPosition, &PanTiltParamsMask::panAngle,
-      &PanTiltParamsMask::tiltAngle
-    };
+    std::vector<bool PanTiltParamsMask::*> fields = { &PanTiltParamsMask::panMotorPosition,
+                                                      &PanTiltParamsMask::tiltMotorPosition,
+                                                      &PanTiltParamsMask::panAngle, &PanTiltParamsMask::tiltAngle };
     if (version == WireVersion::V1_0)
     {
       fields.insert(fields.end(), { &PanTiltParamsMask::panTiltMotorPosition, &PanTiltParamsMask::panTiltAngle,
@@ -221,10 +220,10 @@ TEST(PanTiltRoundTrip, ParamsWithEveryMask)
     }
     else
     {
-      fields.insert(fields.end(), { &PanTiltParamsMask::panMotorSpeed, &PanTiltParamsMask::tiltMotorSpeed,
-                                    &PanTiltParamsMask::isConnected, &PanTiltParamsMask::isOpen,
-                                    &PanTiltParamsMask::custom1, &PanTiltParamsMask::custom2,
-                                    &PanTiltParamsMask::custom3 });
+      fields.insert(fields.end(),
+                    { &PanTiltParamsMask::panMotorSpeed, &PanTiltParamsMask::tiltMotorSpeed,
+                      &PanTiltParamsMask::isConnected, &PanTiltParamsMask::isOpen, &PanTiltParamsMask::custom1,
+                      &PanTiltParamsMask::custom2, &PanTiltParamsMask::custom3 });
     }
     for (unsigned bits = 0; bits < (1u << fields.size()); ++bits)
     {

@@ -142,8 +142,8 @@ TEST_P(PanTiltUdpTest, CancelSendsStopAndTheDeviceDecelerates)
   const double at_stop = backend_->sample().position[PAN];
   ASSERT_TRUE(waitUntil([&] { return !backend_->sample().moving; }, 2.0));
   const double stopped = backend_->sample().position[PAN];
-  EXPECT_GT(stopped, at_stop);          // braked on, not jumped
-  EXPECT_LT(stopped, at_stop + 0.5);    // within the braking distance (0.375 rad) and a frame of travel
+  EXPECT_GT(stopped, at_stop);        // braked on, not jumped
+  EXPECT_LT(stopped, at_stop + 0.5);  // within the braking distance (0.375 rad) and a frame of travel
   EXPECT_LT(stopped, 2.5);
 }
 
@@ -230,8 +230,7 @@ TEST_P(PanTiltUdpTest, MalformedDatagramsAreCountedOnceAndDropped)
   bad_mask[4] |= 0x01;
   const Bytes empty;
   const Bytes oversized(4000, 0x02);
-  const std::vector<const Bytes*> from_device = { &bad_size, &bad_header, &bad_version, &bad_mask, &empty,
-                                                  &oversized };
+  const std::vector<const Bytes*> from_device = { &bad_size, &bad_header, &bad_version, &bad_mask, &empty, &oversized };
 
   const PanTiltUdpCounters before = backend_->counters();
   constexpr int TOTAL = 10000;
@@ -244,8 +243,8 @@ TEST_P(PanTiltUdpTest, MalformedDatagramsAreCountedOnceAndDropped)
       const Bytes& garbage = *from_device[static_cast<std::size_t>(sent / 2 + index) % from_device.size()];
       device_->sendRaw(backend_endpoint, garbage.data(), garbage.size());
     }
-    ASSERT_TRUE(waitUntil([&] { return backend_->counters().dropped() - before.dropped() >= std::uint64_t(sent + 2 * BATCH); },
-                          5.0))
+    ASSERT_TRUE(waitUntil(
+        [&] { return backend_->counters().dropped() - before.dropped() >= std::uint64_t(sent + 2 * BATCH); }, 5.0))
         << "the backend stopped counting at " << backend_->counters().dropped() - before.dropped() << " foreign "
         << backend_->counters().foreign_sender << " size " << backend_->counters().bad_size << " header "
         << backend_->counters().bad_header << " version " << backend_->counters().bad_version << " mask "

@@ -344,10 +344,11 @@ TEST_F(NodeTest, CancelDeceleratesTheDeviceToRest)
   EXPECT_NE(absolute_->getState().getText().find("cancelled"), std::string::npos) << absolute_->getState().getText();
   ASSERT_TRUE(observer_->waitTicks(1));
   const double stopped = observer_->latest().pan;
-  // It braked past the point of the cancel, within the braking distance at full speed (1.5^2 / (2 x 3) rad plus a
-  // tick of travel), and far from the goal.
+  // It braked past the point of the cancel, within the braking distance at full speed (1.5^2 / (2 x 3) rad) plus
+  // the travel while the state seen here was old (a tick, and a device state period for remote devices), and far
+  // from the goal.
   EXPECT_GT(stopped, at_cancel);
-  EXPECT_LT(stopped - at_cancel, 0.375 + 0.15 + TOLERANCE);
+  EXPECT_LT(stopped - at_cancel, 0.375 + 0.25 + TOLERANCE);
   EXPECT_LT(stopped, 1.0);
   ASSERT_TRUE(observer_->waitTicks(3));
   EXPECT_NEAR(observer_->latest().pan, stopped, 1e-6) << "the device kept moving after the cancel ended";

@@ -93,8 +93,8 @@ const Field TILT_MOTOR_POSITION_FIELD =
     intField("tiltMotorPosition", &PanTiltParams::tiltMotorPosition, &PanTiltParamsMask::tiltMotorPosition);
 const Field PAN_ANGLE_FIELD = floatField("panAngle", &PanTiltParams::panAngle, &PanTiltParamsMask::panAngle);
 const Field TILT_ANGLE_FIELD = floatField("tiltAngle", &PanTiltParams::tiltAngle, &PanTiltParamsMask::tiltAngle);
-const Field PAN_TILT_MOTOR_POSITION_FIELD = intField("panTiltMotorPosition", &PanTiltParams::panTiltMotorPosition,
-                                                     &PanTiltParamsMask::panTiltMotorPosition);
+const Field PAN_TILT_MOTOR_POSITION_FIELD =
+    intField("panTiltMotorPosition", &PanTiltParams::panTiltMotorPosition, &PanTiltParamsMask::panTiltMotorPosition);
 const Field PAN_TILT_ANGLE_FIELD =
     floatField("panTiltAngle", &PanTiltParams::panTiltAngle, &PanTiltParamsMask::panTiltAngle);
 const Field PAN_MOTOR_SPEED_FIELD =
@@ -110,17 +110,22 @@ const Field CUSTOM_2_FIELD = floatField("custom2", &PanTiltParams::custom2, &Pan
 const Field CUSTOM_3_FIELD = floatField("custom3", &PanTiltParams::custom3, &PanTiltParamsMask::custom3);
 
 /// 1.0 frame order: the seed's class declaration.
-const std::array<const Field*, 9> FIELDS_V1_0 = { &PAN_MOTOR_POSITION_FIELD,      &TILT_MOTOR_POSITION_FIELD,
-                                                  &PAN_ANGLE_FIELD,               &TILT_ANGLE_FIELD,
-                                                  &PAN_TILT_MOTOR_POSITION_FIELD, &PAN_TILT_ANGLE_FIELD,
-                                                  &PAN_MOTOR_SPEED_FIELD,         &TILT_MOTOR_SPEED_FIELD,
-                                                  &PAN_TILT_MOTOR_SPEED_FIELD };
+const std::array<const Field*, 9> FIELDS_V1_0 = {
+  &PAN_MOTOR_POSITION_FIELD, &TILT_MOTOR_POSITION_FIELD,     &PAN_ANGLE_FIELD,
+  &TILT_ANGLE_FIELD,         &PAN_TILT_MOTOR_POSITION_FIELD, &PAN_TILT_ANGLE_FIELD,
+  &PAN_MOTOR_SPEED_FIELD,    &TILT_MOTOR_SPEED_FIELD,        &PAN_TILT_MOTOR_SPEED_FIELD
+};
 /// 1.1 frame order: the published library's.
-const std::array<const Field*, 11> FIELDS_V1_1 = { &PAN_MOTOR_POSITION_FIELD, &TILT_MOTOR_POSITION_FIELD,
-                                                   &PAN_ANGLE_FIELD,          &TILT_ANGLE_FIELD,
-                                                   &PAN_MOTOR_SPEED_FIELD,    &TILT_MOTOR_SPEED_FIELD,
-                                                   &IS_CONNECTED_FIELD,       &IS_OPEN_FIELD,
-                                                   &CUSTOM_1_FIELD,           &CUSTOM_2_FIELD,
+const std::array<const Field*, 11> FIELDS_V1_1 = { &PAN_MOTOR_POSITION_FIELD,
+                                                   &TILT_MOTOR_POSITION_FIELD,
+                                                   &PAN_ANGLE_FIELD,
+                                                   &TILT_ANGLE_FIELD,
+                                                   &PAN_MOTOR_SPEED_FIELD,
+                                                   &TILT_MOTOR_SPEED_FIELD,
+                                                   &IS_CONNECTED_FIELD,
+                                                   &IS_OPEN_FIELD,
+                                                   &CUSTOM_1_FIELD,
+                                                   &CUSTOM_2_FIELD,
                                                    &CUSTOM_3_FIELD };
 /// JSON: every field, in declaration order.
 const std::array<const Field*, 14> ALL_FIELDS = { &PAN_MOTOR_POSITION_FIELD,
@@ -276,10 +281,11 @@ bool PanTiltParams::operator==(const PanTiltParams& other) const
 {
   for (const Field* field : ALL_FIELDS)
   {
-    const bool equal = field->type == FieldType::INT32 ? this->*field->int_member == other.*field->int_member :
-                       field->type == FieldType::FLAG  ? this->*field->flag_member == other.*field->flag_member :
-                                                         // Bitwise, so NaN round trips compare equal too.
-                           std::memcmp(&(this->*field->float_member), &(other.*field->float_member), sizeof(float)) == 0;
+    const bool equal =
+        field->type == FieldType::INT32 ? this->*field->int_member == other.*field->int_member :
+        field->type == FieldType::FLAG  ? this->*field->flag_member == other.*field->flag_member :
+                                          // Bitwise, so NaN round trips compare equal too.
+            std::memcmp(&(this->*field->float_member), &(other.*field->float_member), sizeof(float)) == 0;
     if (!equal)
     {
       return false;

@@ -149,8 +149,8 @@ PtzSample PanTiltUdpBackend::sample() const
   const double span = secondsBetween(reference->at, newest.at);
   sample.velocity[PAN] = (newest.pan - reference->pan) / span;
   sample.velocity[TILT] = (newest.tilt - reference->tilt) / span;
-  sample.moving = std::abs(newest.pan - reference->pan) > STILL_EPSILON ||
-                  std::abs(newest.tilt - reference->tilt) > STILL_EPSILON;
+  sample.moving =
+      std::abs(newest.pan - reference->pan) > STILL_EPSILON || std::abs(newest.tilt - reference->tilt) > STILL_EPSILON;
   return sample;
 }
 
@@ -193,7 +193,8 @@ void PanTiltUdpBackend::run()
   while (running_)
   {
     // Wake for the next state request or link deadline; frames wake us anyway.
-    const int timeout_ms = static_cast<int>(std::ceil(std::min(config_.state_request_period, config_.state_timeout) * 1e3));
+    const int timeout_ms =
+        static_cast<int>(std::ceil(std::min(config_.state_request_period, config_.state_timeout) * 1e3));
     std::size_t size = 0;
     bool truncated = false;
     UdpEndpoint from;
@@ -217,8 +218,7 @@ void PanTiltUdpBackend::handleDatagram(const std::uint8_t* data, std::size_t siz
   cr::pantilt::DecodeError error = cr::pantilt::DecodeError::NONE;
   cr::pantilt::PanTiltParams params;
   const bool foreign = from != device_;
-  const bool valid =
-      !foreign && !truncated && params.decode(data, static_cast<int>(size), config_.version, &error);
+  const bool valid = !foreign && !truncated && params.decode(data, static_cast<int>(size), config_.version, &error);
   bool recovered = false;
   {
     std::lock_guard<std::mutex> lock(state_mutex_);

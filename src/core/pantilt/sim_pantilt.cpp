@@ -231,8 +231,7 @@ bool SimPanTilt::executeCommand(PanTiltCommand id, float arg1, float arg2)
       return true;
     case PanTiltCommand::GO_TO_PAN_ANGLE:
     case PanTiltCommand::GO_TO_TILT_ANGLE:
-    case PanTiltCommand::GO_TO_PAN_TILT_ANGLE:
-    {
+    case PanTiltCommand::GO_TO_PAN_TILT_ANGLE: {
       const bool pan = id != PanTiltCommand::GO_TO_TILT_ANGLE;
       const bool tilt = id != PanTiltCommand::GO_TO_PAN_ANGLE;
       if (with_arguments)
@@ -250,8 +249,7 @@ bool SimPanTilt::executeCommand(PanTiltCommand id, float arg1, float arg2)
     }
     case PanTiltCommand::GO_TO_PAN_POSITION:
     case PanTiltCommand::GO_TO_TILT_POSITION:
-    case PanTiltCommand::GO_TO_PAN_TILT_POSITION:
-    {
+    case PanTiltCommand::GO_TO_PAN_TILT_POSITION: {
       const bool pan = id != PanTiltCommand::GO_TO_TILT_POSITION;
       const bool tilt = id != PanTiltCommand::GO_TO_PAN_POSITION;
       if (with_arguments)
@@ -268,8 +266,7 @@ bool SimPanTilt::executeCommand(PanTiltCommand id, float arg1, float arg2)
     }
     case PanTiltCommand::MOVE_PAN:
     case PanTiltCommand::MOVE_TILT:
-    case PanTiltCommand::MOVE_PAN_TILT:
-    {
+    case PanTiltCommand::MOVE_PAN_TILT: {
       if (!with_arguments)
       {
         return false;

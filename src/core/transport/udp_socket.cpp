@@ -101,8 +101,8 @@ UdpEndpoint UdpSocket::localEndpoint() const
 
 bool UdpSocket::sendTo(const UdpEndpoint& to, const std::uint8_t* data, std::size_t size)
 {
-  const ssize_t sent = ::sendto(socket_, data, size, MSG_NOSIGNAL, reinterpret_cast<const sockaddr*>(&to.address),
-                                sizeof(to.address));
+  const ssize_t sent =
+      ::sendto(socket_, data, size, MSG_NOSIGNAL, reinterpret_cast<const sockaddr*>(&to.address), sizeof(to.address));
   return sent == static_cast<ssize_t>(size);
 }
 
@@ -135,8 +135,8 @@ ReceiveStatus UdpSocket::receive(std::uint8_t* buffer, std::size_t capacity, std
       return ReceiveStatus::INTERRUPTED;
     }
     socklen_t length = sizeof(from.address);
-    const ssize_t received = ::recvfrom(socket_, buffer, capacity, MSG_TRUNC,
-                                        reinterpret_cast<sockaddr*>(&from.address), &length);
+    const ssize_t received =
+        ::recvfrom(socket_, buffer, capacity, MSG_TRUNC, reinterpret_cast<sockaddr*>(&from.address), &length);
     if (received < 0)
     {
       if (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR || errno == ECONNREFUSED)

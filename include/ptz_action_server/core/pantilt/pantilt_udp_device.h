@@ -43,9 +43,9 @@ struct PanTiltUdpDeviceConfig
 /// What the device has seen, for diagnostics and tests.
 struct PanTiltUdpDeviceCounters
 {
-  std::uint64_t commands_executed = 0;  ///< SET_PARAM and COMMAND frames decoded and executed
-  std::uint64_t commands_refused = 0;   ///< decoded, but the value or command was refused
-  std::uint64_t state_requests = 0;     ///< params frames received
+  std::uint64_t commands_executed = 0;     ///< SET_PARAM and COMMAND frames decoded and executed
+  std::uint64_t commands_refused = 0;      ///< decoded, but the value or command was refused
+  std::uint64_t state_requests = 0;        ///< params frames received
   std::array<std::uint64_t, 6> invalid{};  ///< indexed by DecodeError
   std::uint64_t replies_sent = 0;
   std::uint64_t dropped_by_fault = 0;  ///< datagrams ignored while silent, replies dropped on purpose
@@ -67,9 +67,9 @@ struct ReceivedDatagram
 class PanTiltUdpDevice
 {
 public:
-  explicit PanTiltUdpDevice(const PanTiltUdpDeviceConfig& config,
-                            std::shared_ptr<const ptz_action_server::Clock> clock =
-                                std::make_shared<ptz_action_server::SystemClock>());
+  explicit PanTiltUdpDevice(
+      const PanTiltUdpDeviceConfig& config,
+      std::shared_ptr<const ptz_action_server::Clock> clock = std::make_shared<ptz_action_server::SystemClock>());
   ~PanTiltUdpDevice();
   PanTiltUdpDevice(const PanTiltUdpDevice&) = delete;
   PanTiltUdpDevice& operator=(const PanTiltUdpDevice&) = delete;

@@ -26,8 +26,8 @@ namespace pantilt
 class SimPanTilt : public PanTilt
 {
 public:
-  SimPanTilt(const ptz_action_server::SimDeviceConfig& config,
-             std::shared_ptr<const ptz_action_server::Clock> clock, WireVersion version = WireVersion::V1_0);
+  SimPanTilt(const ptz_action_server::SimDeviceConfig& config, std::shared_ptr<const ptz_action_server::Clock> clock,
+             WireVersion version = WireVersion::V1_0);
 
   bool setParam(PanTiltParam id, float value) override;
   float getParam(PanTiltParam id) const override;
@@ -56,12 +56,12 @@ private:
 
   const std::shared_ptr<const ptz_action_server::Clock> clock_;
   const WireVersion version_;
-  mutable std::mutex mutex_;                            ///< guards everything below
-  mutable ptz_action_server::SimDeviceModel model_;     ///< mutable: sampling applies lagged commands
-  double target_pan_ = 0.0;                             ///< deg, for the next GO_TO_* command
-  double target_tilt_ = 0.0;                            ///< deg
-  float pan_speed_ = 100.0f;                            ///< %
-  float tilt_speed_ = 100.0f;                           ///< %
+  mutable std::mutex mutex_;                         ///< guards everything below
+  mutable ptz_action_server::SimDeviceModel model_;  ///< mutable: sampling applies lagged commands
+  double target_pan_ = 0.0;                          ///< deg, for the next GO_TO_* command
+  double target_tilt_ = 0.0;                         ///< deg
+  float pan_speed_ = 100.0f;                         ///< %
+  float tilt_speed_ = 100.0f;                        ///< %
   float custom_[3] = { 0.0f, 0.0f, 0.0f };
 };
 
