@@ -15,8 +15,6 @@ using cr::pantilt::PanTiltParam;
 using cr::pantilt::WireVersion;
 
 constexpr std::size_t MAX_DATAGRAM = 512;
-constexpr std::size_t FRAME_HISTORY = 32;
-constexpr double STILL_EPSILON = 1e-6;  ///< rad: positions closer than this are the same
 
 double degrees(double radians)
 {
@@ -30,7 +28,7 @@ double radians(double degrees)
 }  // namespace
 
 PanTiltUdpBackend::PanTiltUdpBackend(const PanTiltUdpConfig& config, std::shared_ptr<const Clock> clock)
-  : config_(config), clock_(std::move(clock))
+  : config_(config), clock_(std::move(clock)), motion_(config.settle_window)
 {
 }
 
@@ -119,38 +117,10 @@ PtzSample PanTiltUdpBackend::sample() const
   std::lock_guard<std::mutex> lock(state_mutex_);
   PtzSample sample;
   const TimePoint now = clock_->now();
+  sample.stamp = now;
   sample.link_up = linkUp(now);
   sample.position[ZOOM] = 1.0;
-  if (frames_.empty())
-  {
-    sample.stamp = now;
-    return sample;
-  }
-  const Frame& newest = frames_.back();
-  sample.stamp = newest.at;
-  sample.position[PAN] = newest.pan;
-  sample.position[TILT] = newest.tilt;
-  // Settled means: the same position as at least settle_window ago. Velocity over the same span.
-  const Frame* reference = nullptr;
-  for (auto frame = frames_.rbegin(); frame != frames_.rend(); ++frame)
-  {
-    if (secondsBetween(frame->at, newest.at) >= config_.settle_window)
-    {
-      reference = &*frame;
-      break;
-    }
-  }
-  if (reference == nullptr)
-  {
-    sample.moving = frames_.size() > 1 && (std::abs(newest.pan - frames_.front().pan) > STILL_EPSILON ||
-                                           std::abs(newest.tilt - frames_.front().tilt) > STILL_EPSILON);
-    return sample;
-  }
-  const double span = secondsBetween(reference->at, newest.at);
-  sample.velocity[PAN] = (newest.pan - reference->pan) / span;
-  sample.velocity[TILT] = (newest.tilt - reference->tilt) / span;
-  sample.moving =
-      std::abs(newest.pan - reference->pan) > STILL_EPSILON || std::abs(newest.tilt - reference->tilt) > STILL_EPSILON;
+  motion_.fill(sample);
   return sample;
 }
 
@@ -248,11 +218,7 @@ void PanTiltUdpBackend::handleDatagram(const std::uint8_t* data, std::size_t siz
     }
     ++counters_.frames_ok;
     recovered = ever_received_ && !linkUp(now);
-    frames_.push_back(Frame{ now, radians(params.panAngle), radians(params.tiltAngle) });
-    if (frames_.size() > FRAME_HISTORY)
-    {
-      frames_.pop_front();
-    }
+    motion_.add(now, AxisValues{ { radians(params.panAngle), radians(params.tiltAngle), 1.0 } });
     last_frame_at_ = now;
     ever_received_ = true;
     link_was_up_ = true;

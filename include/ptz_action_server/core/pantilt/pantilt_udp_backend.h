@@ -7,12 +7,12 @@
 #include <array>
 #include <atomic>
 #include <cmath>
-#include <deque>
 #include <memory>
 #include <mutex>
 #include <thread>
 
 #include "ptz_action_server/core/backend.h"
+#include "ptz_action_server/core/motion_estimator.h"
 #include "ptz_action_server/core/pantilt/pantilt.h"
 #include "ptz_action_server/core/transport/udp_socket.h"
 
@@ -89,13 +89,6 @@ public:
   UdpEndpoint localEndpoint() const;
 
 private:
-  struct Frame
-  {
-    TimePoint at;
-    double pan;   ///< rad
-    double tilt;  ///< rad
-  };
-
   void run();
   void handleDatagram(const std::uint8_t* data, std::size_t size, bool truncated, const UdpEndpoint& from);
   void superviseLink(TimePoint now);
@@ -113,7 +106,7 @@ private:
   std::mutex send_mutex_;  ///< keeps a goal's SET_PARAM + COMMAND sequence together
 
   mutable std::mutex state_mutex_;  ///< guards everything below
-  std::deque<Frame> frames_;        ///< recent frames, newest last, for velocity and settling
+  MotionEstimator motion_;          ///< positions of recent frames: velocity and settling
   TimePoint last_frame_at_{};
   bool ever_received_ = false;
   bool link_was_up_ = false;
