@@ -4,21 +4,16 @@
  *
  * Try the pantilt_udp backend without hardware, or break the link on purpose. SIGUSR1 toggles silence.
  */
-#include <pthread.h>
-
-#include <algorithm>
-#include <cerrno>
-#include <chrono>
-#include <csignal>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <string>
+
+#include "device_main.h"
 
 #include "ptz_action_server/core/pantilt/pantilt_udp_device.h"
 
 namespace
 {
+const char* PROGRAM = "pantilt_udp_device";
 const char* USAGE = R"(usage: pantilt_udp_device [options]
 
 A PanTilt device controller on UDP: executes SET_PARAM / COMMAND frames on a simulated pan-tilt unit and reports
@@ -35,23 +30,6 @@ Options:
   --silent-after S       fall silent S seconds after start
 Signals: SIGUSR1 toggles silence; SIGINT / SIGTERM end the program.
 )";
-
-[[noreturn]] void fail(const std::string& message)
-{
-  std::fprintf(stderr, "pantilt_udp_device: %s\n\n%s", message.c_str(), USAGE);
-  std::exit(2);
-}
-
-double number(const char* text, const char* option)
-{
-  char* end = nullptr;
-  const double value = std::strtod(text, &end);
-  if (end == text || *end != '\0' || !(value >= 0.0))
-  {
-    fail(std::string(option) + " needs a number >= 0");
-  }
-  return value;
-}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -59,33 +37,34 @@ int main(int argc, char** argv)
   cr::pantilt::PanTiltUdpDeviceConfig config;
   config.port = 5000;
   bool silent = false;
-  double silent_after = -1.0;
+  device_main::Schedule schedule;
   double drop = 0.0;
   double delay = 0.0;
   for (int index = 1; index < argc; ++index)
   {
     const std::string arg = argv[index];
-    if (arg.rfind("__", 0) == 0 || arg.find(":=") != std::string::npos)
+    if (device_main::isRosArgument(arg))
     {
-      continue;  // roslaunch's __name:= and remappings
+      continue;
     }
     auto value = [&]() -> const char* {
       if (index + 1 >= argc)
       {
-        fail(arg + " needs a value");
+        device_main::fail(PROGRAM, arg + " needs a value", USAGE);
       }
       return argv[++index];
     };
+    auto number = [&]() { return device_main::number(PROGRAM, value(), arg, USAGE); };
     if (arg == "--host")
     {
       config.host = value();
     }
     else if (arg == "--port")
     {
-      const double port = number(value(), "--port");
+      const double port = number();
       if (port > 65535)
       {
-        fail("--port must be 0..65535");
+        device_main::fail(PROGRAM, "--port must be 0..65535", USAGE);
       }
       config.port = static_cast<std::uint16_t>(port);
     }
@@ -93,20 +72,20 @@ int main(int argc, char** argv)
     {
       if (!cr::pantilt::parseWireVersion(value(), config.version))
       {
-        fail("--version must be 1.0 or 1.1");
+        device_main::fail(PROGRAM, "--version must be 1.0 or 1.1", USAGE);
       }
     }
     else if (arg == "--state-period")
     {
-      config.state_period = number(value(), "--state-period");
+      config.state_period = number();
     }
     else if (arg == "--drop")
     {
-      drop = number(value(), "--drop");
+      drop = number();
     }
     else if (arg == "--delay")
     {
-      delay = number(value(), "--delay");
+      delay = number();
     }
     else if (arg == "--silent")
     {
@@ -114,7 +93,7 @@ int main(int argc, char** argv)
     }
     else if (arg == "--silent-after")
     {
-      silent_after = number(value(), "--silent-after");
+      schedule.silent_after = number();
     }
     else if (arg == "-h" || arg == "--help")
     {
@@ -123,67 +102,27 @@ int main(int argc, char** argv)
     }
     else
     {
-      fail("unknown option " + arg);
+      device_main::fail(PROGRAM, "unknown option " + arg, USAGE);
     }
   }
 
-  // The signals are taken synchronously by the main thread; the device's I/O thread inherits the mask.
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  sigaddset(&signals, SIGUSR1);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  const sigset_t signals = device_main::blockSignals();
   try
   {
     cr::pantilt::PanTiltUdpDevice device(config);
     device.setSilent(silent);
     device.setDropRatio(drop);
     device.setReplyDelay(delay);
-    std::printf("pantilt_udp_device: listening on %s, wire %s, state every %.2f s%s\n",
-                device.endpoint().toString().c_str(), cr::pantilt::toString(config.version), config.state_period,
-                silent ? ", silent" : "");
+    std::printf("%s: listening on %s, wire %s, state every %.2f s%s\n", PROGRAM, device.endpoint().toString().c_str(),
+                cr::pantilt::toString(config.version), config.state_period, silent ? ", silent" : "");
     std::fflush(stdout);
-    const auto silence_at = std::chrono::steady_clock::now() + std::chrono::duration<double>(silent_after);
-    while (true)
-    {
-      int signal = 0;
-      if (silent_after >= 0.0)
-      {
-        const double left =
-            std::max(0.0, std::chrono::duration<double>(silence_at - std::chrono::steady_clock::now()).count());
-        timespec timeout{ static_cast<time_t>(left), static_cast<long>((left - static_cast<time_t>(left)) * 1e9) };
-        signal = sigtimedwait(&signals, nullptr, &timeout);
-        if (signal < 0 && errno == EAGAIN)
-        {
-          silent_after = -1.0;
-          silent = true;
-          device.setSilent(true);
-          std::printf("pantilt_udp_device: silent\n");
-          std::fflush(stdout);
-          continue;
-        }
-      }
-      else
-      {
-        signal = sigwaitinfo(&signals, nullptr);
-      }
-      if (signal == SIGUSR1)
-      {
-        silent = !silent;
-        device.setSilent(silent);
-        std::printf("pantilt_udp_device: %s\n", silent ? "silent" : "answering again");
-        std::fflush(stdout);
-      }
-      else if (signal == SIGINT || signal == SIGTERM)
-      {
-        break;
-      }
-    }
+    device_main::Hooks hooks;
+    hooks.set_silent = [&device](bool value) { device.setSilent(value); };
+    device_main::run(PROGRAM, signals, hooks, schedule, silent);
   }
   catch (const std::exception& error)
   {
-    std::fprintf(stderr, "pantilt_udp_device: %s\n", error.what());
+    std::fprintf(stderr, "%s: %s\n", PROGRAM, error.what());
     return 1;
   }
   return 0;

@@ -1,0 +1,224 @@
+/**
+ * \file
+ * \brief What the device emulator programs share: option parsing helpers and the signal loop that switches faults.
+ */
+#pragma once
+
+#include <pthread.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+
+#include "ptz_action_server/core/transport/pty_device.h"
+
+namespace device_main
+{
+/// Fault switches a program offers; an empty function means "not supported".
+struct Hooks
+{
+  std::function<void(bool)> set_silent;
+  std::function<void()> unplug;
+  std::function<void()> replug;
+};
+
+/// Timed faults, in seconds from the start (< 0: never).
+struct Schedule
+{
+  double silent_after = -1.0;
+  double unplug_after = -1.0;
+  double replug_after = -1.0;
+};
+
+[[noreturn]] inline void fail(const char* program, const std::string& message, const char* usage)
+{
+  std::fprintf(stderr, "%s: %s\n\n%s", program, message.c_str(), usage);
+  std::exit(2);
+}
+
+/// A number >= 0, or fail().
+inline double number(const char* program, const char* text, const std::string& option, const char* usage)
+{
+  char* end = nullptr;
+  const double value = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !(value >= 0.0))
+  {
+    fail(program, option + " needs a number >= 0", usage);
+  }
+  return value;
+}
+
+/// roslaunch adds __name:= and remapping arguments; the programs ignore them.
+inline bool isRosArgument(const std::string& argument)
+{
+  return argument.rfind("__", 0) == 0 || argument.find(":=") != std::string::npos;
+}
+
+/// Options every serial emulator takes.
+struct SerialOptions
+{
+  ptz_action_server::PtyDeviceConfig port;
+  Schedule schedule;
+  bool silent = false;
+  double garble = 0.0;
+};
+
+constexpr const char* SERIAL_OPTIONS_HELP = R"(Serial options:
+  --link PATH            keep this symlink pointing at the pseudo-terminal (default %s)
+  --tty PATH             use this existing tty instead of creating a pseudo-terminal
+  --baud N               pace bytes at this rate, 8N1 (default 9600)
+Faults:
+  --silent               start silent: read and ignore everything, send nothing
+  --silent-after S       fall silent S seconds after start
+  --garble RATIO         replace this share of the sent bytes with random ones (0..1)
+  --unplug-after S       close the port and remove the link S seconds after start
+  --replug-after S       a new pseudo-terminal under the same link S seconds after start
+Signals: SIGUSR1 toggles silence, SIGUSR2 unplugs / replugs; SIGINT / SIGTERM end the program.
+)";
+
+/// Takes \p arg if it is a serial option; \p value fetches its argument.
+inline bool parseSerialOption(const std::string& arg, const std::function<const char*()>& value, const char* program,
+                              const char* usage, SerialOptions& options)
+{
+  auto number = [&]() { return device_main::number(program, value(), arg, usage); };
+  if (arg == "--link")
+  {
+    options.port.link = value();
+  }
+  else if (arg == "--tty")
+  {
+    options.port.tty = value();
+    options.port.link.clear();
+  }
+  else if (arg == "--baud")
+  {
+    options.port.baud = static_cast<unsigned>(number());
+    if (options.port.baud == 0)
+    {
+      fail(program, "--baud must be > 0", usage);
+    }
+  }
+  else if (arg == "--silent")
+  {
+    options.silent = true;
+  }
+  else if (arg == "--silent-after")
+  {
+    options.schedule.silent_after = number();
+  }
+  else if (arg == "--garble")
+  {
+    options.garble = std::min(1.0, number());
+  }
+  else if (arg == "--unplug-after")
+  {
+    options.schedule.unplug_after = number();
+  }
+  else if (arg == "--replug-after")
+  {
+    options.schedule.replug_after = number();
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+
+/// Blocks the signals the loop takes; call before any thread starts, so every thread inherits the mask.
+inline sigset_t blockSignals()
+{
+  sigset_t signals;
+  sigemptyset(&signals);
+  for (int signal : { SIGINT, SIGTERM, SIGUSR1, SIGUSR2 })
+  {
+    sigaddset(&signals, signal);
+  }
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  return signals;
+}
+
+/**
+ * \brief Runs until SIGINT or SIGTERM. SIGUSR1 toggles silence, SIGUSR2 unplugs or replugs; the schedule's faults
+ * happen on time. Messages go to stdout, flushed, so a test can follow them.
+ */
+inline void run(const char* program, const sigset_t& signals, const Hooks& hooks, Schedule schedule, bool silent)
+{
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point started = Clock::now();
+  bool plugged = true;
+  auto say = [program](const char* what) {
+    std::printf("%s: %s\n", program, what);
+    std::fflush(stdout);
+  };
+  auto set_silent = [&](bool value) {
+    if (hooks.set_silent)
+    {
+      silent = value;
+      hooks.set_silent(value);
+      say(value ? "silent" : "answering again");
+    }
+  };
+  auto set_plugged = [&](bool value) {
+    if (hooks.unplug && hooks.replug && plugged != value)
+    {
+      plugged = value;
+      (value ? hooks.replug : hooks.unplug)();
+      say(value ? "replugged" : "unplugged");
+    }
+  };
+  while (true)
+  {
+    double* next = nullptr;
+    for (double* deadline : { &schedule.silent_after, &schedule.unplug_after, &schedule.replug_after })
+    {
+      if (*deadline >= 0.0 && (next == nullptr || *deadline < *next))
+      {
+        next = deadline;
+      }
+    }
+    int signal = 0;
+    if (next != nullptr)
+    {
+      const double left = std::max(0.0, *next - std::chrono::duration<double>(Clock::now() - started).count());
+      timespec timeout{ static_cast<time_t>(left), static_cast<long>((left - static_cast<time_t>(left)) * 1e9) };
+      signal = sigtimedwait(&signals, nullptr, &timeout);
+      if (signal < 0 && errno == EAGAIN)
+      {
+        if (next == &schedule.silent_after)
+        {
+          set_silent(true);
+        }
+        else
+        {
+          set_plugged(next == &schedule.replug_after);
+        }
+        *next = -1.0;
+        continue;
+      }
+    }
+    else
+    {
+      signal = sigwaitinfo(&signals, nullptr);
+    }
+    if (signal == SIGUSR1)
+    {
+      set_silent(!silent);
+    }
+    else if (signal == SIGUSR2)
+    {
+      set_plugged(!plugged);
+    }
+    else if (signal == SIGINT || signal == SIGTERM)
+    {
+      return;
+    }
+  }
+}
+
+}  // namespace device_main

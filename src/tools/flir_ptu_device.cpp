@@ -1,0 +1,90 @@
+/**
+ * \file
+ * \brief flir_ptu_device: a FLIR PTU on a pseudo-terminal, over the simulated motion model.
+ */
+#include <cstdio>
+#include <string>
+
+#include "device_main.h"
+
+#include "ptz_action_server/core/serial/flir_device.h"
+
+namespace
+{
+const char* PROGRAM = "flir_ptu_device";
+const char* DEFAULT_LINK = "/tmp/ptz_flir";
+const char* USAGE = R"(usage: flir_ptu_device [options]
+
+A FLIR (Directed Perception) D46-like pan-tilt unit on a pseudo-terminal: its ASCII protocol (terse/verbose,
+echo, position and velocity modes, resolution 185.1428"/position, pan +-3090 and tilt -907..604 positions),
+paced at the baud rate. Point the node at the link: backend:=serial with port: /tmp/ptz_flir.
+
+Options:
+  --no-banner            start terse, without echo and banner
+)";
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  device_main::SerialOptions options;
+  options.port.link = DEFAULT_LINK;
+  ptz_action_server::FlirPtuDeviceConfig config;
+  char serial_help[2048];
+  std::snprintf(serial_help, sizeof(serial_help), device_main::SERIAL_OPTIONS_HELP, DEFAULT_LINK);
+  const std::string usage = std::string(USAGE) + serial_help;
+  for (int index = 1; index < argc; ++index)
+  {
+    const std::string arg = argv[index];
+    if (device_main::isRosArgument(arg))
+    {
+      continue;
+    }
+    auto value = [&]() -> const char* {
+      if (index + 1 >= argc)
+      {
+        device_main::fail(PROGRAM, arg + " needs a value", usage.c_str());
+      }
+      return argv[++index];
+    };
+    if (device_main::parseSerialOption(arg, value, PROGRAM, usage.c_str(), options))
+    {
+      continue;
+    }
+    if (arg == "--no-banner")
+    {
+      config.banner = false;
+    }
+    else if (arg == "-h" || arg == "--help")
+    {
+      std::printf("%s", usage.c_str());
+      return 0;
+    }
+    else
+    {
+      device_main::fail(PROGRAM, "unknown option " + arg, usage.c_str());
+    }
+  }
+  config.port = options.port;
+
+  const sigset_t signals = device_main::blockSignals();
+  try
+  {
+    ptz_action_server::FlirPtuDevice device(config);
+    device.port().setSilent(options.silent);
+    device.port().setGarbleRatio(options.garble);
+    std::printf("%s: %s at %u baud%s\n", PROGRAM, device.path().c_str(), config.port.baud,
+                options.silent ? ", silent" : "");
+    std::fflush(stdout);
+    device_main::Hooks hooks;
+    hooks.set_silent = [&device](bool silent) { device.port().setSilent(silent); };
+    hooks.unplug = [&device] { device.unplug(); };
+    hooks.replug = [&device] { device.replug(); };
+    device_main::run(PROGRAM, signals, hooks, options.schedule, options.silent);
+  }
+  catch (const std::exception& error)
+  {
+    std::fprintf(stderr, "%s: %s\n", PROGRAM, error.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,111 @@
+/**
+ * \file
+ * \brief pelco_d_device: a Pelco-D PTZ camera on a pseudo-terminal, over the simulated motion model.
+ */
+#include <cstdio>
+#include <string>
+
+#include "device_main.h"
+
+#include "ptz_action_server/core/serial/pelco_device.h"
+
+namespace
+{
+const char* PROGRAM = "pelco_d_device";
+const char* DEFAULT_LINK = "/tmp/ptz_pelco_d";
+const char* USAGE = R"(usage: pelco_d_device [options]
+
+A Pelco-D PTZ camera (pan +-180, tilt +-90 degrees, zoom 1..24x) on a pseudo-terminal: stop, movement with speeds,
+absolute positions (0x4B, 0x4D, 0x4F), position queries (0x51/0x53/0x55 answered with 0x59/0x5B/0x5D) and presets,
+paced at the baud rate. Point the node at the link: backend:=serial with protocol: pelco_d, port: /tmp/ptz_pelco_d.
+
+Options:
+  --address N            the camera's address, 1..255 (default 1)
+  --tilt-encoding E      wrap (up positive, negative as 36000 - x; default) or inverted_wrap (down positive)
+  --general-reply        answer every command with a 4-byte general reply
+)";
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  device_main::SerialOptions options;
+  options.port.link = DEFAULT_LINK;
+  ptz_action_server::PelcoDDeviceConfig config;
+  char serial_help[2048];
+  std::snprintf(serial_help, sizeof(serial_help), device_main::SERIAL_OPTIONS_HELP, DEFAULT_LINK);
+  const std::string usage = std::string(USAGE) + serial_help;
+  for (int index = 1; index < argc; ++index)
+  {
+    const std::string arg = argv[index];
+    if (device_main::isRosArgument(arg))
+    {
+      continue;
+    }
+    auto value = [&]() -> const char* {
+      if (index + 1 >= argc)
+      {
+        device_main::fail(PROGRAM, arg + " needs a value", usage.c_str());
+      }
+      return argv[++index];
+    };
+    if (device_main::parseSerialOption(arg, value, PROGRAM, usage.c_str(), options))
+    {
+      continue;
+    }
+    if (arg == "--address")
+    {
+      const double address = device_main::number(PROGRAM, value(), arg, usage.c_str());
+      if (address < 1 || address > 255)
+      {
+        device_main::fail(PROGRAM, "--address must be 1..255", usage.c_str());
+      }
+      config.address = static_cast<std::uint8_t>(address);
+    }
+    else if (arg == "--tilt-encoding")
+    {
+      const std::string encoding = value();
+      if (encoding != "wrap" && encoding != "inverted_wrap")
+      {
+        device_main::fail(PROGRAM, "--tilt-encoding must be wrap or inverted_wrap", usage.c_str());
+      }
+      config.tilt_encoding = encoding == "wrap" ? ptz_action_server::pelco::TiltEncoding::WRAP :
+                                                  ptz_action_server::pelco::TiltEncoding::INVERTED_WRAP;
+    }
+    else if (arg == "--general-reply")
+    {
+      config.general_reply = true;
+    }
+    else if (arg == "-h" || arg == "--help")
+    {
+      std::printf("%s", usage.c_str());
+      return 0;
+    }
+    else
+    {
+      device_main::fail(PROGRAM, "unknown option " + arg, usage.c_str());
+    }
+  }
+  config.port = options.port;
+
+  const sigset_t signals = device_main::blockSignals();
+  try
+  {
+    ptz_action_server::PelcoDDevice device(config);
+    device.port().setSilent(options.silent);
+    device.port().setGarbleRatio(options.garble);
+    std::printf("%s: %s at %u baud, address %u%s\n", PROGRAM, device.path().c_str(), config.port.baud, config.address,
+                options.silent ? ", silent" : "");
+    std::fflush(stdout);
+    device_main::Hooks hooks;
+    hooks.set_silent = [&device](bool silent) { device.port().setSilent(silent); };
+    hooks.unplug = [&device] { device.unplug(); };
+    hooks.replug = [&device] { device.replug(); };
+    device_main::run(PROGRAM, signals, hooks, options.schedule, options.silent);
+  }
+  catch (const std::exception& error)
+  {
+    std::fprintf(stderr, "%s: %s\n", PROGRAM, error.what());
+    return 1;
+  }
+  return 0;
+}

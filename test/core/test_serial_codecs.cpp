@@ -1,0 +1,246 @@
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "ptz_action_server/core/serial/flir_codec.h"
+#include "ptz_action_server/core/serial/pelco_d.h"
+
+using namespace ptz_action_server;
+using Bytes = std::vector<std::uint8_t>;
+
+namespace
+{
+Bytes bytesOf(const pelco::Frame& frame)
+{
+  const pelco::Bytes encoded = pelco::encode(frame);
+  return Bytes(encoded.begin(), encoded.end());
+}
+
+std::vector<pelco::FrameParser::Event> parseAll(pelco::FrameParser& parser, const Bytes& bytes)
+{
+  std::vector<pelco::FrameParser::Event> events;
+  parser.feed(bytes.data(), bytes.size(), events);
+  return events;
+}
+
+std::vector<flir::Reply> parseText(flir::ReplyParser& parser, const std::string& text)
+{
+  std::vector<flir::Reply> replies;
+  parser.feed(reinterpret_cast<const std::uint8_t*>(text.data()), text.size(), replies);
+  return replies;
+}
+}  // namespace
+
+// --- Pelco-D golden frames from protocols.md (address 1)
+
+TEST(PelcoGolden, Frames)
+{
+  EXPECT_EQ(bytesOf(pelco::stop(1)), (Bytes{ 0xFF, 0x01, 0x00, 0x00, 0x00, 0x00, 0x01 }));
+  EXPECT_EQ(bytesOf(pelco::move(1, 0x20, 0, 0)), (Bytes{ 0xFF, 0x01, 0x00, 0x02, 0x20, 0x00, 0x23 }));
+  EXPECT_EQ(bytesOf(pelco::move(1, -0x3F, 0, 0)), (Bytes{ 0xFF, 0x01, 0x00, 0x04, 0x3F, 0x00, 0x44 }));
+  EXPECT_EQ(bytesOf(pelco::withValue(1, pelco::SET_PAN, pelco::encodePan(90.0))),
+            (Bytes{ 0xFF, 0x01, 0x00, 0x4B, 0x23, 0x28, 0x97 }));
+  EXPECT_EQ(bytesOf(pelco::withValue(1, pelco::SET_TILT, 35000)), (Bytes{ 0xFF, 0x01, 0x00, 0x4D, 0x88, 0xB8, 0x8E }));
+  EXPECT_EQ(bytesOf(pelco::withValue(1, pelco::QUERY_PAN, 0)), (Bytes{ 0xFF, 0x01, 0x00, 0x51, 0x00, 0x00, 0x52 }));
+  EXPECT_EQ(bytesOf(pelco::withValue(1, pelco::PAN_REPLY, pelco::encodePan(180.0))),
+            (Bytes{ 0xFF, 0x01, 0x00, 0x59, 0x46, 0x50, 0xF0 }));
+}
+
+TEST(PelcoGolden, MovementBitsAndSpeeds)
+{
+  const pelco::Frame up_left_tele = pelco::move(3, -0x10, 0x3F, 1);
+  EXPECT_EQ(up_left_tele.command2, pelco::LEFT | pelco::UP | pelco::ZOOM_TELE);
+  EXPECT_EQ(up_left_tele.data1, 0x10);
+  EXPECT_EQ(up_left_tele.data2, 0x3F);
+  const pelco::Frame down_right_wide = pelco::move(3, 0x40, -0x50, -1);
+  EXPECT_EQ(down_right_wide.command2, pelco::RIGHT | pelco::DOWN | pelco::ZOOM_WIDE);
+  EXPECT_EQ(down_right_wide.data1, 0x40);  // turbo
+  EXPECT_EQ(down_right_wide.data2, 0x3F);  // tilt has no turbo
+}
+
+TEST(PelcoAngles, PanWrapsClockwiseAndTiltEncodingIsASetting)
+{
+  EXPECT_EQ(pelco::encodePan(-10.0), 35000);
+  EXPECT_EQ(pelco::encodePan(370.0), 1000);
+  EXPECT_DOUBLE_EQ(pelco::decodePan(35000), -10.0);
+  EXPECT_DOUBLE_EQ(pelco::decodePan(18000), 180.0);
+  EXPECT_DOUBLE_EQ(pelco::decodePan(18001), -179.99);
+  // WRAP: up positive, negative as 36000 - x (the golden "set tilt 35000" is 10 degrees down).
+  EXPECT_EQ(pelco::encodeTilt(-10.0, pelco::TiltEncoding::WRAP), 35000);
+  EXPECT_EQ(pelco::encodeTilt(25.5, pelco::TiltEncoding::WRAP), 2550);
+  EXPECT_DOUBLE_EQ(pelco::decodeTilt(35000, pelco::TiltEncoding::WRAP), -10.0);
+  // INVERTED_WRAP: down positive.
+  EXPECT_EQ(pelco::encodeTilt(-10.0, pelco::TiltEncoding::INVERTED_WRAP), 1000);
+  EXPECT_EQ(pelco::encodeTilt(10.0, pelco::TiltEncoding::INVERTED_WRAP), 35000);
+  EXPECT_DOUBLE_EQ(pelco::decodeTilt(1000, pelco::TiltEncoding::INVERTED_WRAP), -10.0);
+}
+
+// --- Pelco-D parser
+
+TEST(PelcoParser, SplitAtEveryOffsetGivesTheSameFrames)
+{
+  Bytes stream;
+  const std::vector<pelco::Frame> frames = { pelco::withValue(1, pelco::PAN_REPLY, 18000),
+                                             pelco::withValue(1, pelco::TILT_REPLY, 35000),
+                                             pelco::withValue(1, pelco::ZOOM_REPLY, 0xFFFF) };
+  for (const pelco::Frame& frame : frames)
+  {
+    const Bytes bytes = bytesOf(frame);
+    stream.insert(stream.end(), bytes.begin(), bytes.end());
+  }
+  for (std::size_t split = 0; split <= stream.size(); ++split)
+  {
+    pelco::FrameParser parser(1);
+    std::vector<pelco::FrameParser::Event> events = parseAll(parser, Bytes(stream.begin(), stream.begin() + split));
+    const std::vector<pelco::FrameParser::Event> rest = parseAll(parser, Bytes(stream.begin() + split, stream.end()));
+    events.insert(events.end(), rest.begin(), rest.end());
+    ASSERT_EQ(events.size(), frames.size()) << "split at " << split;
+    for (std::size_t index = 0; index < frames.size(); ++index)
+    {
+      EXPECT_EQ(events[index].frame, frames[index]) << "split at " << split;
+    }
+    EXPECT_EQ(parser.counters().bad_checksum, 0u);
+  }
+}
+
+TEST(PelcoParser, DropsGarbageBadChecksumsAndPartialFramesThenResynchronises)
+{
+  const Bytes good = bytesOf(pelco::withValue(1, pelco::PAN_REPLY, 12345));
+  Bytes bad_checksum = good;
+  bad_checksum[6] ^= 0x01;
+  const Bytes partial(good.begin(), good.begin() + 4);
+  const Bytes other_address = bytesOf(pelco::withValue(2, pelco::PAN_REPLY, 1));
+  Bytes stream = { 0x00, 0x12, 0x34 };  // noise before any frame
+  for (const Bytes* piece : std::vector<const Bytes*>{ &bad_checksum, &good, &partial, &good, &other_address, &good })
+  {
+    stream.insert(stream.end(), piece->begin(), piece->end());
+  }
+  pelco::FrameParser parser(1);
+  const std::vector<pelco::FrameParser::Event> events = parseAll(parser, stream);
+  ASSERT_EQ(events.size(), 3u);
+  for (const pelco::FrameParser::Event& event : events)
+  {
+    EXPECT_EQ(event.frame.value(), 12345);
+  }
+  EXPECT_EQ(parser.counters().frames, 3u);
+  EXPECT_EQ(parser.counters().wrong_address, 1u);
+  EXPECT_GE(parser.counters().bad_checksum, 2u);  // the broken frame's 0xFF and the partial frame's
+  EXPECT_GE(parser.counters().skipped_bytes, 3u);
+}
+
+TEST(PelcoParser, GeneralRepliesWhenTheDeviceSendsThem)
+{
+  pelco::FrameParser parser(1, true);
+  Bytes stream = { 0xFF, 0x01, 0x00, 0x01 };  // a general reply: FF addr alarm sum
+  const Bytes reply = bytesOf(pelco::withValue(1, pelco::TILT_REPLY, 500));
+  stream.insert(stream.end(), reply.begin(), reply.end());
+  const std::vector<pelco::FrameParser::Event> events = parseAll(parser, stream);
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_TRUE(events[0].general_reply);
+  EXPECT_FALSE(events[1].general_reply);
+  EXPECT_EQ(events[1].frame.value(), 500);
+}
+
+TEST(PelcoParser, RandomBytesNeverProduceAnInvalidFrame)
+{
+  pelco::FrameParser parser(0);
+  std::uint32_t state = 12345;
+  Bytes noise(20000);
+  for (std::uint8_t& byte : noise)
+  {
+    state = state * 1664525u + 1013904223u;
+    byte = static_cast<std::uint8_t>(state >> 24);
+  }
+  for (const pelco::FrameParser::Event& event : parseAll(parser, noise))
+  {
+    if (!event.general_reply)
+    {
+      EXPECT_EQ(pelco::checksum(event.frame), bytesOf(event.frame)[6]);
+    }
+  }
+}
+
+// --- FLIR replies
+
+TEST(FlirReplies, ClassifiesTerseVerboseEchoedAndUnexpectedLines)
+{
+  struct Case
+  {
+    std::string line;
+    flir::Reply::Kind kind;
+    double value;
+    std::string text;
+  };
+  using Kind = flir::Reply::Kind;
+  const std::vector<Case> cases = {
+    { "*", Kind::ACK, 0.0, "" },
+    { "* 1234", Kind::VALUE, 1234.0, "" },
+    { "*  -907", Kind::VALUE, -907.0, "" },
+    { "* 185.1428", Kind::VALUE, 185.1428, "" },
+    { "* Current Pan position is -1234", Kind::VALUE, -1234.0, "" },
+    { "* 185.1428 seconds arc per position", Kind::VALUE, 185.1428, "" },
+    { "pp * 12", Kind::VALUE, 12.0, "" },  // echoed command, then the reply
+    { "PP-557 *", Kind::ACK, 0.0, "" },
+    { "* Terse feedback mode", Kind::ACK, 0.0, "" },
+    { "! Illegal Command", Kind::ERROR, 0.0, "Illegal Command" },
+    { "! Maximum allowable Pan position exceeded", Kind::ERROR, 0.0, "Maximum allowable Pan position exceeded" },
+    { "!", Kind::ERROR, 0.0, "error" },
+    { "!P", Kind::LIMIT, 0.0, "" },
+    { "!T", Kind::LIMIT, 0.0, "" },
+    { "Pan-Tilt Controller v3.4.3 (C)2010", Kind::TEXT, 0.0, "Pan-Tilt Controller v3.4.3 (C)2010" },
+    { "Initializing...", Kind::TEXT, 0.0, "Initializing..." },
+  };
+  for (const Case& item : cases)
+  {
+    const flir::Reply reply = flir::classifyLine(item.line);
+    EXPECT_EQ(reply.kind, item.kind) << item.line;
+    EXPECT_DOUBLE_EQ(reply.value, item.value) << item.line;
+    if (item.kind == Kind::ERROR || item.kind == Kind::TEXT)
+    {
+      EXPECT_EQ(reply.text, item.text) << item.line;
+    }
+  }
+  EXPECT_EQ(flir::classifyLine("!P").axis, 'P');
+  EXPECT_EQ(flir::classifyLine("!T").axis, 'T');
+}
+
+TEST(FlirReplies, LinesSplitAtEveryOffsetAndAnyLineEnd)
+{
+  const std::string stream = "\r\nPan-Tilt Controller\r\n* 12\r\n*\n! Illegal Command\r* -3\r\n";
+  for (std::size_t split = 0; split <= stream.size(); ++split)
+  {
+    flir::ReplyParser parser;
+    std::vector<flir::Reply> replies = parseText(parser, stream.substr(0, split));
+    const std::vector<flir::Reply> rest = parseText(parser, stream.substr(split));
+    replies.insert(replies.end(), rest.begin(), rest.end());
+    ASSERT_EQ(replies.size(), 5u) << "split at " << split;
+    EXPECT_EQ(replies[0].kind, flir::Reply::Kind::TEXT);
+    EXPECT_DOUBLE_EQ(replies[1].value, 12.0);
+    EXPECT_EQ(replies[2].kind, flir::Reply::Kind::ACK);
+    EXPECT_EQ(replies[3].kind, flir::Reply::Kind::ERROR);
+    EXPECT_DOUBLE_EQ(replies[4].value, -3.0);
+  }
+}
+
+TEST(FlirReplies, BinaryJunkAndOverlongLinesNeverBreakTheParser)
+{
+  flir::ReplyParser parser;
+  std::string junk(1000, 'x');
+  junk[10] = '\0';
+  junk[20] = '\x7F';
+  junk[30] = '\x01';
+  const std::vector<flir::Reply> replies = parseText(parser, junk + "\r\n* 5\r\n");
+  ASSERT_GE(replies.size(), 2u);
+  EXPECT_EQ(replies.front().kind, flir::Reply::Kind::TEXT);
+  EXPECT_LE(replies.front().text.size(), flir::ReplyParser::MAX_LINE);
+  EXPECT_EQ(replies.back().kind, flir::Reply::Kind::VALUE);
+  EXPECT_DOUBLE_EQ(replies.back().value, 5.0);
+}
+
+TEST(FlirCommands, Text)
+{
+  EXPECT_EQ(flir::command("PP", -557), "PP-557 ");
+  EXPECT_EQ(flir::command("TS", 1114), "TS1114 ");
+  EXPECT_EQ(flir::command("H"), "H ");
+}
