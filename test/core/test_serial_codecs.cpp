@@ -142,6 +142,21 @@ TEST(PelcoParser, GeneralRepliesWhenTheDeviceSendsThem)
   EXPECT_EQ(events[1].frame.value(), 500);
 }
 
+TEST(PelcoParser, AGeneralReplyIsToldFromAFrameByItsOwnFourBytes)
+{
+  // Found by fuzz_pelco_d: FF 01 00 01 both checks as a general reply and starts a frame that checks.
+  const Bytes stream = { 0xFF, 0x01, 0x00, 0x01, 0xFF, 0x00, 0x01, 0x5B, 0x88, 0xB8, 0x9C };
+  for (std::size_t split = 0; split <= stream.size(); ++split)
+  {
+    pelco::FrameParser parser(1, true);
+    std::vector<pelco::FrameParser::Event> events = parseAll(parser, Bytes(stream.begin(), stream.begin() + split));
+    const std::vector<pelco::FrameParser::Event> rest = parseAll(parser, Bytes(stream.begin() + split, stream.end()));
+    events.insert(events.end(), rest.begin(), rest.end());
+    ASSERT_FALSE(events.empty()) << "split at " << split;
+    EXPECT_TRUE(events.front().general_reply) << "split at " << split;
+  }
+}
+
 TEST(PelcoParser, RandomBytesNeverProduceAnInvalidFrame)
 {
   pelco::FrameParser parser(0);

@@ -112,49 +112,61 @@ void FrameParser::feed(const std::uint8_t* data, std::size_t size, std::vector<E
       ++counters_.skipped_bytes;
       continue;
     }
-    if (buffer_.size() >= FRAME_SIZE)
+    // A 4-byte general reply is told from a frame by its own 4 bytes, so that how the stream was split never
+    // changes what is read: a reply checks (sum = addr + alarm), and its last byte is no query reply code.
+    const bool reply_checks = general_replies_ && buffer_.size() >= GENERAL_REPLY_SIZE &&
+                              static_cast<std::uint8_t>(buffer_[1] + buffer_[2]) == buffer_[3];
+    const bool reply_code = reply_checks && (buffer_[3] == PAN_REPLY || buffer_[3] == TILT_REPLY ||
+                                             buffer_[3] == ZOOM_REPLY);
+    if (reply_checks && !reply_code)
     {
-      Frame frame;
-      frame.address = buffer_[1];
-      frame.command1 = buffer_[2];
-      frame.command2 = buffer_[3];
-      frame.data1 = buffer_[4];
-      frame.data2 = buffer_[5];
-      if (checksum(frame) == buffer_[6])
-      {
-        buffer_.erase(buffer_.begin(), buffer_.begin() + FRAME_SIZE);
-        if (address_ != 0 && frame.address != address_)
-        {
-          ++counters_.wrong_address;
-          continue;
-        }
-        ++counters_.frames;
-        Event event;
-        event.frame = frame;
-        events.push_back(event);
-        continue;
-      }
-    }
-    if (general_replies_ && buffer_.size() >= GENERAL_REPLY_SIZE &&
-        static_cast<std::uint8_t>(buffer_[1] + buffer_[2]) == buffer_[3])
-    {
-      Event event;
-      event.general_reply = true;
-      event.frame.address = buffer_[1];
-      event.alarm = buffer_[2];
-      buffer_.erase(buffer_.begin(), buffer_.begin() + GENERAL_REPLY_SIZE);
-      ++counters_.general_replies;
-      events.push_back(event);
+      takeGeneralReply(events);
       continue;
     }
     if (buffer_.size() < FRAME_SIZE)
     {
       return;  // wait for the rest of the frame
     }
+    Frame frame;
+    frame.address = buffer_[1];
+    frame.command1 = buffer_[2];
+    frame.command2 = buffer_[3];
+    frame.data1 = buffer_[4];
+    frame.data2 = buffer_[5];
+    if (checksum(frame) == buffer_[6])
+    {
+      buffer_.erase(buffer_.begin(), buffer_.begin() + FRAME_SIZE);
+      if (address_ != 0 && frame.address != address_)
+      {
+        ++counters_.wrong_address;
+        continue;
+      }
+      ++counters_.frames;
+      Event event;
+      event.frame = frame;
+      events.push_back(event);
+      continue;
+    }
+    if (reply_checks)
+    {
+      takeGeneralReply(events);
+      continue;
+    }
     // A 0xFF that starts nothing valid: drop it and look for the next one.
     buffer_.pop_front();
     ++counters_.bad_checksum;
   }
+}
+
+void FrameParser::takeGeneralReply(std::vector<Event>& events)
+{
+  Event event;
+  event.general_reply = true;
+  event.frame.address = buffer_[1];
+  event.alarm = buffer_[2];
+  buffer_.erase(buffer_.begin(), buffer_.begin() + GENERAL_REPLY_SIZE);
+  ++counters_.general_replies;
+  events.push_back(event);
 }
 
 }  // namespace pelco

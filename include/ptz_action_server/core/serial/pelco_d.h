@@ -126,6 +126,8 @@ public:
   }
 
 private:
+  void takeGeneralReply(std::vector<Event>& events);
+
   std::uint8_t address_;
   bool general_replies_;
   std::deque<std::uint8_t> buffer_;
