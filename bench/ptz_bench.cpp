@@ -7,10 +7,10 @@
  * (CLOCK_MONOTONIC is one clock for all processes). The other child only subscribes to ptz_state and stamps each
  * arrival, as a user's node would see it. The parent is the clients, talking to the node over real ROS connections.
  *
- * Usage: ptz_bench URDF_FILE [--backend sim|pantilt_udp] [--storm-seconds 30] [--zero-goals 1000]
- *                  [--idle-seconds 10] [--goals 1000]
- * With --backend pantilt_udp the node runs the UDP backend against an emulator in the parent process, and the
- * figure is goal -> first datagram at the emulator.
+ * Usage: ptz_bench URDF_FILE [--backend sim|pantilt_udp|flir|pelco_d] [--storm-seconds 30] [--zero-goals 1000]
+ *                  [--idle-seconds 10] [--goals 1000] [--baud 9600]
+ * With a device backend the node talks to an emulator in the parent process, and the figures are goal -> first
+ * command at the emulator (the command's own wire time subtracted) and the PtzState rate while a goal runs.
  * A rosmaster must be running (bench/run starts one).
  */
 #include <sys/mman.h>
@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <mutex>
 #include <numeric>
 #include <sstream>
@@ -40,6 +41,10 @@
 #include "ptz_action_server/core/motion_profile.h"
 #include "ptz_action_server/core/pantilt/pantilt_udp_backend.h"
 #include "ptz_action_server/core/pantilt/pantilt_udp_device.h"
+#include "ptz_action_server/core/serial/flir_backend.h"
+#include "ptz_action_server/core/serial/flir_device.h"
+#include "ptz_action_server/core/serial/pelco_backend.h"
+#include "ptz_action_server/core/serial/pelco_device.h"
 #include "ptz_action_server/core/sim_backend.h"
 #include "ptz_action_server/ros/ptz_action_server.h"
 
@@ -127,33 +132,57 @@ std::string readFile(const std::string& path)
   return text.str();
 }
 
-/// The node process: runs until SIGINT. \p device_port > 0 selects the pantilt_udp backend, else sim.
-int runNode(int argc, char** argv, const std::string& urdf, SharedCounters* counters, std::uint16_t device_port)
+/// Which backend the node runs, and where its device is.
+struct DeviceTarget
+{
+  std::string backend = "sim";  ///< sim, pantilt_udp, flir or pelco_d
+  std::uint16_t udp_port = 0;   ///< pantilt_udp: the emulator's port
+  std::string link;             ///< flir, pelco_d: the emulator's pseudo-terminal link
+  unsigned baud = 9600;
+};
+
+std::shared_ptr<PtzBackend> makeBackend(const DeviceTarget& target, const Capabilities& urdf_limits)
+{
+  if (target.backend == "pantilt_udp")
+  {
+    PanTiltUdpConfig config;
+    config.device_port = target.udp_port;
+    config.local_host = "127.0.0.1";
+    return std::make_shared<PanTiltUdpBackend>(config);
+  }
+  SerialBackendConfig serial;
+  serial.link.path = target.link;
+  serial.link.baud = target.baud;
+  if (target.backend == "flir")
+  {
+    FlirConfig config;
+    config.serial = serial;
+    return std::make_shared<FlirBackend>(config);
+  }
+  if (target.backend == "pelco_d")
+  {
+    PelcoConfig config;
+    config.serial = serial;
+    return std::make_shared<PelcoBackend>(config);
+  }
+  SimDeviceConfig device = SimDeviceConfig::defaults();
+  for (Axis axis : { PAN, TILT })
+  {
+    device.axes[axis].range = urdf_limits.axes[axis].range;
+    device.axes[axis].motion.max_speed = urdf_limits.axes[axis].max_speed;
+  }
+  return std::make_shared<SimBackend>(device);
+}
+
+/// The node process: runs until SIGINT.
+int runNode(int argc, char** argv, const std::string& urdf, SharedCounters* counters, const DeviceTarget& target)
 {
   ros::init(argc, argv, "ptz_action_server");
   ros::NodeHandle node_handle("/ptz");
   node_handle.setParam("robot_description", urdf);
   const PtzKinematics kinematics = PtzKinematics::fromUrdf(urdf);
-  const Capabilities urdf_limits = PtzActionServer::urdfLimits(kinematics);
-  std::shared_ptr<PtzBackend> device_backend;
-  if (device_port > 0)
-  {
-    PanTiltUdpConfig config;
-    config.device_port = device_port;
-    config.local_host = "127.0.0.1";
-    device_backend = std::make_shared<PanTiltUdpBackend>(config);
-  }
-  else
-  {
-    SimDeviceConfig device = SimDeviceConfig::defaults();
-    for (Axis axis : { PAN, TILT })
-    {
-      device.axes[axis].range = urdf_limits.axes[axis].range;
-      device.axes[axis].motion.max_speed = urdf_limits.axes[axis].max_speed;
-    }
-    device_backend = std::make_shared<SimBackend>(device);
-  }
-  auto backend = std::make_shared<RecordingBackend>(device_backend, counters);
+  auto backend =
+      std::make_shared<RecordingBackend>(makeBackend(target, PtzActionServer::urdfLimits(kinematics)), counters);
   PtzActionServer server(node_handle, NodeConfig(), kinematics, backend);
   server.start();
   ros::spin();
@@ -392,8 +421,20 @@ int runClients(pid_t node, SharedCounters* counters, double storm_seconds, int z
   return 0;
 }
 
-/// pantilt_udp: goal -> first datagram at the emulator, over \p goals goals.
-int runUdpClients(cr::pantilt::PanTiltUdpDevice& device, int goals)
+/// A goal command as it reached an emulator: when its last byte arrived, and its own time on the wire.
+struct Arrival
+{
+  TimePoint at;
+  double wire = 0.0;
+};
+/// The goal commands an emulator has received so far (polls and state requests left out).
+using ArrivalsProbe = std::function<std::vector<Arrival>()>;
+
+/**
+ * \brief Goal -> first command at the emulator over \p goals goals (the command's own wire time subtracted), and
+ * the PtzState rate while a long goal runs.
+ */
+int runDeviceClients(const std::string& title, const ArrivalsProbe& arrivals, int goals, double pause)
 {
   ros::NodeHandle node_handle("/ptz");
   ros::AsyncSpinner spinner(2);
@@ -404,51 +445,77 @@ int runUdpClients(cr::pantilt::PanTiltUdpDevice& device, int goals)
     std::fprintf(stderr, "ptz_bench: the node did not come up\n");
     return 1;
   }
-  auto commands = [&device]() {
-    std::size_t count = 0;
-    for (const cr::pantilt::ReceivedDatagram& datagram : device.received())
-    {
-      count += !datagram.bytes.empty() && datagram.bytes[0] != cr::pantilt::PARAMS_HEADER;
-    }
-    return count;
-  };
-  ros::WallDuration(1.0).sleep();  // the link is up and the first speeds are sent
+  ros::WallDuration(1.0).sleep();  // the link is up and the setup is done
   std::vector<double> latency_ms;
+  std::vector<double> wire_ms;
   std::vector<actionlib::ClientGoalHandle<PtzAction>> handles;
   for (int index = 0; index < goals; ++index)
   {
-    const std::size_t before = commands();
+    const std::size_t before = arrivals().size();
     const TimePoint sent = SteadyClock::now();
     handles.push_back(client.sendGoal(makePtzGoal(index % 2 == 0 ? 0.10 : 0.12, 0.0, 1.0)));
     const TimePoint deadline = addSeconds(sent, 1.0);
-    while (commands() == before && SteadyClock::now() < deadline)
+    std::vector<Arrival> now = arrivals();
+    while (now.size() == before && SteadyClock::now() < deadline)
     {
-      std::this_thread::yield();
+      std::this_thread::sleep_for(std::chrono::microseconds(100));
+      now = arrivals();
     }
-    // The first datagram of this goal: the earliest one after the count we saw before sending.
-    const std::vector<cr::pantilt::ReceivedDatagram> received = device.received();
-    std::size_t seen = 0;
-    for (const cr::pantilt::ReceivedDatagram& datagram : received)
+    if (now.size() > before)
     {
-      if (!datagram.bytes.empty() && datagram.bytes[0] != cr::pantilt::PARAMS_HEADER && ++seen == before + 1)
-      {
-        latency_ms.push_back(secondsBetween(sent, datagram.at) * 1e3);
-        break;
-      }
+      const Arrival& first = now[before];
+      latency_ms.push_back((secondsBetween(sent, first.at) - first.wire) * 1e3);
+      wire_ms.push_back(first.wire * 1e3);
     }
-    ros::WallDuration(0.002).sleep();  // let the goal's remaining frames go out before the next goal
+    ros::WallDuration(pause).sleep();  // let the goal's remaining commands go out before the next goal
     if (handles.size() > 100)
     {
       handles.erase(handles.begin(), handles.begin() + 50);
     }
   }
+
+  // PtzState while a goal runs: from one pan limit side to the other (about 2 s).
+  std::mutex arrivals_mutex;
+  std::vector<double> state_times;
+  bool recording = false;
+  const ros::Subscriber state_subscriber =
+      node_handle.subscribe<PtzState>("ptz_state", 100, [&](const PtzState::ConstPtr&) {
+        std::lock_guard<std::mutex> lock(arrivals_mutex);
+        if (recording)
+        {
+          state_times.push_back(secondsBetween(TimePoint(), SteadyClock::now()));
+        }
+      });
+  actionlib::SimpleActionClient<PtzAction> mover(node_handle, "move_ptz/position_abs", true);
+  mover.waitForServer(ros::Duration(5.0));
+  mover.sendGoal(makePtzGoal(-1.2, 0.0, 1.0));
+  mover.waitForResult(ros::Duration(10.0));
+  {
+    std::lock_guard<std::mutex> lock(arrivals_mutex);
+    recording = true;
+  }
+  mover.sendGoal(makePtzGoal(1.2, 0.0, 1.0));
+  mover.waitForResult(ros::Duration(10.0));
+  double rate = 0.0;
+  {
+    std::lock_guard<std::mutex> lock(arrivals_mutex);
+    recording = false;
+    if (state_times.size() > 1)
+    {
+      rate = (state_times.size() - 1) / (state_times.back() - state_times.front());
+    }
+  }
+
   std::vector<Row> rows;
-  char text[128];
-  std::snprintf(text, sizeof(text), "p50 %.2f ms, p99 %.2f ms, max %.2f ms (%zu of %d goals)",
+  char text[160];
+  std::snprintf(text, sizeof(text),
+                "p50 %.2f ms, p99 %.2f ms, max %.2f ms (%zu of %d goals; wire time %.2f ms subtracted)",
                 percentile(latency_ms, 0.5), percentile(latency_ms, 0.99), percentile(latency_ms, 1.0),
-                latency_ms.size(), goals);
-  rows.push_back({ "pantilt_udp: goal -> first datagram at the emulator", text, "p99 <= 5 ms" });
-  printTable("pantilt_udp backend", rows);
+                latency_ms.size(), goals, percentile(wire_ms, 0.5));
+  rows.push_back({ "goal -> first command at the emulator", text, title == "pantilt_udp" ? "p99 <= 5 ms" : "" });
+  std::snprintf(text, sizeof(text), "%.2f Hz (%zu messages)", rate, state_times.size());
+  rows.push_back({ "ptz_state rate while a goal runs", text, "10 Hz" });
+  printTable((title + " backend").c_str(), rows);
   return 0;
 }
 }  // namespace
@@ -457,8 +524,8 @@ int main(int argc, char** argv)
 {
   if (argc < 2)
   {
-    std::fprintf(stderr, "usage: ptz_bench URDF_FILE [--backend sim|pantilt_udp] [--storm-seconds S] "
-                         "[--zero-goals N] [--idle-seconds S] [--goals N]\n");
+    std::fprintf(stderr, "usage: ptz_bench URDF_FILE [--backend sim|pantilt_udp|flir|pelco_d] [--storm-seconds S] "
+                         "[--zero-goals N] [--idle-seconds S] [--goals N] [--baud N]\n");
     return 2;
   }
   const std::string urdf = readFile(argv[1]);
@@ -467,6 +534,7 @@ int main(int argc, char** argv)
   int zero_goals = 1000;
   double idle_seconds = 10.0;
   int goals = 1000;
+  unsigned baud = 9600;
   for (int index = 2; index + 1 < argc; index += 2)
   {
     const std::string option = argv[index];
@@ -491,32 +559,101 @@ int main(int argc, char** argv)
     {
       goals = std::stoi(value);
     }
+    else if (option == "--baud")
+    {
+      baud = static_cast<unsigned>(std::stoul(value));
+    }
   }
   auto* counters = static_cast<SharedCounters*>(
       mmap(nullptr, sizeof(SharedCounters), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0));
   new (counters) SharedCounters();
 
-  std::uint16_t device_port = 0;
+  DeviceTarget target;
+  target.backend = backend;
+  target.baud = baud;
   if (backend == "pantilt_udp")
   {
     UdpSocket probe;  // an ephemeral port for the emulator, found before the fork
     probe.bind("127.0.0.1", 0);
-    device_port = probe.localEndpoint().port();
+    target.udp_port = probe.localEndpoint().port();
+  }
+  else if (backend == "flir" || backend == "pelco_d")
+  {
+    target.link = "/tmp/ptz_bench_" + backend + "_" + std::to_string(getpid());
   }
   const pid_t node = fork();
   if (node == 0)
   {
-    return runNode(argc, argv, urdf, counters, device_port);
+    return runNode(argc, argv, urdf, counters, target);
   }
   std::vector<pid_t> children = { node };
   int status = 0;
+  const double byte_time = 10.0 / baud;
   if (backend == "pantilt_udp")
   {
     cr::pantilt::PanTiltUdpDeviceConfig config;
-    config.port = device_port;
+    config.port = target.udp_port;
     cr::pantilt::PanTiltUdpDevice device(config);
     ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
-    status = runUdpClients(device, goals);
+    status = runDeviceClients(
+        "pantilt_udp",
+        [&device] {
+          std::vector<Arrival> arrivals;
+          for (const cr::pantilt::ReceivedDatagram& datagram : device.received())
+          {
+            if (!datagram.bytes.empty() && datagram.bytes[0] != cr::pantilt::PARAMS_HEADER)
+            {
+              arrivals.push_back(Arrival{ datagram.at, 0.0 });
+            }
+          }
+          return arrivals;
+        },
+        goals, 0.002);
+  }
+  else if (backend == "flir")
+  {
+    FlirPtuDeviceConfig config;
+    config.port.link = target.link;
+    config.port.baud = baud;
+    FlirPtuDevice device(config);
+    ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
+    status = runDeviceClients(
+        "serial flir at " + std::to_string(baud) + " baud",
+        [&device, byte_time] {
+          std::vector<Arrival> arrivals;
+          for (const ReceivedCommand& command : device.received())
+          {
+            if (command.text != "PP" && command.text != "TP")  // polls
+            {
+              arrivals.push_back(Arrival{ command.at, (command.text.size() + 1) * byte_time });
+            }
+          }
+          return arrivals;
+        },
+        goals, 80 * byte_time + 0.005);
+  }
+  else if (backend == "pelco_d")
+  {
+    PelcoDDeviceConfig config;
+    config.port.link = target.link;
+    config.port.baud = baud;
+    PelcoDDevice device(config);
+    ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
+    status = runDeviceClients(
+        "serial pelco_d at " + std::to_string(baud) + " baud",
+        [&device, byte_time] {
+          std::vector<Arrival> arrivals;
+          for (const ReceivedFrame& item : device.received())
+          {
+            const std::uint8_t command = item.frame.command2;
+            if (command != pelco::QUERY_PAN && command != pelco::QUERY_TILT && command != pelco::QUERY_ZOOM)
+            {
+              arrivals.push_back(Arrival{ item.at, pelco::FRAME_SIZE * byte_time });
+            }
+          }
+          return arrivals;
+        },
+        goals, 6 * pelco::FRAME_SIZE * byte_time + 0.005);
   }
   else
   {

@@ -116,8 +116,8 @@ void FrameParser::feed(const std::uint8_t* data, std::size_t size, std::vector<E
     // changes what is read: a reply checks (sum = addr + alarm), and its last byte is no query reply code.
     const bool reply_checks = general_replies_ && buffer_.size() >= GENERAL_REPLY_SIZE &&
                               static_cast<std::uint8_t>(buffer_[1] + buffer_[2]) == buffer_[3];
-    const bool reply_code = reply_checks && (buffer_[3] == PAN_REPLY || buffer_[3] == TILT_REPLY ||
-                                             buffer_[3] == ZOOM_REPLY);
+    const bool reply_code =
+        reply_checks && (buffer_[3] == PAN_REPLY || buffer_[3] == TILT_REPLY || buffer_[3] == ZOOM_REPLY);
     if (reply_checks && !reply_code)
     {
       takeGeneralReply(events);

@@ -87,16 +87,23 @@ void PelcoDDevice::onBytes(const std::uint8_t* data, std::size_t size, TimePoint
   {
     std::lock_guard<std::mutex> lock(mutex_);
     std::vector<pelco::FrameParser::Event> events;
-    parser_.feed(data, size, events);
-    for (const pelco::FrameParser::Event& event : events)
+    const double byte_time = port_.byteTime();
+    // Byte by byte, so each frame is stamped with the moment its own last byte crossed the line.
+    for (std::size_t index = 0; index < size; ++index)
     {
-      received_.push_back(ReceivedFrame{ arrived_at, event.frame });
-      if (received_.size() > MAX_LOG)
+      events.clear();
+      parser_.feed(data + index, 1, events);
+      const TimePoint at = addSeconds(arrived_at, -(static_cast<double>(size - 1 - index) * byte_time));
+      for (const pelco::FrameParser::Event& event : events)
       {
-        received_.erase(received_.begin(), received_.begin() + MAX_LOG / 2);
+        received_.push_back(ReceivedFrame{ at, event.frame });
+        if (received_.size() > MAX_LOG)
+        {
+          received_.erase(received_.begin(), received_.begin() + MAX_LOG / 2);
+        }
+        const std::vector<std::uint8_t> reply = execute(event.frame, at);
+        replies.insert(replies.end(), reply.begin(), reply.end());
       }
-      const std::vector<std::uint8_t> reply = execute(event.frame, arrived_at);
-      replies.insert(replies.end(), reply.begin(), reply.end());
     }
   }
   received_changed_.notify_all();

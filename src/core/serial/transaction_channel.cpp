@@ -10,6 +10,12 @@ TransactionChannel::TransactionChannel(SerialLink& link, double reply_timeout,
 
 void TransactionChannel::queue(Request request)
 {
+  if (!request.expects_reply && queue_.empty())
+  {
+    // Nothing to wait for and nothing ahead of it: a request without reply cannot confuse the matching.
+    send(request);
+    return;
+  }
   queue_.push_back(std::move(request));
   pump();
 }

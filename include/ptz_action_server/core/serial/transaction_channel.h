@@ -36,7 +36,8 @@ public:
   /// \p on_timeout runs (I/O thread) for a request that got no reply within \p reply_timeout.
   TransactionChannel(SerialLink& link, double reply_timeout, std::function<void(const Request&)> on_timeout);
 
-  /// Queues a request (sent when the wire is free).
+  /// Queues a request (sent when the wire is free). A request without reply, with nothing queued ahead of it, goes
+  /// out at once.
   void queue(Request request);
   /// Sends now, ahead of the queue.
   void sendUrgent(Request request);
