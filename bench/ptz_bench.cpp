@@ -7,7 +7,7 @@
  * (CLOCK_MONOTONIC is one clock for all processes). The other child only subscribes to ptz_state and stamps each
  * arrival, as a user's node would see it. The parent is the clients, talking to the node over real ROS connections.
  *
- * Usage: ptz_bench URDF_FILE [--backend sim|pantilt_udp|flir|pelco_d] [--storm-seconds 30] [--zero-goals 1000]
+ * Usage: ptz_bench URDF_FILE [--backend sim|pantilt_udp|flir|pelco_d|digiview] [--storm-seconds 30] [--zero-goals 1000]
  *                  [--idle-seconds 10] [--goals 1000] [--baud 9600]
  * With a device backend the node talks to an emulator in the parent process, and the figures are goal -> first
  * command at the emulator (the command's own wire time subtracted) and the PtzState rate while a goal runs.
@@ -38,6 +38,8 @@
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/ros/ptz_goal.h"
 #include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/core/digiview/digiview_backend.h"
+#include "ptz_action_server/core/digiview/digiview_device.h"
 #include "ptz_action_server/core/motion_profile.h"
 #include "ptz_action_server/core/pantilt/pantilt_udp_backend.h"
 #include "ptz_action_server/core/pantilt/pantilt_udp_device.h"
@@ -135,8 +137,8 @@ std::string readFile(const std::string& path)
 /// Which backend the node runs, and where its device is.
 struct DeviceTarget
 {
-  std::string backend = "sim";  ///< sim, pantilt_udp, flir or pelco_d
-  std::uint16_t udp_port = 0;   ///< pantilt_udp: the emulator's port
+  std::string backend = "sim";  ///< sim, pantilt_udp, flir, pelco_d or digiview
+  std::uint16_t udp_port = 0;   ///< pantilt_udp, digiview: the emulator's port
   std::string link;             ///< flir, pelco_d: the emulator's pseudo-terminal link
   unsigned baud = 9600;
 };
@@ -149,6 +151,13 @@ std::shared_ptr<PtzBackend> makeBackend(const DeviceTarget& target, const Capabi
     config.device_port = target.udp_port;
     config.local_host = "127.0.0.1";
     return std::make_shared<PanTiltUdpBackend>(config);
+  }
+  if (target.backend == "digiview")
+  {
+    DigiViewConfig config;
+    config.port = target.udp_port;
+    config.acceleration = 4.0;
+    return std::make_shared<DigiViewBackend>(config);
   }
   SerialBackendConfig serial;
   serial.link.path = target.link;
@@ -512,7 +521,8 @@ int runDeviceClients(const std::string& title, const ArrivalsProbe& arrivals, in
                 "p50 %.2f ms, p99 %.2f ms, max %.2f ms (%zu of %d goals; wire time %.2f ms subtracted)",
                 percentile(latency_ms, 0.5), percentile(latency_ms, 0.99), percentile(latency_ms, 1.0),
                 latency_ms.size(), goals, percentile(wire_ms, 0.5));
-  rows.push_back({ "goal -> first command at the emulator", text, title == "pantilt_udp" ? "p99 <= 5 ms" : "" });
+  rows.push_back({ "goal -> first command at the emulator", text,
+                   title == "pantilt_udp" || title == "digiview" ? "p99 <= 5 ms" : "" });
   std::snprintf(text, sizeof(text), "%.2f Hz (%zu messages)", rate, state_times.size());
   rows.push_back({ "ptz_state rate while a goal runs", text, "10 Hz" });
   printTable((title + " backend").c_str(), rows);
@@ -524,7 +534,7 @@ int main(int argc, char** argv)
 {
   if (argc < 2)
   {
-    std::fprintf(stderr, "usage: ptz_bench URDF_FILE [--backend sim|pantilt_udp|flir|pelco_d] [--storm-seconds S] "
+    std::fprintf(stderr, "usage: ptz_bench URDF_FILE [--backend sim|pantilt_udp|flir|pelco_d|digiview] [--storm-seconds S] "
                          "[--zero-goals N] [--idle-seconds S] [--goals N] [--baud N]\n");
     return 2;
   }
@@ -577,6 +587,13 @@ int main(int argc, char** argv)
     probe.bind("127.0.0.1", 0);
     target.udp_port = probe.localEndpoint().port();
   }
+  else if (backend == "digiview")
+  {
+    boost::asio::io_context probe_context;  // a free TCP port for the emulator, found before the fork
+    boost::asio::ip::tcp::acceptor probe(probe_context, boost::asio::ip::tcp::endpoint(
+                                                             boost::asio::ip::make_address("127.0.0.1"), 0));
+    target.udp_port = probe.local_endpoint().port();
+  }
   else if (backend == "flir" || backend == "pelco_d")
   {
     target.link = "/tmp/ptz_bench_" + backend + "_" + std::to_string(getpid());
@@ -609,6 +626,27 @@ int main(int argc, char** argv)
           return arrivals;
         },
         goals, 0.002);
+  }
+  else if (backend == "digiview")
+  {
+    DigiViewDeviceConfig config;
+    config.port = target.udp_port;
+    DigiViewDevice device(config);
+    ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
+    status = runDeviceClients("digiview",
+                              [&device] {
+                                std::vector<Arrival> arrivals;
+                                for (const ReceivedMessage& item : device.received())
+                                {
+                                  if (item.message.message_type == digiview::MessageType::SET_PARAMETERS &&
+                                      item.message.param_type == digiview::ParamType::CAM_TARGETING)
+                                  {
+                                    arrivals.push_back(Arrival{ item.at, 0.0 });
+                                  }
+                                }
+                                return arrivals;
+                              },
+                              goals, 0.002);
   }
   else if (backend == "flir")
   {

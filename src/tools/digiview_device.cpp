@@ -1,0 +1,158 @@
+/**
+ * \file
+ * \brief digiview_device: a DigiView emulator (message format 0.5) with virtual views that slew.
+ */
+#include <cstdio>
+#include <string>
+
+#include "device_main.h"
+
+#include "ptz_action_server/core/digiview/digiview_device.h"
+
+namespace
+{
+const char* PROGRAM = "digiview_device";
+const char* USAGE = R"(usage: digiview_device [options]
+
+Answers as DigiView does (80-byte messages, CRC-8/BLUETOOTH): ACKNOWLEDGEMENT for SET CAM_TARGETING and
+CAM_OPTICS_AND_CONTROL, CURRENT_PARAMETERS for GETs and GET_INTERVAL subscriptions (>= 100 ms, 0 cancels),
+CHECKSUM_ERROR, DATA_ERROR, UNKNOWN, FORBIDDEN when told to refuse; QUIT closes the connection.
+
+Options:
+  --host HOST            address to listen on (default 127.0.0.1)
+  --port PORT            port (default 5500; 0 = any free port)
+  --transport tcp|udp    default tcp
+  --stream NAME          a stream name (default main; repeat for more streams)
+  --layout N             layout mode 0..6 (default 4: four user views)
+  --rate R               rad/s a view turns at (default 1.0)
+  --acceleration A       rad/s^2 (default 4.0)
+  --refuse               answer every SET with FORBIDDEN
+  --silent               start silent: read and ignore everything, send nothing
+  --silent-after S       fall silent S seconds after start
+Signals: SIGUSR1 toggles silence, SIGUSR2 drops every connection; SIGINT / SIGTERM end the program.
+)";
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  ptz_action_server::DigiViewDeviceConfig config;
+  config.port = 5500;
+  config.streams.clear();
+  bool silent = false;
+  bool refuse = false;
+  device_main::Schedule schedule;
+  for (int index = 1; index < argc; ++index)
+  {
+    const std::string arg = argv[index];
+    if (device_main::isRosArgument(arg))
+    {
+      continue;
+    }
+    auto value = [&]() -> const char* {
+      if (index + 1 >= argc)
+      {
+        device_main::fail(PROGRAM, arg + " needs a value", USAGE);
+      }
+      return argv[++index];
+    };
+    auto number = [&]() { return device_main::number(PROGRAM, value(), arg, USAGE); };
+    if (arg == "--host")
+    {
+      config.host = value();
+    }
+    else if (arg == "--port")
+    {
+      const double port = number();
+      if (port > 65535)
+      {
+        device_main::fail(PROGRAM, "--port must be 0..65535", USAGE);
+      }
+      config.port = static_cast<std::uint16_t>(port);
+    }
+    else if (arg == "--transport")
+    {
+      const std::string transport = value();
+      if (transport != "tcp" && transport != "udp")
+      {
+        device_main::fail(PROGRAM, "--transport must be tcp or udp", USAGE);
+      }
+      config.transport =
+          transport == "tcp" ? ptz_action_server::DigiViewTransport::TCP : ptz_action_server::DigiViewTransport::UDP;
+    }
+    else if (arg == "--stream")
+    {
+      const std::string name = value();
+      if (name.empty() || name.size() > 8)
+      {
+        device_main::fail(PROGRAM, "--stream takes 1 to 8 characters", USAGE);
+      }
+      config.streams.push_back(name);
+    }
+    else if (arg == "--layout")
+    {
+      const double layout = number();
+      if (layout > 6)
+      {
+        device_main::fail(PROGRAM, "--layout must be 0..6", USAGE);
+      }
+      config.layout_mode = static_cast<std::uint8_t>(layout);
+    }
+    else if (arg == "--rate")
+    {
+      config.slew_rate = number();
+    }
+    else if (arg == "--acceleration")
+    {
+      config.acceleration = number();
+    }
+    else if (arg == "--refuse")
+    {
+      refuse = true;
+    }
+    else if (arg == "--silent")
+    {
+      silent = true;
+    }
+    else if (arg == "--silent-after")
+    {
+      schedule.silent_after = number();
+    }
+    else if (arg == "-h" || arg == "--help")
+    {
+      std::printf("%s", USAGE);
+      return 0;
+    }
+    else
+    {
+      device_main::fail(PROGRAM, "unknown option " + arg, USAGE);
+    }
+  }
+  if (config.streams.empty())
+  {
+    config.streams.push_back("main");
+  }
+
+  const sigset_t signals = device_main::blockSignals();
+  try
+  {
+    ptz_action_server::DigiViewDevice device(config);
+    device.setSilent(silent);
+    device.setRefuse(refuse);
+    std::printf("%s: listening on %s:%u (%s), stream %s, layout %u%s\n", PROGRAM, config.host.c_str(), device.port(),
+                config.transport == ptz_action_server::DigiViewTransport::TCP ? "tcp" : "udp",
+                config.streams.front().c_str(), config.layout_mode, refuse ? ", refusing SETs" : "");
+    std::fflush(stdout);
+    device_main::Hooks hooks;
+    hooks.set_silent = [&device](bool value) { device.setSilent(value); };
+    // SIGUSR2 drops the connections; the client reconnects, so "replug" has nothing to do.
+    hooks.unplug = [&device] { device.dropConnections(); };
+    hooks.replug = [] {};
+    device_main::run(PROGRAM, signals, hooks, schedule, silent);
+  }
+  catch (const std::exception& error)
+  {
+    std::fprintf(stderr, "%s: %s\n", PROGRAM, error.what());
+    return 1;
+  }
+  return 0;
+}
