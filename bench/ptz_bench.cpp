@@ -534,7 +534,8 @@ int main(int argc, char** argv)
 {
   if (argc < 2)
   {
-    std::fprintf(stderr, "usage: ptz_bench URDF_FILE [--backend sim|pantilt_udp|flir|pelco_d|digiview] [--storm-seconds S] "
+    std::fprintf(stderr, "usage: ptz_bench URDF_FILE [--backend sim|pantilt_udp|flir|pelco_d|digiview] "
+                         "[--storm-seconds S] "
                          "[--zero-goals N] [--idle-seconds S] [--goals N] [--baud N]\n");
     return 2;
   }
@@ -590,8 +591,8 @@ int main(int argc, char** argv)
   else if (backend == "digiview")
   {
     boost::asio::io_context probe_context;  // a free TCP port for the emulator, found before the fork
-    boost::asio::ip::tcp::acceptor probe(probe_context, boost::asio::ip::tcp::endpoint(
-                                                             boost::asio::ip::make_address("127.0.0.1"), 0));
+    boost::asio::ip::tcp::acceptor probe(probe_context,
+                                         boost::asio::ip::tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
     target.udp_port = probe.local_endpoint().port();
   }
   else if (backend == "flir" || backend == "pelco_d")
@@ -633,20 +634,21 @@ int main(int argc, char** argv)
     config.port = target.udp_port;
     DigiViewDevice device(config);
     ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
-    status = runDeviceClients("digiview",
-                              [&device] {
-                                std::vector<Arrival> arrivals;
-                                for (const ReceivedMessage& item : device.received())
-                                {
-                                  if (item.message.message_type == digiview::MessageType::SET_PARAMETERS &&
-                                      item.message.param_type == digiview::ParamType::CAM_TARGETING)
-                                  {
-                                    arrivals.push_back(Arrival{ item.at, 0.0 });
-                                  }
-                                }
-                                return arrivals;
-                              },
-                              goals, 0.002);
+    status = runDeviceClients(
+        "digiview",
+        [&device] {
+          std::vector<Arrival> arrivals;
+          for (const ReceivedMessage& item : device.received())
+          {
+            if (item.message.message_type == digiview::MessageType::SET_PARAMETERS &&
+                item.message.param_type == digiview::ParamType::CAM_TARGETING)
+            {
+              arrivals.push_back(Arrival{ item.at, 0.0 });
+            }
+          }
+          return arrivals;
+        },
+        goals, 0.002);
   }
   else if (backend == "flir")
   {

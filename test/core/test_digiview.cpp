@@ -290,8 +290,12 @@ TEST(DigiViewEmulator, AnswersLikeDigiView)
 
   // GET_INTERVAL: under 100 ms is ignored; 100 ms comes periodically; 0 cancels.
   device.clearReceived();
-  boost::asio::write(socket, boost::asio::buffer(packInterval(IntervalRequest{ digiview::ParamType::CAM_TARGETING, camera, 50 }).pack()));
-  boost::asio::write(socket, boost::asio::buffer(packInterval(IntervalRequest{ digiview::ParamType::CAM_TARGETING, camera, 100 }).pack()));
+  boost::asio::write(
+      socket,
+      boost::asio::buffer(packInterval(IntervalRequest{ digiview::ParamType::CAM_TARGETING, camera, 50 }).pack()));
+  boost::asio::write(
+      socket,
+      boost::asio::buffer(packInterval(IntervalRequest{ digiview::ParamType::CAM_TARGETING, camera, 100 }).pack()));
   const TimePoint started = SteadyClock::now();
   for (int count = 0; count < 3; ++count)
   {
@@ -301,7 +305,9 @@ TEST(DigiViewEmulator, AnswersLikeDigiView)
   const double three = secondsBetween(started, SteadyClock::now());
   EXPECT_GT(three, 0.25);  // three at 100 ms, not at 50 ms
   EXPECT_LT(three, 0.45);
-  boost::asio::write(socket, boost::asio::buffer(packInterval(IntervalRequest{ digiview::ParamType::CAM_TARGETING, camera, 0 }).pack()));
+  boost::asio::write(
+      socket,
+      boost::asio::buffer(packInterval(IntervalRequest{ digiview::ParamType::CAM_TARGETING, camera, 0 }).pack()));
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
   socket.non_blocking(true);
   Bytes drain{};
@@ -314,7 +320,8 @@ TEST(DigiViewEmulator, AnswersLikeDigiView)
 
   // QUIT closes the connection.
   socket.non_blocking(false);
-  boost::asio::write(socket, boost::asio::buffer(packBare(MessageType::QUIT, digiview::ParamType::SYSTEM_STATUS).pack()));
+  boost::asio::write(socket,
+                     boost::asio::buffer(packBare(MessageType::QUIT, digiview::ParamType::SYSTEM_STATUS).pack()));
   Bytes after{};
   boost::asio::read(socket, boost::asio::buffer(after), error);
   EXPECT_EQ(error, boost::asio::error::eof);

@@ -87,17 +87,18 @@ TEST(DigiViewGolden, SetCamTargetingLayout)
   // Header.
   EXPECT_EQ((std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + 11)),
             (std::vector<std::uint8_t>{ 0x08, 0x07, 0x06, 0x05, 0x04, 0x03, 0x02, 0x01, 0x00, 0x02, 0x07 }));
-  // Data at 11: stream_name[8], cam_id, targeting_mode, euler_delta, yaw, pitch, roll, lock_flags, offsets, coordinates.
+  // Data at 11: stream_name[8], cam_id, targeting_mode, euler_delta, yaw, pitch, roll, lock_flags, offsets,
+  // coordinates.
   EXPECT_EQ(std::string(reinterpret_cast<const char*>(&bytes[11]), 4), "main");
   EXPECT_EQ(bytes[15], 0);
   EXPECT_EQ(bytes[18], 0);
-  EXPECT_EQ(bytes[11 + 8], 2);   // cam_id
-  EXPECT_EQ(bytes[11 + 9], 0);   // directional
-  EXPECT_EQ(bytes[11 + 10], 0);  // absolute
-  EXPECT_EQ(int32At(bytes, 11 + 11), 500);   // yaw, milliradians
-  EXPECT_EQ(int32At(bytes, 11 + 15), -200);  // pitch
-  EXPECT_EQ(int32At(bytes, 11 + 19), 0);     // roll
-  EXPECT_EQ(bytes[11 + 23], 3);              // lock flags
+  EXPECT_EQ(bytes[11 + 8], 2);                                                           // cam_id
+  EXPECT_EQ(bytes[11 + 9], 0);                                                           // directional
+  EXPECT_EQ(bytes[11 + 10], 0);                                                          // absolute
+  EXPECT_EQ(int32At(bytes, 11 + 11), 500);                                               // yaw, milliradians
+  EXPECT_EQ(int32At(bytes, 11 + 15), -200);                                              // pitch
+  EXPECT_EQ(int32At(bytes, 11 + 19), 0);                                                 // roll
+  EXPECT_EQ(bytes[11 + 23], 3);                                                          // lock flags
   EXPECT_EQ(static_cast<std::int16_t>(bytes[11 + 24] | (bytes[11 + 25] << 8)), 16384);   // 0.5 x 32767, rounded
   EXPECT_EQ(static_cast<std::int16_t>(bytes[11 + 26] | (bytes[11 + 27] << 8)), -32767);  // -1.0
   EXPECT_EQ(int32At(bytes, 11 + 28), 59329);
@@ -210,7 +211,8 @@ TEST(DigiViewRoundTrip, EveryMessageAPtzClientNeeds)
   EXPECT_EQ(output_back.detection_overlay_box.h, 4);
   EXPECT_EQ(output_back.single_detection_size, 96);
 
-  const Bytes interval_bytes = packInterval(IntervalRequest{ ParamType::CAM_OPTICS_AND_CONTROL, mainCamera(1), 250 }).pack();
+  const Bytes interval_bytes =
+      packInterval(IntervalRequest{ ParamType::CAM_OPTICS_AND_CONTROL, mainCamera(1), 250 }).pack();
   ASSERT_EQ(Message::unpack(interval_bytes.data(), interval_bytes.size(), unpacked), UnpackError::NONE);
   IntervalRequest request;
   ASSERT_EQ(unpackInterval(unpacked, request), UnpackError::NONE);

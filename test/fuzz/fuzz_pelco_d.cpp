@@ -40,7 +40,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       std::abort();
     }
     // Every frame handed out checks, and is for the address asked for.
-    if (!event.general_reply && ((data[1] != 0 && event.frame.address != data[1]) || encode(event.frame)[6] != checksum(event.frame)))
+    if (!event.general_reply &&
+        ((data[1] != 0 && event.frame.address != data[1]) || encode(event.frame)[6] != checksum(event.frame)))
     {
       std::abort();
     }

@@ -18,11 +18,11 @@ using boost::asio::ip::tcp;
 using boost::asio::ip::udp;
 using namespace digiview;
 
-constexpr double NARROWEST_FOV = 0.1;      ///< rad, DigiView's smallest field of view
+constexpr double NARROWEST_FOV = 0.1;  ///< rad, DigiView's smallest field of view
 constexpr std::uint32_t STATE_INTERVAL_MS = MIN_INTERVAL_MS;
 constexpr std::size_t MAX_OUTSTANDING = 64;
-constexpr double ZOOM_RATE = 2.0;          ///< X/s of velocity goals on zoom
-constexpr double QUIT_GRACE = 0.5;         ///< s the destructor waits for QUIT to go out
+constexpr double ZOOM_RATE = 2.0;   ///< X/s of velocity goals on zoom
+constexpr double QUIT_GRACE = 0.5;  ///< s the destructor waits for QUIT to go out
 
 std::chrono::steady_clock::duration seconds(double value)
 {
@@ -93,7 +93,8 @@ Capabilities DigiViewBackend::capabilities() const
 {
   Capabilities capabilities;
   capabilities.axes[PAN] = AxisCapability{ true, { -M_PI, M_PI }, config_.slew_rate, config_.acceleration };
-  capabilities.axes[TILT] = AxisCapability{ true, { -M_PI / 2.0, M_PI / 2.0 }, config_.slew_rate, config_.acceleration };
+  capabilities.axes[TILT] =
+      AxisCapability{ true, { -M_PI / 2.0, M_PI / 2.0 }, config_.slew_rate, config_.acceleration };
   capabilities.axes[ZOOM] = AxisCapability{ true, { 1.0, zoomMax() }, ZOOM_RATE, 0.0 };
   return capabilities;
 }
@@ -119,15 +120,14 @@ void DigiViewBackend::start()
   });
   if (!ready || !startup_problem_.empty())
   {
-    const std::string reason = !startup_problem_.empty()  ? startup_problem_ :
-                               !last_error_.empty()        ? last_error_ :
-                               counters_.connections > 0   ? "no VIDEO_OUTPUT or CAM_TARGETING for that view" :
-                                                             "not connected";
-    throw BackendError(formatText("DigiView at %s:%u (%s), view '%s' camera %u is not available within %.1f s: %s",
-                                  config_.host.c_str(), config_.port,
-                                  config_.transport == DigiViewTransport::TCP ? "tcp" : "udp",
-                                  config_.stream_name.c_str(), config_.cam_id, config_.startup_timeout,
-                                  reason.c_str()));
+    const std::string reason = !startup_problem_.empty() ? startup_problem_ :
+                               !last_error_.empty()      ? last_error_ :
+                               counters_.connections > 0 ? "no VIDEO_OUTPUT or CAM_TARGETING for that view" :
+                                                           "not connected";
+    throw BackendError(
+        formatText("DigiView at %s:%u (%s), view '%s' camera %u is not available within %.1f s: %s",
+                   config_.host.c_str(), config_.port, config_.transport == DigiViewTransport::TCP ? "tcp" : "udp",
+                   config_.stream_name.c_str(), config_.cam_id, config_.startup_timeout, reason.c_str()));
   }
 }
 
@@ -287,8 +287,7 @@ void DigiViewBackend::handle(const std::uint8_t* bytes, std::size_t size)
   }
   switch (message.message_type)
   {
-    case MessageType::CURRENT_PARAMETERS:
-    {
+    case MessageType::CURRENT_PARAMETERS: {
       if (message.param_type == ParamType::VIDEO_OUTPUT)
       {
         VideoOutput output;
@@ -365,8 +364,7 @@ void DigiViewBackend::handle(const std::uint8_t* bytes, std::size_t size)
     case MessageType::CHECKSUM_ERROR:
     case MessageType::DATA_ERROR:
     case MessageType::FORBIDDEN:
-    case MessageType::UNKNOWN:
-    {
+    case MessageType::UNKNOWN: {
       const auto set = std::find(outstanding_sets_.begin(), outstanding_sets_.end(), message.param_type);
       const bool answers_a_set = set != outstanding_sets_.end();
       if (answers_a_set)
@@ -379,9 +377,9 @@ void DigiViewBackend::handle(const std::uint8_t* bytes, std::size_t size)
         return;
       }
       ++counters_.refused;
-      const std::string reason = formatText("DigiView refused %s %s: %s (%s)", answers_a_set ? "SET" : "a request for",
-                                            toString(message.param_type), toString(message.message_type),
-                                            describeError(message.message_type));
+      const std::string reason =
+          formatText("DigiView refused %s %s: %s (%s)", answers_a_set ? "SET" : "a request for",
+                     toString(message.param_type), toString(message.message_type), describeError(message.message_type));
       last_error_ = reason;
       if (answers_a_set)
       {
@@ -574,8 +572,8 @@ void DigiViewBackend::diagnostics(std::vector<DiagnosticValue>& values) const
   std::lock_guard<std::mutex> lock(mutex_);
   values.emplace_back("DigiView", formatText("%s:%u (%s)", config_.host.c_str(), config_.port,
                                              config_.transport == DigiViewTransport::TCP ? "tcp" : "udp"));
-  values.emplace_back("view", formatText("stream '%s' camera %u of %u", config_.stream_name.c_str(), config_.cam_id,
-                                         num_user_views_));
+  values.emplace_back(
+      "view", formatText("stream '%s' camera %u of %u", config_.stream_name.c_str(), config_.cam_id, num_user_views_));
   values.emplace_back("system status", std::to_string(system_status_));
   values.emplace_back("connections", std::to_string(counters_.connections));
   values.emplace_back("link losses", std::to_string(counters_.link_losses));

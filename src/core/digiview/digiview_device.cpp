@@ -37,11 +37,9 @@ SimDeviceConfig viewModel(const DigiViewDeviceConfig& config)
   model.axes[TILT] =
       SimAxisConfig{ true, { -M_PI / 2.0, M_PI / 2.0 }, { config.slew_rate, config.acceleration, 0.0 }, 0.0, 0.0 };
   // The zoom slot holds the field of view, changing at a constant rate.
-  model.axes[ZOOM] = SimAxisConfig{ true,
-                                    { NARROWEST_FOV, WIDEST_FOV },
-                                    { config.fov_rate, 1000.0, config.fov_rate },
-                                    0.0,
-                                    config.initial_fov };
+  model.axes[ZOOM] = SimAxisConfig{
+    true, { NARROWEST_FOV, WIDEST_FOV }, { config.fov_rate, 1000.0, config.fov_rate }, 0.0, config.initial_fov
+  };
   return model;
 }
 }  // namespace
@@ -156,8 +154,7 @@ void DigiViewDevice::clearReceived()
   received_.clear();
 }
 
-bool DigiViewDevice::waitForReceived(const std::function<bool(const ReceivedMessage&)>& predicate,
-                                     double timeout) const
+bool DigiViewDevice::waitForReceived(const std::function<bool(const ReceivedMessage&)>& predicate, double timeout) const
 {
   std::unique_lock<std::mutex> lock(mutex_);
   return received_changed_.wait_for(lock, std::chrono::duration<double>(timeout),
@@ -167,8 +164,8 @@ bool DigiViewDevice::waitForReceived(const std::function<bool(const ReceivedMess
 std::size_t DigiViewDevice::connections() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  return static_cast<std::size_t>(std::count_if(sessions_.begin(), sessions_.end(),
-                                                [](const SessionPtr& session) { return session->open; }));
+  return static_cast<std::size_t>(
+      std::count_if(sessions_.begin(), sessions_.end(), [](const SessionPtr& session) { return session->open; }));
 }
 
 PtzSample DigiViewDevice::view(const std::string& stream, std::uint8_t cam_id) const
@@ -464,8 +461,7 @@ void DigiViewDevice::handle(const SessionPtr& session, const std::uint8_t* bytes
       }
       closeSession(session);
       return;
-    case MessageType::GET_PARAMETERS:
-    {
+    case MessageType::GET_PARAMETERS: {
       CameraId camera;
       if (unpackCamera(message, camera) != UnpackError::NONE)
       {
@@ -484,8 +480,7 @@ void DigiViewDevice::handle(const SessionPtr& session, const std::uint8_t* bytes
       }
       return;  // an unknown stream or camera: ignored, as DigiView does
     }
-    case MessageType::GET_INTERVAL:
-    {
+    case MessageType::GET_INTERVAL: {
       IntervalRequest request;
       if (unpackInterval(message, request) != UnpackError::NONE)
       {
@@ -495,8 +490,7 @@ void DigiViewDevice::handle(const SessionPtr& session, const std::uint8_t* bytes
       subscribe(session, request);
       return;
     }
-    case MessageType::SET_PARAMETERS:
-    {
+    case MessageType::SET_PARAMETERS: {
       if (refuse_)
       {
         reply(session, packBare(MessageType::FORBIDDEN, param));

@@ -62,9 +62,9 @@ public:
   void scaled32(std::size_t at, double value, double scale)
   {
     const double scaled = std::round(value * scale);
-    const double bounded = std::clamp(std::isfinite(scaled) ? scaled : 0.0,
-                                      static_cast<double>(std::numeric_limits<std::int32_t>::min()),
-                                      static_cast<double>(std::numeric_limits<std::int32_t>::max()));
+    const double bounded =
+        std::clamp(std::isfinite(scaled) ? scaled : 0.0, static_cast<double>(std::numeric_limits<std::int32_t>::min()),
+                   static_cast<double>(std::numeric_limits<std::int32_t>::max()));
     u32(at, static_cast<std::uint32_t>(static_cast<std::int32_t>(bounded)));
   }
   void scaled16(std::size_t at, double value)
@@ -174,7 +174,8 @@ bool readCamera(const Reader& reader, CameraId& camera)
 
 bool isMessageType(std::uint8_t value)
 {
-  return value <= static_cast<std::uint8_t>(MessageType::UNKNOWN) || value == static_cast<std::uint8_t>(MessageType::QUIT);
+  return value <= static_cast<std::uint8_t>(MessageType::UNKNOWN) ||
+         value == static_cast<std::uint8_t>(MessageType::QUIT);
 }
 
 bool isParamType(std::uint8_t value)
@@ -214,10 +215,19 @@ const char* toString(MessageType type)
 
 const char* toString(ParamType type)
 {
-  static const char* const NAMES[] = { "SYSTEM_STATUS", "AI",          "MODEL",          "VIDEO_OUTPUT",
-                                       "CAPTURE",       "DETECTION",   "DETECTED_ROI",   "CAM_TARGETING",
-                                       "CAM_OPTICS_AND_CONTROL",        "CAM_OFFSET",     "SENSOR",
-                                       "CAM_DEPTH_ESTIMATION",          "SINGLE_TARGET_TRACKING" };
+  static const char* const NAMES[] = { "SYSTEM_STATUS",
+                                       "AI",
+                                       "MODEL",
+                                       "VIDEO_OUTPUT",
+                                       "CAPTURE",
+                                       "DETECTION",
+                                       "DETECTED_ROI",
+                                       "CAM_TARGETING",
+                                       "CAM_OPTICS_AND_CONTROL",
+                                       "CAM_OFFSET",
+                                       "SENSOR",
+                                       "CAM_DEPTH_ESTIMATION",
+                                       "SINGLE_TARGET_TRACKING" };
   const auto index = static_cast<std::size_t>(type);
   return index < sizeof(NAMES) / sizeof(NAMES[0]) ? NAMES[index] : "?";
 }

@@ -36,13 +36,13 @@ struct DigiViewConfig
   DigiViewTransport transport = DigiViewTransport::TCP;
   std::string stream_name = "main";
   std::uint8_t cam_id = 0;
-  double fov_wide = 1.2;       ///< rad: the field of view that zoom 1x maps to (fov = fov_wide / X)
-  double zoom_max = 0.0;       ///< X; 0: fov_wide / 0.1 (DigiView's narrowest field of view)
-  std::uint8_t lock_flags = 0; ///< 0: the view follows the vehicle on every axis, so yaw and pitch are the base's
+  double fov_wide = 1.2;        ///< rad: the field of view that zoom 1x maps to (fov = fov_wide / X)
+  double zoom_max = 0.0;        ///< X; 0: fov_wide / 0.1 (DigiView's narrowest field of view)
+  std::uint8_t lock_flags = 0;  ///< 0: the view follows the vehicle on every axis, so yaw and pitch are the base's
   std::uint8_t crop_mode = 1;
-  double slew_rate = 1.0;      ///< rad/s DigiView turns a view at (for velocity goals and goal timeouts)
-  double acceleration = 0.0;   ///< rad/s^2 of that turn; 0: unknown (instant)
-  double state_timeout = 0.5;  ///< s without CURRENT_PARAMETERS before the link is down
+  double slew_rate = 1.0;         ///< rad/s DigiView turns a view at (for velocity goals and goal timeouts)
+  double acceleration = 0.0;      ///< rad/s^2 of that turn; 0: unknown (instant)
+  double state_timeout = 0.5;     ///< s without CURRENT_PARAMETERS before the link is down
   double velocity_period = 0.1;   ///< s between the targets of a velocity goal
   double settle_window = 0.25;    ///< s the reported direction must stay still to count as settled
   double startup_timeout = 10.0;  ///< s start() waits for DigiView to describe the stream
@@ -53,10 +53,10 @@ struct DigiViewConfig
 struct DigiViewCounters
 {
   std::uint64_t messages = 0;
-  std::uint64_t states = 0;             ///< CURRENT_PARAMETERS of our camera
+  std::uint64_t states = 0;  ///< CURRENT_PARAMETERS of our camera
   std::uint64_t acknowledged = 0;
-  std::uint64_t refused = 0;            ///< CHECKSUM_ERROR, DATA_ERROR, FORBIDDEN, UNKNOWN replies
-  std::array<std::uint64_t, 7> bad{};   ///< messages dropped, by UnpackError
+  std::uint64_t refused = 0;           ///< CHECKSUM_ERROR, DATA_ERROR, FORBIDDEN, UNKNOWN replies
+  std::array<std::uint64_t, 7> bad{};  ///< messages dropped, by UnpackError
   std::uint64_t connections = 0;
   std::uint64_t link_losses = 0;
 };

@@ -119,9 +119,9 @@ struct CamTargeting
   CameraId camera;
   std::uint8_t targeting_mode = 0;  ///< 0 directional, 1 coordinal, 2 detection, 3 single target tracking
   bool euler_delta = false;
-  double yaw = 0.0;    ///< rad, clockwise from north (Tait-Bryan)
-  double pitch = 0.0;  ///< rad, up positive
-  double roll = 0.0;   ///< rad (ignored by DigiView)
+  double yaw = 0.0;             ///< rad, clockwise from north (Tait-Bryan)
+  double pitch = 0.0;           ///< rad, up positive
+  double roll = 0.0;            ///< rad (ignored by DigiView)
   std::uint8_t lock_flags = 0;  ///< 3 LSB: yaw, pitch, roll locked
   double x_offset = 0.0;        ///< [-1, 1] of the view
   double y_offset = 0.0;
@@ -133,8 +133,8 @@ struct CamTargeting
 struct CamOpticsAndControl
 {
   CameraId camera;
-  std::int8_t zoom = 0;   ///< relative zoom step: 0 none, positive in, negative out
-  double fov = 0.0;       ///< rad
+  std::int8_t zoom = 0;  ///< relative zoom step: 0 none, positive in, negative out
+  double fov = 0.0;      ///< rad
   std::uint8_t crop_mode = 1;
 };
 
