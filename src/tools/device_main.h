@@ -59,6 +59,42 @@ inline bool isRosArgument(const std::string& argument)
   return argument.rfind("__", 0) == 0 || argument.find(":=") != std::string::npos;
 }
 
+/// Fetches the value of the option being parsed (fails when there is none).
+using Value = std::function<const char*()>;
+
+/**
+ * \brief Walks the arguments: skips roslaunch's, answers --help with \p usage, hands every other option to
+ * \p take (which returns false for an option it does not know: an error).
+ */
+inline void parseArguments(int argc, char** argv, const char* program, const std::string& usage,
+                           const std::function<bool(const std::string& arg, const Value& value)>& take)
+{
+  for (int index = 1; index < argc; ++index)
+  {
+    const std::string arg = argv[index];
+    if (isRosArgument(arg))
+    {
+      continue;
+    }
+    if (arg == "-h" || arg == "--help")
+    {
+      std::printf("%s", usage.c_str());
+      std::exit(0);
+    }
+    const Value value = [&]() -> const char* {
+      if (index + 1 >= argc)
+      {
+        fail(program, arg + " needs a value", usage.c_str());
+      }
+      return argv[++index];
+    };
+    if (!take(arg, value))
+    {
+      fail(program, "unknown option " + arg, usage.c_str());
+    }
+  }
+}
+
 /// Options every serial emulator takes.
 struct SerialOptions
 {
@@ -82,8 +118,8 @@ Signals: SIGUSR1 toggles silence, SIGUSR2 unplugs / replugs; SIGINT / SIGTERM en
 )";
 
 /// Takes \p arg if it is a serial option; \p value fetches its argument.
-inline bool parseSerialOption(const std::string& arg, const std::function<const char*()>& value, const char* program,
-                              const char* usage, SerialOptions& options)
+inline bool parseSerialOption(const std::string& arg, const Value& value, const char* program, const char* usage,
+                              SerialOptions& options)
 {
   auto number = [&]() { return device_main::number(program, value(), arg, usage); };
   if (arg == "--link")

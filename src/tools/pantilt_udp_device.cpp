@@ -40,20 +40,7 @@ int main(int argc, char** argv)
   device_main::Schedule schedule;
   double drop = 0.0;
   double delay = 0.0;
-  for (int index = 1; index < argc; ++index)
-  {
-    const std::string arg = argv[index];
-    if (device_main::isRosArgument(arg))
-    {
-      continue;
-    }
-    auto value = [&]() -> const char* {
-      if (index + 1 >= argc)
-      {
-        device_main::fail(PROGRAM, arg + " needs a value", USAGE);
-      }
-      return argv[++index];
-    };
+  device_main::parseArguments(argc, argv, PROGRAM, USAGE, [&](const std::string& arg, const device_main::Value& value) {
     auto number = [&]() { return device_main::number(PROGRAM, value(), arg, USAGE); };
     if (arg == "--host")
     {
@@ -95,16 +82,12 @@ int main(int argc, char** argv)
     {
       schedule.silent_after = number();
     }
-    else if (arg == "-h" || arg == "--help")
-    {
-      std::printf("%s", USAGE);
-      return 0;
-    }
     else
     {
-      device_main::fail(PROGRAM, "unknown option " + arg, USAGE);
+      return false;
     }
-  }
+    return true;
+  });
 
   const sigset_t signals = device_main::blockSignals();
   try

@@ -34,23 +34,10 @@ int main(int argc, char** argv)
   char serial_help[2048];
   std::snprintf(serial_help, sizeof(serial_help), device_main::SERIAL_OPTIONS_HELP, DEFAULT_LINK);
   const std::string usage = std::string(USAGE) + serial_help;
-  for (int index = 1; index < argc; ++index)
-  {
-    const std::string arg = argv[index];
-    if (device_main::isRosArgument(arg))
-    {
-      continue;
-    }
-    auto value = [&]() -> const char* {
-      if (index + 1 >= argc)
-      {
-        device_main::fail(PROGRAM, arg + " needs a value", usage.c_str());
-      }
-      return argv[++index];
-    };
+  device_main::parseArguments(argc, argv, PROGRAM, usage, [&](const std::string& arg, const device_main::Value& value) {
     if (device_main::parseSerialOption(arg, value, PROGRAM, usage.c_str(), options))
     {
-      continue;
+      return true;
     }
     if (arg == "--address")
     {
@@ -75,16 +62,12 @@ int main(int argc, char** argv)
     {
       config.general_reply = true;
     }
-    else if (arg == "-h" || arg == "--help")
-    {
-      std::printf("%s", usage.c_str());
-      return 0;
-    }
     else
     {
-      device_main::fail(PROGRAM, "unknown option " + arg, usage.c_str());
+      return false;
     }
-  }
+    return true;
+  });
   config.port = options.port;
 
   const sigset_t signals = device_main::blockSignals();

@@ -4,6 +4,8 @@
  */
 #include <gtest/gtest.h>
 
+#include "wait_until.h"
+
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -23,20 +25,6 @@ using namespace ptz_action_server::digiview;
 
 namespace
 {
-bool waitUntil(const std::function<bool()>& condition, double timeout)
-{
-  const TimePoint deadline = addSeconds(SteadyClock::now(), timeout);
-  while (SteadyClock::now() < deadline)
-  {
-    if (condition())
-    {
-      return true;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return condition();
-}
-
 DigiViewConfig backendConfig(const DigiViewDevice& device, DigiViewTransport transport = DigiViewTransport::TCP)
 {
   DigiViewConfig config;

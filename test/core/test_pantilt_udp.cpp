@@ -4,6 +4,8 @@
  */
 #include <gtest/gtest.h>
 
+#include "wait_until.h"
+
 #include <chrono>
 #include <functional>
 #include <thread>
@@ -18,21 +20,6 @@ using Bytes = std::vector<std::uint8_t>;
 
 namespace
 {
-/// Waits until \p condition holds or \p timeout s pass.
-bool waitUntil(const std::function<bool()>& condition, double timeout)
-{
-  const TimePoint deadline = addSeconds(SteadyClock::now(), timeout);
-  while (SteadyClock::now() < deadline)
-  {
-    if (condition())
-    {
-      return true;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return condition();
-}
-
 /// The frames the device received that are not state requests (params frames).
 std::vector<Bytes> commandsReceived(const PanTiltUdpDevice& device)
 {

@@ -4,6 +4,8 @@
  */
 #include <gtest/gtest.h>
 
+#include "wait_until.h"
+
 #include <dirent.h>
 #include <unistd.h>
 
@@ -24,20 +26,6 @@ using namespace ptz_action_server;
 namespace
 {
 const double FLIR_RESOLUTION = 185.1428 / 3600.0 * M_PI / 180.0;
-
-bool waitUntil(const std::function<bool()>& condition, double timeout)
-{
-  const TimePoint deadline = addSeconds(SteadyClock::now(), timeout);
-  while (SteadyClock::now() < deadline)
-  {
-    if (condition())
-    {
-      return true;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  return condition();
-}
 
 std::string uniqueLink(const char* name)
 {

@@ -162,14 +162,8 @@ FlirCounters FlirBackend::counters() const
 void FlirBackend::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   const FlirCounters counters = this->counters();
-  const SerialLinkCounters link = link_.counters();
   values.emplace_back("protocol", "flir");
-  values.emplace_back("port", config_.serial.link.path);
-  values.emplace_back("baud", std::to_string(config_.serial.link.baud));
-  values.emplace_back("port opens", std::to_string(link.opens));
-  values.emplace_back("port open failures", std::to_string(link.open_failures));
-  values.emplace_back("port losses", std::to_string(link.disconnects));
-  values.emplace_back("last port error", link_.lastError());
+  link_.diagnostics(values);
   values.emplace_back("replies", std::to_string(counters.replies));
   values.emplace_back("device errors", std::to_string(counters.errors));
   values.emplace_back("limit hits", std::to_string(counters.limit_hits));

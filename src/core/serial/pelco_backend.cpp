@@ -183,14 +183,9 @@ PelcoCounters PelcoBackend::counters() const
 void PelcoBackend::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   const PelcoCounters counters = this->counters();
-  const SerialLinkCounters link = link_.counters();
   values.emplace_back("protocol", "pelco_d");
-  values.emplace_back("port", config_.serial.link.path);
-  values.emplace_back("baud", std::to_string(config_.serial.link.baud));
   values.emplace_back("address", std::to_string(config_.address));
-  values.emplace_back("port opens", std::to_string(link.opens));
-  values.emplace_back("port losses", std::to_string(link.disconnects));
-  values.emplace_back("last port error", link_.lastError());
+  link_.diagnostics(values);
   values.emplace_back("frames", std::to_string(counters.parser.frames));
   values.emplace_back("dropped: bad checksum or partial", std::to_string(counters.parser.bad_checksum));
   values.emplace_back("dropped: bytes outside frames", std::to_string(counters.parser.skipped_bytes));

@@ -71,6 +71,17 @@ std::string SerialLink::lastError() const
   return last_error_;
 }
 
+void SerialLink::diagnostics(std::vector<DiagnosticValue>& values) const
+{
+  const SerialLinkCounters counters = this->counters();
+  values.emplace_back("port", config_.path);
+  values.emplace_back("baud", std::to_string(config_.baud));
+  values.emplace_back("port opens", std::to_string(counters.opens));
+  values.emplace_back("port open failures", std::to_string(counters.open_failures));
+  values.emplace_back("port losses", std::to_string(counters.disconnects));
+  values.emplace_back("last port error", lastError());
+}
+
 void SerialLink::open()
 {
   boost::system::error_code error;

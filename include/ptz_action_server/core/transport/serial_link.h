@@ -20,6 +20,8 @@
 #include <boost/asio/serial_port.hpp>
 #include <boost/asio/steady_timer.hpp>
 
+#include "ptz_action_server/core/backend.h"
+
 namespace ptz_action_server
 {
 struct SerialLinkConfig
@@ -92,6 +94,8 @@ public:
   SerialLinkCounters counters() const;
   /// Last reason the port closed or failed to open ("" if none). Any thread.
   std::string lastError() const;
+  /// The port, its rate, opens, failures and losses, for a backend's diagnostics. Any thread.
+  void diagnostics(std::vector<DiagnosticValue>& values) const;
 
 private:
   void open();
