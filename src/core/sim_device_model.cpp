@@ -133,12 +133,6 @@ PtzSample SimDeviceModel::sample(TimePoint now)
   return sample;
 }
 
-AxisMotionState SimDeviceModel::axisState(Axis axis, TimePoint now)
-{
-  applyDueCommands(now);
-  return exactState(axis, now);
-}
-
 void SimDeviceModel::submit(CommandKind kind, Axis axis, double value, TimePoint now)
 {
   applyDueCommands(now);

@@ -117,6 +117,14 @@ Faults:
 Signals: SIGUSR1 toggles silence, SIGUSR2 unplugs / replugs; SIGINT / SIGTERM end the program.
 )";
 
+/// The usage text of a serial emulator: its own text, then the serial options with its default link.
+inline std::string serialUsage(const char* own, const char* default_link)
+{
+  char serial_help[2048];
+  std::snprintf(serial_help, sizeof(serial_help), SERIAL_OPTIONS_HELP, default_link);
+  return std::string(own) + serial_help;
+}
+
 /// Takes \p arg if it is a serial option; \p value fetches its argument.
 inline bool parseSerialOption(const std::string& arg, const Value& value, const char* program, const char* usage,
                               SerialOptions& options)
@@ -255,6 +263,37 @@ inline void run(const char* program, const sigset_t& signals, const Hooks& hooks
       return;
     }
   }
+}
+
+/**
+ * \brief Runs a serial emulator (FlirPtuDevice, PelcoDDevice) on the options' port, with their faults, until
+ * SIGINT or SIGTERM. \p detail is appended to the start-up line. Returns the exit code.
+ */
+template <class Device, class Config>
+int runSerialDevice(const char* program, Config config, const SerialOptions& options, const std::string& detail)
+{
+  config.port = options.port;
+  const sigset_t signals = blockSignals();
+  try
+  {
+    Device device(config);
+    device.port().setSilent(options.silent);
+    device.port().setGarbleRatio(options.garble);
+    std::printf("%s: %s at %u baud%s%s\n", program, device.path().c_str(), config.port.baud, detail.c_str(),
+                options.silent ? ", silent" : "");
+    std::fflush(stdout);
+    Hooks hooks;
+    hooks.set_silent = [&device](bool silent) { device.port().setSilent(silent); };
+    hooks.unplug = [&device] { device.unplug(); };
+    hooks.replug = [&device] { device.replug(); };
+    run(program, signals, hooks, options.schedule, options.silent);
+  }
+  catch (const std::exception& error)
+  {
+    std::fprintf(stderr, "%s: %s\n", program, error.what());
+    return 1;
+  }
+  return 0;
 }
 
 }  // namespace device_main

@@ -31,9 +31,7 @@ int main(int argc, char** argv)
   device_main::SerialOptions options;
   options.port.link = DEFAULT_LINK;
   ptz_action_server::PelcoDDeviceConfig config;
-  char serial_help[2048];
-  std::snprintf(serial_help, sizeof(serial_help), device_main::SERIAL_OPTIONS_HELP, DEFAULT_LINK);
-  const std::string usage = std::string(USAGE) + serial_help;
+  const std::string usage = device_main::serialUsage(USAGE, DEFAULT_LINK);
   device_main::parseArguments(argc, argv, PROGRAM, usage, [&](const std::string& arg, const device_main::Value& value) {
     if (device_main::parseSerialOption(arg, value, PROGRAM, usage.c_str(), options))
     {
@@ -68,27 +66,6 @@ int main(int argc, char** argv)
     }
     return true;
   });
-  config.port = options.port;
-
-  const sigset_t signals = device_main::blockSignals();
-  try
-  {
-    ptz_action_server::PelcoDDevice device(config);
-    device.port().setSilent(options.silent);
-    device.port().setGarbleRatio(options.garble);
-    std::printf("%s: %s at %u baud, address %u%s\n", PROGRAM, device.path().c_str(), config.port.baud, config.address,
-                options.silent ? ", silent" : "");
-    std::fflush(stdout);
-    device_main::Hooks hooks;
-    hooks.set_silent = [&device](bool silent) { device.port().setSilent(silent); };
-    hooks.unplug = [&device] { device.unplug(); };
-    hooks.replug = [&device] { device.replug(); };
-    device_main::run(PROGRAM, signals, hooks, options.schedule, options.silent);
-  }
-  catch (const std::exception& error)
-  {
-    std::fprintf(stderr, "%s: %s\n", PROGRAM, error.what());
-    return 1;
-  }
-  return 0;
+  return device_main::runSerialDevice<ptz_action_server::PelcoDDevice>(PROGRAM, config, options,
+                                                                       ", address " + std::to_string(config.address));
 }

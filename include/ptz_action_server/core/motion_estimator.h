@@ -25,10 +25,6 @@ public:
   void add(TimePoint at, const AxisValues& position);
   /// Forgets every report (after a reconnect: old positions say nothing about the new device).
   void clear();
-  bool empty() const
-  {
-    return reports_.empty();
-  }
 
   /// Fills \p sample's stamp, position, velocity and moving from the reports (link and faults are the caller's).
   void fill(PtzSample& sample) const;

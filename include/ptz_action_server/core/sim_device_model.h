@@ -67,10 +67,6 @@ public:
   void stop(TimePoint now);
   /// Sets the cruise speed of position moves on one axis (clamped to (0, max_speed]); takes effect on the next move.
   void setCruiseSpeed(Axis axis, double speed, TimePoint now);
-  double cruiseSpeed(Axis axis) const
-  {
-    return axes_[axis].cruise_speed;
-  }
 
   /// Applies a new fault set. Stalling freezes the axis where it is at \p now.
   void setFaults(const SimFaults& faults, TimePoint now);
@@ -81,9 +77,6 @@ public:
 
   /// The device's state at \p now: quantised positions, velocities, whether anything still moves.
   PtzSample sample(TimePoint now);
-
-  /// Exact (unquantised) position and velocity of one axis at \p now.
-  AxisMotionState axisState(Axis axis, TimePoint now);
 
   const SimDeviceConfig& config() const
   {

@@ -91,7 +91,6 @@ void TransactionChannel::armTimer()
     {
       return;
     }
-    ++timeouts_;
     const Request lost = outstanding_.front();
     // Whatever is still on the wire may answer late: drop it all and ignore replies for a while.
     outstanding_.clear();

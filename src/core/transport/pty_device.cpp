@@ -239,7 +239,6 @@ void PtyDevice::run()
       const ssize_t size = master_ >= 0 ? ::read(master_, buffer, sizeof(buffer)) : -1;
       if (size > 0)
       {
-        bytes_received_ += static_cast<std::uint64_t>(size);
         input_free_at_ = addSeconds(std::max(now, input_free_at_), size * byte_time);
         input_.push_back(Pending{ input_free_at_, std::vector<std::uint8_t>(buffer, buffer + size) });
       }

@@ -48,20 +48,11 @@ public:
 
   /// A reply arrived: the request it answers, or nothing (none outstanding, or draining after a timeout).
   std::optional<Request> complete(TimePoint now);
-  /// True when nothing is queued or outstanding.
-  bool idle() const
-  {
-    return queue_.empty() && outstanding_.empty();
-  }
   std::size_t queued() const
   {
     return queue_.size();
   }
 
-  std::uint64_t timeouts() const
-  {
-    return timeouts_;
-  }
   std::uint64_t lateReplies() const
   {
     return late_replies_;
@@ -79,7 +70,6 @@ private:
   std::deque<Request> queue_;
   std::deque<Request> outstanding_;  ///< on the wire, oldest first
   TimePoint drain_until_{};
-  std::uint64_t timeouts_ = 0;
   std::uint64_t late_replies_ = 0;
 };
 

@@ -71,10 +71,6 @@ public:
   void replug();
   bool plugged() const;
 
-  std::uint64_t bytesReceived() const
-  {
-    return bytes_received_;
-  }
   std::uint64_t bytesGarbled() const
   {
     return bytes_garbled_;
@@ -112,7 +108,6 @@ private:
 
   std::atomic<bool> silent_{ false };
   std::atomic<double> garble_ratio_{ 0.0 };
-  std::atomic<std::uint64_t> bytes_received_{ 0 };
   std::atomic<std::uint64_t> bytes_garbled_{ 0 };
   std::mt19937 random_{ 4242 };
   int wake_fd_ = -1;
