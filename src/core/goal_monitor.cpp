@@ -67,6 +67,7 @@ GoalMonitor::GoalMonitor(Kind kind, const AxisValues& goal, const PtzSample& sta
   , config_(config)
   , started_at_(now)
   , start_fault_count_(start.fault_count)
+  , start_link_losses_(start.link_losses)
   , last_moved_position_(start.position)
 {
   last_moved_at_.fill(now);
@@ -96,10 +97,12 @@ GoalVerdict GoalMonitor::update(const PtzSample& sample, TimePoint now)
       verdict.remaining[axis] = goal_[axis] - (kind_ == Kind::VELOCITY ? sample.velocity[axis] : sample.position[axis]);
     }
   }
-  if (!sample.link_up)
+  // A link that broke and came back at once still ends the goal: what the device did meanwhile is unknown.
+  if (!sample.link_up || sample.link_losses != start_link_losses_)
   {
     verdict.phase = GoalPhase::ABORTED;
-    verdict.reason = "link lost: the device stopped reporting its state";
+    verdict.reason = "link lost";
+    verdict.link_lost = true;
     return verdict;
   }
   if (sample.fault_count != start_fault_count_)
@@ -192,10 +195,11 @@ GoalVerdict GoalMonitor::updateVelocity(const PtzSample& sample, TimePoint now, 
 
 GoalVerdict GoalMonitor::updateStop(const PtzSample& sample, TimePoint now, GoalVerdict verdict)
 {
-  if (!sample.link_up)
+  if (!sample.link_up || sample.link_losses != start_link_losses_)
   {
     verdict.phase = GoalPhase::ABORTED;
     verdict.reason = "link lost while stopping";
+    verdict.link_lost = true;
   }
   else if (!sample.moving)
   {

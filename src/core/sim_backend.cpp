@@ -48,12 +48,24 @@ void SimBackend::stop()
 PtzSample SimBackend::sample() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  return dropout_ ? frozen_sample_ : model_.sample(clock_->now());
+  if (dropout_)
+  {
+    return frozen_sample_;
+  }
+  PtzSample sample = model_.sample(clock_->now());
+  sample.link_losses = link_losses_;
+  return sample;
 }
 
 std::string SimBackend::lastFault() const
 {
   return {};  // the simulated device never refuses a command
+}
+
+std::string SimBackend::lastLinkLoss() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return link_losses_ > 0 ? "the simulated device dropped out" : "";
 }
 
 void SimBackend::diagnostics(std::vector<DiagnosticValue>& values) const
@@ -82,8 +94,10 @@ void SimBackend::setFaults(const SimFaults& faults, bool dropout)
   model_.setFaults(faults, now);
   if (dropout && !dropout_)
   {
+    ++link_losses_;
     frozen_sample_ = model_.sample(now);
     frozen_sample_.link_up = false;
+    frozen_sample_.link_losses = link_losses_;
   }
   dropout_ = dropout;
 }

@@ -540,7 +540,17 @@ void PtzActionServer::superviseGoal(const PtzSample& sample)
   else
   {
     backend_->stop();  // a failed goal must not leave the device moving
-    active_goal_->abort(verdict.device_fault ? verdict.reason + ": " + backend_->lastFault() : verdict.reason);
+    std::string reason = verdict.reason;
+    if (verdict.device_fault)
+    {
+      reason += ": " + backend_->lastFault();
+    }
+    else if (verdict.link_lost)
+    {
+      const std::string loss = backend_->lastLinkLoss();
+      reason += ": " + (loss.empty() ? std::string("the device stopped reporting its state") : loss);
+    }
+    active_goal_->abort(reason);
   }
   finishGoal();
 }

@@ -152,6 +152,24 @@ TEST_F(GoalMonitorTest, LostLinkAndDeviceFaultAbort)
   EXPECT_TRUE(verdict.device_fault);
 }
 
+TEST_F(GoalMonitorTest, ALinkThatBrokeAndCameBackStillAbortsTheGoal)
+{
+  const AxisValues target{ 1.0, 0.0, 1.0 };
+  GoalMonitor monitor = GoalMonitor::forPosition(target, sample(), capabilities_, config_, clock_.now());
+  PtzSample reconnected = sample();
+  ASSERT_TRUE(reconnected.link_up);
+  reconnected.link_losses += 1;  // lost and reopened between two samples
+  const GoalVerdict verdict = monitor.update(reconnected, clock_.now());
+  EXPECT_EQ(verdict.phase, GoalPhase::ABORTED);
+  EXPECT_TRUE(verdict.link_lost);
+  EXPECT_EQ(verdict.reason, "link lost");
+
+  GoalMonitor stopping = GoalMonitor::forStop(sample(), config_, clock_.now());
+  const GoalVerdict stopped = stopping.update(reconnected, clock_.now());
+  EXPECT_EQ(stopped.phase, GoalPhase::ABORTED);
+  EXPECT_TRUE(stopped.link_lost);
+}
+
 TEST_F(GoalMonitorTest, VelocityGoalEndsAtTheLimitAndAsksForAStop)
 {
   const AxisValues velocity{ 0.0, 1.0, 0.0 };

@@ -88,9 +88,13 @@ TEST_F(SimBackendTest, DropoutFreezesStateLosesCommandsAndRecovers)
 {
   backend_.goTo({ 2.0, 0.0, 1.0 });
   clock_->advance(0.5);
+  EXPECT_EQ(backend_.sample().link_losses, 0u);
+  EXPECT_EQ(backend_.lastLinkLoss(), "");
   backend_.setFaults(SimFaults{}, true);
   const PtzSample frozen = backend_.sample();
   EXPECT_FALSE(frozen.link_up);
+  EXPECT_EQ(frozen.link_losses, 1u);
+  EXPECT_EQ(backend_.lastLinkLoss(), "the simulated device dropped out");
   backend_.stop();  // lost: the device keeps going to 2.0
   clock_->advance(3.0);
   EXPECT_DOUBLE_EQ(backend_.sample().position[PAN], frozen.position[PAN]);
@@ -99,6 +103,7 @@ TEST_F(SimBackendTest, DropoutFreezesStateLosesCommandsAndRecovers)
   backend_.setFaults(SimFaults{}, false);
   PtzSample sample = backend_.sample();
   EXPECT_TRUE(sample.link_up);
+  EXPECT_EQ(sample.link_losses, 1u);  // the loss stays counted after the recovery
   EXPECT_NEAR(sample.position[PAN], 2.0, 1e-3);
   backend_.goTo({ -1.0, 0.0, 1.0 });
   clock_->advance(5.0);

@@ -21,9 +21,9 @@ using DiagnosticValue = std::pair<std::string, std::string>;
  * Threading contract (as ros_control's RobotHW states which calls may block):
  * - start() may block for a bounded time (opening a port, a handshake); it is called once, before any other call
  *   but name()/capabilities(), from the node's main thread.
- * - goTo(), moveAtVelocity(), stop(), sample(), lastFault() and diagnostics() never block on I/O: commands are
- *   queued to the backend's own I/O thread, and sample() returns the latest snapshot. They may be called from
- *   any thread.
+ * - goTo(), moveAtVelocity(), stop(), sample(), lastFault(), lastLinkLoss() and diagnostics() never block on I/O:
+ *   commands are queued to the backend's own I/O thread, and sample() returns the latest snapshot. They may be
+ *   called from any thread.
  * - The destructor stops the I/O thread and joins it.
  *
  * Commands retarget the device from wherever it is: a goTo() while moving must not stop in between.
@@ -56,6 +56,13 @@ public:
 
   /// Text of the most recent device fault (the one that last incremented PtzSample::fault_count).
   virtual std::string lastFault() const = 0;
+
+  /// Why the link was last lost (the loss that last incremented PtzSample::link_losses, or the one under way), naming
+  /// the link: "connection to 127.0.0.1:5500 closed", "no state from the FLIR PTU for 0.25 s". "" if never lost.
+  virtual std::string lastLinkLoss() const
+  {
+    return {};
+  }
 
   /// Appends link details and counters (dropped frames and the like) for the node's diagnostics.
   virtual void diagnostics(std::vector<DiagnosticValue>& values) const

@@ -38,6 +38,7 @@ struct GoalVerdict
   AxisValues remaining{};     ///< goal minus current, signed: positions, or velocities for a velocity goal
   std::string reason;         ///< why the goal ended (empty while ACTIVE)
   bool device_fault = false;  ///< the device reported a fault: the caller appends the backend's fault text
+  bool link_lost = false;     ///< the link was lost during the goal: the caller appends the backend's reason
   bool stop_device = false;   ///< the caller must stop the device (a velocity goal hit a limit)
 };
 
@@ -89,6 +90,7 @@ private:
   double expected_duration_ = 0.0;
   double timeout_ = 0.0;
   std::uint64_t start_fault_count_ = 0;
+  std::uint64_t start_link_losses_ = 0;
   AxisValues last_moved_position_{};  ///< position where each axis was last seen moving
   std::array<TimePoint, AXIS_COUNT> last_moved_at_{};
 };

@@ -37,6 +37,7 @@ public:
   void stop() override;
   PtzSample sample() const override;
   std::string lastFault() const override;
+  std::string lastLinkLoss() const override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 
   /// Replaces the fault set. With \p dropout the device falls silent: state freezes, commands are lost.
@@ -51,6 +52,7 @@ private:
   mutable std::mutex mutex_;      ///< guards everything below
   mutable SimDeviceModel model_;  ///< mutable: sampling applies commands whose lag has passed
   bool dropout_ = false;
+  std::uint64_t link_losses_ = 0;  ///< dropouts so far
   PtzSample frozen_sample_;  ///< what the device last said before it dropped out
   std::uint64_t commands_received_ = 0;
   std::uint64_t commands_lost_ = 0;

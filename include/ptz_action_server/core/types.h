@@ -129,6 +129,7 @@ struct PtzSample
   AxisValues velocity{};          ///< pan, tilt (rad/s), zoom (X/s); 0 when the device does not report it
   bool moving = false;            ///< the device is still in motion (false = settled)
   std::uint64_t fault_count = 0;  ///< increments each time the device refuses or fails a command
+  std::uint64_t link_losses = 0;  ///< increments each time the link to the device is lost, even if it is back at once
 };
 
 /// A configuration value is missing, of the wrong type or out of range. The message names it.
