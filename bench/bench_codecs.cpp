@@ -4,7 +4,7 @@
  */
 #include <benchmark/benchmark.h>
 
-#include "ptz_action_server/core/pantilt/pantilt.h"
+#include "ptz_action_server/core/pantilt/pantilt_codec.h"
 
 namespace
 {

@@ -38,15 +38,15 @@
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/ros/ptz_goal.h"
 #include "ptz_action_server/PtzState.h"
-#include "ptz_action_server/core/digiview/digiview_backend.h"
-#include "ptz_action_server/core/digiview/digiview_device.h"
+#include "ptz_action_server/core/digiview/digiview_protocol.h"
+#include "ptz_action_server/core/flir/flir_protocol.h"
 #include "ptz_action_server/core/motion_profile.h"
-#include "ptz_action_server/core/pantilt/pantilt_udp_backend.h"
-#include "ptz_action_server/core/pantilt/pantilt_udp_device.h"
-#include "ptz_action_server/core/serial/flir_backend.h"
-#include "ptz_action_server/core/serial/flir_device.h"
-#include "ptz_action_server/core/serial/pelco_backend.h"
-#include "ptz_action_server/core/serial/pelco_device.h"
+#include "ptz_action_server/core/pantilt/pantilt_protocol.h"
+#include "ptz_action_server/core/pelco_d/pelco_d_protocol.h"
+#include "ptz_action_server/emulators/digiview_emulator.h"
+#include "ptz_action_server/emulators/flir_ptu_emulator.h"
+#include "ptz_action_server/emulators/pantilt_emulator.h"
+#include "ptz_action_server/emulators/pelco_d_emulator.h"
 #include "ptz_action_server/core/sim_backend.h"
 #include "ptz_action_server/ros/ptz_action_server.h"
 
@@ -147,32 +147,32 @@ std::shared_ptr<PtzBackend> makeBackend(const DeviceTarget& target, const Capabi
 {
   if (target.backend == "pantilt_udp")
   {
-    PanTiltUdpConfig config;
-    config.device_port = target.udp_port;
-    config.local_host = "127.0.0.1";
-    return std::make_shared<PanTiltUdpBackend>(config);
+    PanTiltConfig config;
+    config.link.port = target.udp_port;
+    config.link.local_host = "127.0.0.1";
+    return makePanTiltBackend(config);
   }
   if (target.backend == "digiview")
   {
     DigiViewConfig config;
-    config.port = target.udp_port;
-    config.acceleration = 4.0;
-    return std::make_shared<DigiViewBackend>(config);
+    config.link.port = target.udp_port;
+    config.digiview.acceleration = 4.0;
+    return makeDigiViewBackend(config);
   }
-  SerialBackendConfig serial;
-  serial.link.path = target.link;
-  serial.link.baud = target.baud;
+  LinkConfig link;
+  link.path = target.link;
+  link.baud = target.baud;
   if (target.backend == "flir")
   {
     FlirConfig config;
-    config.serial = serial;
-    return std::make_shared<FlirBackend>(config);
+    config.link = link;
+    return makeFlirBackend(config);
   }
   if (target.backend == "pelco_d")
   {
     PelcoConfig config;
-    config.serial = serial;
-    return std::make_shared<PelcoBackend>(config);
+    config.link = link;
+    return makePelcoBackend(config);
   }
   SimDeviceConfig device = SimDeviceConfig::defaults();
   for (Axis axis : { PAN, TILT })
@@ -609,15 +609,15 @@ int main(int argc, char** argv)
   const double byte_time = 10.0 / baud;
   if (backend == "pantilt_udp")
   {
-    cr::pantilt::PanTiltUdpDeviceConfig config;
+    PanTiltEmulatorConfig config;
     config.port = target.udp_port;
-    cr::pantilt::PanTiltUdpDevice device(config);
+    PanTiltEmulator device(config);
     ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
     status = runDeviceClients(
         "pantilt_udp",
         [&device] {
           std::vector<Arrival> arrivals;
-          for (const cr::pantilt::ReceivedDatagram& datagram : device.received())
+          for (const ReceivedDatagram& datagram : device.received())
           {
             if (!datagram.bytes.empty() && datagram.bytes[0] != cr::pantilt::PARAMS_HEADER)
             {
@@ -630,9 +630,9 @@ int main(int argc, char** argv)
   }
   else if (backend == "digiview")
   {
-    DigiViewDeviceConfig config;
+    DigiViewEmulatorConfig config;
     config.port = target.udp_port;
-    DigiViewDevice device(config);
+    DigiViewEmulator device(config);
     ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
     status = runDeviceClients(
         "digiview",
@@ -652,10 +652,10 @@ int main(int argc, char** argv)
   }
   else if (backend == "flir")
   {
-    FlirPtuDeviceConfig config;
+    FlirPtuEmulatorConfig config;
     config.port.link = target.link;
     config.port.baud = baud;
-    FlirPtuDevice device(config);
+    FlirPtuEmulator device(config);
     ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
     status = runDeviceClients(
         "serial flir at " + std::to_string(baud) + " baud",
@@ -674,10 +674,10 @@ int main(int argc, char** argv)
   }
   else if (backend == "pelco_d")
   {
-    PelcoDDeviceConfig config;
+    PelcoDEmulatorConfig config;
     config.port.link = target.link;
     config.port.baud = baud;
-    PelcoDDevice device(config);
+    PelcoDEmulator device(config);
     ros::init(argc, argv, "ptz_bench", ros::init_options::AnonymousName);
     status = runDeviceClients(
         "serial pelco_d at " + std::to_string(baud) + " baud",

@@ -3,7 +3,8 @@
 
 #include <pluginlib/class_list_macros.hpp>
 
-#include "ptz_action_server/core/digiview/digiview_backend.h"
+#include "plugin_params.h"
+#include "ptz_action_server/core/digiview/digiview_protocol.h"
 #include "ptz_action_server/ros/backend_plugin.h"
 
 namespace ptz_action_server
@@ -15,29 +16,29 @@ public:
   std::shared_ptr<PtzBackend> create(const ParamReader& params, const BackendContext& context) override
   {
     DigiViewConfig config;
-    config.host = params.text("host", config.host);
-    config.port = static_cast<std::uint16_t>(params.integer("port", config.port, 1, 65535));
-    config.transport =
-        params.choice("transport", "tcp", { "tcp", "udp" }) == "tcp" ? DigiViewTransport::TCP : DigiViewTransport::UDP;
-    config.stream_name = params.text("stream_name", config.stream_name);
-    if (config.stream_name.empty() || config.stream_name.size() > digiview::NAME_SIZE)
+    LinkConfig& link = config.link;
+    link.host = params.text("host", link.host);
+    link.port = static_cast<std::uint16_t>(params.integer("port", link.port, 1, 65535));
+    link.kind = params.choice("transport", "tcp", { "tcp", "udp" }) == "tcp" ? LinkKind::TCP : LinkKind::UDP;
+    readReconnect(params, link);
+    config.session.state_timeout = params.number("state_timeout", config.session.state_timeout, 0.15, 60.0);
+    readSessionTiming(params, config.session);
+
+    DigiViewSettings& digiview = config.digiview;
+    digiview.stream_name = params.text("stream_name", digiview.stream_name);
+    if (digiview.stream_name.empty() || digiview.stream_name.size() > digiview::NAME_SIZE)
     {
       throw ConfigError("parameter " + params.resolve("stream_name") + " must have 1 to 8 characters");
     }
-    config.cam_id = static_cast<std::uint8_t>(params.integer("cam_id", config.cam_id, 0, 3));
-    config.fov_wide = params.number("fov_wide", config.fov_wide, 0.1, 3.14);
-    config.zoom_max = params.number("zoom_max", config.zoom_max, 0.0, 1000.0);
-    config.lock_flags = static_cast<std::uint8_t>(params.integer("lock_flags", config.lock_flags, 0, 7));
-    config.crop_mode = static_cast<std::uint8_t>(params.integer("crop_mode", config.crop_mode, 0, 2));
-    config.slew_rate = params.number("slew_rate", config.slew_rate, 1e-3, 100.0);
-    config.acceleration = params.number("acceleration", config.acceleration, 0.0, 1e4);
-    config.state_timeout = params.number("state_timeout", config.state_timeout, 0.15, 60.0);
-    config.velocity_period = params.number("velocity_period", config.velocity_period, 0.02, 5.0);
-    config.settle_window = params.number("settle_window", config.settle_window, 0.0, 5.0);
-    config.startup_timeout = params.number("startup_timeout", config.startup_timeout, 0.1, 600.0);
-    config.reconnect_min = params.number("reconnect_min", config.reconnect_min, 0.01, 10.0);
-    config.reconnect_max = params.number("reconnect_max", config.reconnect_max, config.reconnect_min, 60.0);
-    return std::make_shared<DigiViewBackend>(config, context.clock);
+    digiview.cam_id = static_cast<std::uint8_t>(params.integer("cam_id", digiview.cam_id, 0, 3));
+    digiview.fov_wide = params.number("fov_wide", digiview.fov_wide, 0.1, 3.14);
+    digiview.zoom_max = params.number("zoom_max", digiview.zoom_max, 0.0, 1000.0);
+    digiview.lock_flags = static_cast<std::uint8_t>(params.integer("lock_flags", digiview.lock_flags, 0, 7));
+    digiview.crop_mode = static_cast<std::uint8_t>(params.integer("crop_mode", digiview.crop_mode, 0, 2));
+    digiview.slew_rate = params.number("slew_rate", digiview.slew_rate, 1e-3, 100.0);
+    digiview.acceleration = params.number("acceleration", digiview.acceleration, 0.0, 1e4);
+    digiview.velocity_period = params.number("velocity_period", digiview.velocity_period, 0.02, 5.0);
+    return makeDigiViewBackend(config, context.clock);
   }
 };
 

@@ -17,7 +17,7 @@
 #include <boost/asio/write.hpp>
 
 #include "ptz_action_server/core/digiview/digiview_backend.h"
-#include "ptz_action_server/core/digiview/digiview_device.h"
+#include "ptz_action_server/emulators/digiview_emulator.h"
 #include "ptz_action_server/core/goal_monitor.h"
 
 using namespace ptz_action_server;
@@ -25,7 +25,7 @@ using namespace ptz_action_server::digiview;
 
 namespace
 {
-DigiViewConfig backendConfig(const DigiViewDevice& device, DigiViewTransport transport = DigiViewTransport::TCP)
+DigiViewConfig backendConfig(const DigiViewEmulator& device, DigiViewTransport transport = DigiViewTransport::TCP)
 {
   DigiViewConfig config;
   config.port = device.port();
@@ -35,7 +35,7 @@ DigiViewConfig backendConfig(const DigiViewDevice& device, DigiViewTransport tra
   return config;
 }
 
-bool received(const DigiViewDevice& device, MessageType type, digiview::ParamType param)
+bool received(const DigiViewEmulator& device, MessageType type, digiview::ParamType param)
 {
   for (const ReceivedMessage& item : device.received())
   {
@@ -52,9 +52,9 @@ class DigiViewTest : public ::testing::TestWithParam<DigiViewTransport>
 protected:
   void SetUp() override
   {
-    DigiViewDeviceConfig config;
+    DigiViewEmulatorConfig config;
     config.transport = GetParam();
-    device_ = std::make_unique<DigiViewDevice>(config);
+    device_ = std::make_unique<DigiViewEmulator>(config);
     backend_ = std::make_unique<DigiViewBackend>(backendConfig(*device_, GetParam()));
     backend_->start();
     ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, 2.0));
@@ -67,7 +67,7 @@ protected:
            std::abs(sample.position[TILT] - tilt) < 2e-3 && std::abs(sample.position[ZOOM] - zoom) < 0.01;
   }
 
-  std::unique_ptr<DigiViewDevice> device_;
+  std::unique_ptr<DigiViewEmulator> device_;
   std::unique_ptr<DigiViewBackend> backend_;
 };
 }  // namespace
@@ -202,7 +202,7 @@ INSTANTIATE_TEST_SUITE_P(Transports, DigiViewTest, ::testing::Values(DigiViewTra
 
 TEST(DigiViewConnection, ADroppedConnectionIsReopenedAndQuitIsSentAtShutdown)
 {
-  DigiViewDevice device(DigiViewDeviceConfig{});
+  DigiViewEmulator device(DigiViewEmulatorConfig{});
   {
     DigiViewBackend backend(backendConfig(device));
     backend.start();
@@ -222,9 +222,9 @@ TEST(DigiViewConnection, ADroppedConnectionIsReopenedAndQuitIsSentAtShutdown)
 
 TEST(DigiViewConnection, ACameraTheStreamDoesNotHaveFailsAtStart)
 {
-  DigiViewDeviceConfig device_config;
+  DigiViewEmulatorConfig device_config;
   device_config.layout_mode = 0;  // one user view
-  DigiViewDevice device(device_config);
+  DigiViewEmulator device(device_config);
   DigiViewConfig config = backendConfig(device);
   config.cam_id = 1;
   DigiViewBackend backend(config);
@@ -243,7 +243,7 @@ TEST(DigiViewConnection, ACameraTheStreamDoesNotHaveFailsAtStart)
 
 TEST(DigiViewEmulator, AnswersLikeDigiView)
 {
-  DigiViewDevice device(DigiViewDeviceConfig{});
+  DigiViewEmulator device(DigiViewEmulatorConfig{});
   boost::asio::io_context context;
   boost::asio::ip::tcp::socket socket(context);
   socket.connect(boost::asio::ip::tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), device.port()));

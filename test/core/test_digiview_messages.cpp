@@ -4,7 +4,7 @@
 #include <cstring>
 #include <string>
 
-#include "ptz_action_server/core/digiview/messages.h"
+#include "ptz_action_server/core/digiview/digiview_codec.h"
 
 using namespace ptz_action_server::digiview;
 

@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "ptz_action_server/core/pantilt/pantilt.h"
-#include "ptz_action_server/core/pantilt/sim_pantilt.h"
+#include "ptz_action_server/core/pantilt/pantilt_codec.h"
+#include "ptz_action_server/emulators/sim_pantilt.h"
 
 using namespace cr::pantilt;
 using Bytes = std::vector<std::uint8_t>;

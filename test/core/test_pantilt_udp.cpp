@@ -12,7 +12,7 @@
 
 #include "ptz_action_server/core/goal_monitor.h"
 #include "ptz_action_server/core/pantilt/pantilt_udp_backend.h"
-#include "ptz_action_server/core/pantilt/pantilt_udp_device.h"
+#include "ptz_action_server/emulators/pantilt_emulator.h"
 
 using namespace ptz_action_server;
 using namespace cr::pantilt;
@@ -21,7 +21,7 @@ using Bytes = std::vector<std::uint8_t>;
 namespace
 {
 /// The frames the device received that are not state requests (params frames).
-std::vector<Bytes> commandsReceived(const PanTiltUdpDevice& device)
+std::vector<Bytes> commandsReceived(const PanTiltEmulator& device)
 {
   std::vector<Bytes> commands;
   for (const ReceivedDatagram& datagram : device.received())
@@ -61,10 +61,10 @@ class PanTiltUdpTest : public ::testing::TestWithParam<WireVersion>
 protected:
   void SetUp() override
   {
-    PanTiltUdpDeviceConfig device_config;
+    PanTiltEmulatorConfig device_config;
     device_config.version = GetParam();
     device_config.state_period = 0.05;
-    device_ = std::make_unique<PanTiltUdpDevice>(device_config);
+    device_ = std::make_unique<PanTiltEmulator>(device_config);
     PanTiltUdpConfig config;
     config.version = GetParam();
     config.device_port = device_->endpoint().port();
@@ -85,7 +85,7 @@ protected:
         timeout);
   }
 
-  std::unique_ptr<PanTiltUdpDevice> device_;
+  std::unique_ptr<PanTiltEmulator> device_;
   std::unique_ptr<PanTiltUdpBackend> backend_;
 };
 }  // namespace

@@ -17,9 +17,9 @@
 
 #include "ptz_action_server/core/goal_monitor.h"
 #include "ptz_action_server/core/serial/flir_backend.h"
-#include "ptz_action_server/core/serial/flir_device.h"
+#include "ptz_action_server/emulators/flir_ptu_emulator.h"
 #include "ptz_action_server/core/serial/pelco_backend.h"
-#include "ptz_action_server/core/serial/pelco_device.h"
+#include "ptz_action_server/emulators/pelco_d_emulator.h"
 
 using namespace ptz_action_server;
 
@@ -85,10 +85,10 @@ protected:
   {
     backend_.reset();
     device_.reset();
-    FlirPtuDeviceConfig device_config;
+    FlirPtuEmulatorConfig device_config;
     device_config.port.link = uniqueLink("flir");
     device_config.port.baud = baud;
-    device_ = std::make_unique<FlirPtuDevice>(device_config);
+    device_ = std::make_unique<FlirPtuEmulator>(device_config);
     FlirConfig config;
     config.serial = serialConfig(device_config.port.link, baud);
     backend_ = std::make_unique<FlirBackend>(config);
@@ -108,7 +108,7 @@ protected:
     return false;
   }
 
-  std::unique_ptr<FlirPtuDevice> device_;
+  std::unique_ptr<FlirPtuEmulator> device_;
   std::unique_ptr<FlirBackend> backend_;
 };
 
@@ -284,12 +284,12 @@ class PelcoTest : public ::testing::TestWithParam<pelco::TiltEncoding>
 protected:
   void SetUp() override
   {
-    PelcoDDeviceConfig device_config;
+    PelcoDEmulatorConfig device_config;
     device_config.port.link = uniqueLink("pelco");
     device_config.port.baud = 9600;
     device_config.address = 7;
     device_config.tilt_encoding = GetParam();
-    device_ = std::make_unique<PelcoDDevice>(device_config);
+    device_ = std::make_unique<PelcoDEmulator>(device_config);
     PelcoConfig config;
     config.serial = serialConfig(device_config.port.link, 9600);
     config.address = 7;
@@ -320,7 +320,7 @@ protected:
            std::abs(sample.position[TILT] - tilt) < 2e-3 && std::abs(sample.position[ZOOM] - zoom) < 0.01;
   }
 
-  std::unique_ptr<PelcoDDevice> device_;
+  std::unique_ptr<PelcoDEmulator> device_;
   std::unique_ptr<PelcoBackend> backend_;
 };
 
@@ -414,10 +414,10 @@ INSTANTIATE_TEST_SUITE_P(TiltEncodings, PelcoTest,
 
 TEST(PelcoGeneralReplies, CommandsAreAcknowledged)
 {
-  PelcoDDeviceConfig device_config;
+  PelcoDEmulatorConfig device_config;
   device_config.port.link = uniqueLink("pelco_general");
   device_config.general_reply = true;
-  PelcoDDevice device(device_config);
+  PelcoDEmulator device(device_config);
   PelcoConfig config;
   config.serial = serialConfig(device_config.port.link, 9600);
   config.general_reply = true;

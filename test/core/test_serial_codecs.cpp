@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "ptz_action_server/core/serial/flir_codec.h"
-#include "ptz_action_server/core/serial/pelco_d.h"
+#include "ptz_action_server/core/flir/flir_codec.h"
+#include "ptz_action_server/core/pelco_d/pelco_d_codec.h"
 
 using namespace ptz_action_server;
 using Bytes = std::vector<std::uint8_t>;
@@ -205,6 +205,7 @@ TEST(FlirReplies, ClassifiesTerseVerboseEchoedAndUnexpectedLines)
     { "!T", Kind::LIMIT, 0.0, "" },
     { "Pan-Tilt Controller v3.4.3 (C)2010", Kind::TEXT, 0.0, "Pan-Tilt Controller v3.4.3 (C)2010" },
     { "Initializing...", Kind::TEXT, 0.0, "Initializing..." },
+    { "Initializing...*", Kind::TEXT, 0.0, "Initializing...*" },  // E-series on TCP: ready, but no reply
   };
   for (const Case& item : cases)
   {

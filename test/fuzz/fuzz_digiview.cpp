@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "ptz_action_server/core/digiview/messages.h"
+#include "ptz_action_server/core/digiview/digiview_codec.h"
 
 using namespace ptz_action_server::digiview;
 

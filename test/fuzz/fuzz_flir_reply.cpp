@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "ptz_action_server/core/serial/flir_codec.h"
+#include "ptz_action_server/core/flir/flir_codec.h"
 
 using ptz_action_server::flir::Reply;
 using ptz_action_server::flir::ReplyParser;

@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "ptz_action_server/core/pantilt/pantilt.h"
+#include "ptz_action_server/core/pantilt/pantilt_codec.h"
 
 using namespace cr::pantilt;
 

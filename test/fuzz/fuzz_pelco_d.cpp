@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "ptz_action_server/core/serial/pelco_d.h"
+#include "ptz_action_server/core/pelco_d/pelco_d_codec.h"
 
 using namespace ptz_action_server::pelco;
 

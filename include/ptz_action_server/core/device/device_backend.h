@@ -1,0 +1,81 @@
+/**
+ * \file
+ * \brief The PtzBackend of every device: a DeviceProtocol run by a DeviceSession.
+ */
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ptz_action_server/core/backend.h"
+#include "ptz_action_server/core/device/device_protocol.h"
+#include "ptz_action_server/core/device/device_session.h"
+
+namespace ptz_action_server
+{
+/**
+ * \brief A device backend: the session does the I/O and the bookkeeping, the protocol the talking.
+ *
+ * Every command is queued to the session's I/O thread, where the protocol encodes it; sample() and the other
+ * accessors read the session's snapshot. Adding a device means writing a DeviceProtocol (and its codec), not a
+ * backend.
+ */
+class DeviceBackend : public PtzBackend
+{
+public:
+  using ProtocolFactory = std::function<std::unique_ptr<DeviceProtocol>(DeviceSession&)>;
+
+  /// Builds the session on \p link, then the protocol over it with \p make_protocol.
+  DeviceBackend(const LinkConfig& link, const DeviceSessionConfig& config, const ProtocolFactory& make_protocol,
+                std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
+  /// Stops the I/O thread (after the protocol's last words) before the protocol goes.
+  ~DeviceBackend() override;
+
+  std::string name() const override
+  {
+    return protocol_->name();
+  }
+  Capabilities capabilities() const override
+  {
+    return session_->capabilities();
+  }
+  void start() override
+  {
+    session_->start();
+  }
+  void goTo(const AxisValues& position) override;
+  void moveAtVelocity(const AxisValues& velocity) override;
+  void stop() override;
+  PtzSample sample() const override
+  {
+    return session_->sample();
+  }
+  std::string lastFault() const override
+  {
+    return session_->lastFault();
+  }
+  std::string lastLinkLoss() const override
+  {
+    return session_->lastLinkLoss();
+  }
+  void diagnostics(std::vector<DiagnosticValue>& values) const override;
+
+  const DeviceSession& session() const
+  {
+    return *session_;
+  }
+  /// The protocol, for tests and tools that read its counters. Throws std::bad_cast for another protocol.
+  template <class Protocol>
+  const Protocol& protocol() const
+  {
+    return dynamic_cast<const Protocol&>(*protocol_);
+  }
+
+private:
+  std::unique_ptr<DeviceSession> session_;
+  std::unique_ptr<DeviceProtocol> protocol_;  ///< after session_: destroyed first, while the session's context lives
+};
+
+}  // namespace ptz_action_server

@@ -1,0 +1,210 @@
+/**
+ * \file
+ * \brief The device session every device backend shares: I/O thread, link, state snapshot, link supervision,
+ * start-up wait and recovery. Protocols only add a codec and a small policy (DeviceProtocol).
+ */
+#pragma once
+
+#include <condition_variable>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/steady_timer.hpp>
+
+#include "ptz_action_server/core/backend.h"
+#include "ptz_action_server/core/counter.h"
+#include "ptz_action_server/core/motion_estimator.h"
+#include "ptz_action_server/core/transport/link.h"
+
+namespace ptz_action_server
+{
+class DeviceProtocol;
+
+/// How a session supervises its device. Every backend fills one from its parameters.
+struct DeviceSessionConfig
+{
+  double state_timeout = 0.5;     ///< s without a valid state report before the link counts as lost
+  double poll_period = 0.05;      ///< s between the protocol's poll() calls and the link checks
+  double startup_timeout = 10.0;  ///< s start() waits for the device
+  double settle_window = 0.1;     ///< s a still position must last to count as settled
+  double shutdown_grace = 0.5;    ///< s the destructor waits for the protocol's last words to go out
+};
+
+/// What a session counts beyond its link.
+struct DeviceSessionCounters
+{
+  Counter state_reports;  ///< valid states the protocol reported
+  Counter link_losses;    ///< the link went down after being up (closed, vanished or silent past the deadline)
+  Counter recoveries;     ///< the device answered again after a loss and was held where it was
+  Counter faults;         ///< refusals of the current command
+  Counter stale_faults;   ///< refusals of a command the node had already replaced: counted, not reported
+};
+
+/**
+ * \brief Owns the I/O thread, the link and the state of one device; runs a DeviceProtocol over them.
+ *
+ * Two audiences, two sets of calls:
+ * - DeviceBackend (any thread): start(), stop(), command(), sample(), capabilities(), lastFault(), lastLinkLoss(),
+ *   diagnostics(). None of them waits on I/O (start() waits, with a deadline, for the device to be ready).
+ * - The protocol (I/O thread only): write(), reportState(), reportAlive(), reportFault(), ready(), ...
+ *
+ * The link is up while the link is open, the protocol has said ready() since it opened, and a valid state came
+ * within state_timeout. Every transition from up to down counts a loss (PtzSample::link_losses) with its reason.
+ * When the device answers again after a loss, the protocol's hold() runs once, in the same I/O-thread handler that
+ * brings the link up: any command the node sends once it sees the link up runs after it, so the recovery never
+ * overrides a fresh goal.
+ */
+class DeviceSession : private Link::Listener
+{
+public:
+  DeviceSession(const LinkConfig& link, const DeviceSessionConfig& config, std::shared_ptr<const Clock> clock);
+  ~DeviceSession() override;
+  DeviceSession(const DeviceSession&) = delete;
+  DeviceSession& operator=(const DeviceSession&) = delete;
+
+  /// Binds the protocol (once, before start()); takes its initial capabilities.
+  void attach(DeviceProtocol& protocol);
+
+  // ---------------------------------------------------------------- for the backend: any thread
+
+  /// Starts the I/O thread and opens the link, then waits until the device is ready and its link up. Throws
+  /// BackendError naming the device, the link and the reason when it is not within startup_timeout.
+  void start();
+  /// Lets the protocol say goodbye (shutdown()), closes the link and joins the I/O thread. Idempotent.
+  void stop();
+  /// Runs \p work (one of the protocol's commands) on the I/O thread, after every earlier command. From then on,
+  /// faults reported for earlier commands no longer count.
+  void command(std::function<void()> work);
+
+  PtzSample sample() const;
+  Capabilities capabilities() const;
+  std::string lastFault() const;
+  std::string lastLinkLoss() const;
+  /// The link's and the session's figures (the protocol adds its own).
+  void diagnostics(std::vector<DiagnosticValue>& values) const;
+  const DeviceSessionCounters& counters() const
+  {
+    return counters_;
+  }
+  const DeviceSessionConfig& config() const
+  {
+    return config_;
+  }
+  const LinkCounters& linkCounters() const
+  {
+    return link_->counters();
+  }
+  const LinkConfig& linkConfig() const
+  {
+    return link_->config();
+  }
+
+  // ---------------------------------------------------------------- for the protocol: I/O thread only
+
+  boost::asio::io_context& context()
+  {
+    return context_;
+  }
+  TimePoint now() const
+  {
+    return clock_->now();
+  }
+  const Clock& clock() const
+  {
+    return *clock_;
+  }
+  bool connected() const
+  {
+    return link_->isOpen();
+  }
+  bool carriesDatagrams() const
+  {
+    return link_->carriesDatagrams();
+  }
+  void write(const std::uint8_t* data, std::size_t size)
+  {
+    link_->write(data, size);
+  }
+  void write(const std::string& bytes)
+  {
+    link_->write(bytes);
+  }
+  /// Gives up on this connection (it reopens after the link's backoff).
+  void disconnect(const std::string& reason)
+  {
+    link_->disconnect(reason);
+  }
+
+  /// A valid state from the device: keeps the link alive and feeds the motion estimate (pan, tilt rad; zoom X).
+  void reportState(const AxisValues& position);
+  /// A valid answer that carries no state: keeps the link alive.
+  void reportAlive();
+  /// The device refused or failed a request sent for command \p command (see currentCommand()). Counts as a fault
+  /// only if no newer command has been given since.
+  void reportFault(const std::string& text, std::uint64_t command);
+  /// The serial number of the command being run; tag requests with it to report their faults.
+  std::uint64_t currentCommand() const
+  {
+    return command_serial_;
+  }
+  /// The latest state estimate (position, velocity, moving), whatever the link.
+  PtzSample estimate() const;
+  /// What the protocol learnt of the device (limits, speeds).
+  void setCapabilities(const Capabilities& capabilities);
+  /// The protocol knows the device on this connection (its set-up is done): the link may count as up.
+  void ready();
+  /// The device cannot be used as configured (e.g. a camera it does not have): start() fails with \p reason.
+  void failStartup(const std::string& reason);
+
+private:
+  void onLinkUp() override;
+  void onLinkBytes(const std::uint8_t* data, std::size_t size) override;
+  void onLinkDown(const std::string& reason) override;
+
+  void tick();
+  /// Counts a loss if the link was up and is not any more (call with mutex_ held).
+  void checkLinkLocked(TimePoint now) const;
+  bool linkUpLocked(TimePoint now) const;
+  /// Brings the link up if it now is, and runs the recovery once after a loss (I/O thread, mutex_ not held).
+  void refreshLink();
+  void recordLossLocked(const std::string& reason) const;
+  void finishStop();
+
+  const DeviceSessionConfig config_;
+  const std::shared_ptr<const Clock> clock_;
+  boost::asio::io_context context_;
+  std::unique_ptr<Link> link_;  ///< after context_: its handlers live on it
+  boost::asio::steady_timer tick_timer_;
+  boost::asio::steady_timer grace_timer_;
+  DeviceProtocol* protocol_ = nullptr;
+  std::thread thread_;
+
+  // I/O thread only.
+  std::uint64_t command_serial_ = 0;
+
+  // Shared; guarded by mutex_. Mutable: sample() notices a silent link and counts the loss itself.
+  mutable std::mutex mutex_;
+  std::condition_variable startup_changed_;
+  Capabilities capabilities_;
+  bool connected_ = false;
+  bool ready_ = false;         ///< the protocol's set-up is done on this connection
+  TimePoint last_state_at_{};  ///< the last valid report on this connection
+  bool has_state_ = false;     ///< a valid report arrived on this connection
+  mutable bool link_was_up_ = false;
+  bool ever_up_ = false;
+  mutable bool recovery_owed_ = false;  ///< a loss happened: hold the device when it answers again
+  mutable std::string last_link_loss_;
+  std::string startup_problem_;
+  MotionEstimator motion_;
+  AxisValues last_position_{ { 0.0, 0.0, 1.0 } };
+  std::uint64_t fault_count_ = 0;
+  std::string last_fault_;
+  mutable DeviceSessionCounters counters_;
+};
+
+}  // namespace ptz_action_server

@@ -1,0 +1,85 @@
+/**
+ * \file
+ * \brief Request/reply bookkeeping for protocols that answer requests in order (FLIR, Pelco-D, VISCA).
+ */
+#pragma once
+
+#include <deque>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/steady_timer.hpp>
+
+#include "ptz_action_server/core/transport/link.h"
+#include "ptz_action_server/core/types.h"
+
+namespace ptz_action_server
+{
+/// The reply deadline of an exchange of \p exchange_bytes (request and reply): \p configured if > 0, else the
+/// exchange's time on the wire plus 50 ms.
+double replyTimeout(const LinkConfig& link, double configured, std::size_t exchange_bytes);
+
+/**
+ * \brief One request on the wire at a time, so a reply never needs guessing which request it answers.
+ *
+ * Requests wait in a queue; an urgent request (a halt) goes out at once and is answered after the one already on
+ * the wire. A request without a reply in time is dropped (on_timeout runs), and replies are then ignored for a drain
+ * time, so a late reply cannot be taken for the next request's. Everything runs on the I/O thread of \p context;
+ * time is \p clock's, so tests can drive it.
+ */
+class TransactionChannel
+{
+public:
+  struct Request
+  {
+    std::string bytes;
+    int tag = 0;                ///< what the protocol asked, to interpret the reply
+    bool expects_reply = true;  ///< false: written and forgotten
+    std::uint64_t command = 0;  ///< the node command it serves (DeviceSession::currentCommand()), for its faults
+  };
+  using Writer = std::function<void(const std::string& bytes)>;
+
+  /// \p write sends bytes; \p on_timeout runs (I/O thread) for a request without a reply within \p reply_timeout s.
+  TransactionChannel(boost::asio::io_context& context, const Clock& clock, Writer write, double reply_timeout,
+                     std::function<void(const Request&)> on_timeout);
+
+  /// Queues a request (sent when the wire is free). A request without reply, with nothing queued ahead of it, goes
+  /// out at once.
+  void queue(Request request);
+  /// Sends now, ahead of the queue.
+  void sendUrgent(Request request);
+  /// Drops the queued (not yet sent) requests.
+  void clearQueue();
+  /// Forgets everything (after a reconnect).
+  void reset();
+
+  /// A reply arrived: the request it answers, or nothing (none outstanding, or draining after a timeout).
+  std::optional<Request> complete();
+  std::size_t queued() const
+  {
+    return queue_.size();
+  }
+  std::uint64_t lateReplies() const
+  {
+    return late_replies_;
+  }
+
+private:
+  void pump();
+  void send(const Request& request);
+  void armTimer();
+
+  const Clock& clock_;
+  Writer write_;
+  const double reply_timeout_;
+  std::function<void(const Request&)> on_timeout_;
+  boost::asio::steady_timer timer_;
+  std::deque<Request> queue_;
+  std::deque<Request> outstanding_;  ///< on the wire, oldest first
+  TimePoint drain_until_{};
+  std::uint64_t late_replies_ = 0;
+};
+
+}  // namespace ptz_action_server

@@ -1,0 +1,142 @@
+/**
+ * \file
+ * \brief The digiview backend: Ptz goals aim a DigiView (Synclair Vision) user-controllable virtual camera.
+ */
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <deque>
+#include <memory>
+
+#include <boost/asio/steady_timer.hpp>
+
+#include "ptz_action_server/core/device/device_backend.h"
+#include "ptz_action_server/core/digiview/digiview_codec.h"
+
+namespace ptz_action_server
+{
+/// What only the DigiView protocol needs to know.
+struct DigiViewSettings
+{
+  std::string stream_name = "main";
+  std::uint8_t cam_id = 0;
+  double fov_wide = 1.2;        ///< rad: the field of view that zoom 1x maps to (fov = fov_wide / X)
+  double zoom_max = 0.0;        ///< X; 0: fov_wide / 0.1 (DigiView's narrowest field of view)
+  std::uint8_t lock_flags = 0;  ///< 0: the view follows the vehicle on every axis, so yaw and pitch are the base's
+  std::uint8_t crop_mode = 1;
+  double slew_rate = 1.0;        ///< rad/s DigiView turns a view at (for velocity goals and goal timeouts)
+  double acceleration = 0.0;     ///< rad/s^2 of that turn; 0: unknown (instant)
+  double velocity_period = 0.1;  ///< s between the targets of a velocity goal
+
+  /// fov_wide / 0.1 unless zoom_max says otherwise.
+  double zoomMax() const;
+  digiview::CameraId camera() const
+  {
+    return digiview::CameraId{ stream_name, cam_id };
+  }
+};
+
+/// Everything a DigiView backend is built from.
+struct DigiViewConfig
+{
+  DigiViewConfig()
+  {
+    link.kind = LinkKind::TCP;
+    link.port = 5500;
+    link.reconnect_min = 0.1;
+  }
+  LinkConfig link;  ///< tcp (the default: a connection, which QUIT closes) or udp (one message per datagram)
+  /// No CURRENT_PARAMETERS of the view for 0.5 s drops the link (they come every 100 ms).
+  DeviceSessionConfig session{ 0.5, 0.1, 10.0, 0.25, 0.5 };
+  DigiViewSettings digiview;
+};
+
+struct DigiViewCounters
+{
+  Counter messages;
+  Counter states;  ///< CURRENT_PARAMETERS of our camera
+  Counter acknowledged;
+  Counter refused;             ///< CHECKSUM_ERROR, DATA_ERROR, FORBIDDEN, UNKNOWN replies
+  std::array<Counter, 7> bad;  ///< messages dropped, by UnpackError
+};
+
+/**
+ * \brief Aims one DigiView user view (stream_name, cam_id) like a pan-tilt-zoom camera, over a DeviceSession.
+ *
+ * Goals become SET CAM_TARGETING in directional mode (yaw = pan, pitch = tilt: DigiView's Tait-Bryan yaw is
+ * clockwise from north and its pitch positive up, the same signs as the contract) and SET CAM_OPTICS_AND_CONTROL
+ * (fov = fov_wide / zoom). DigiView has no velocity command: a velocity goal is a target moved every
+ * velocity_period. State comes from GET_INTERVAL subscriptions (100 ms) to CAM_TARGETING and
+ * CAM_OPTICS_AND_CONTROL. A SET that DigiView refuses is a device fault with DigiView's reason. After a loss the
+ * view is held where it is; at shutdown the subscriptions are cancelled and QUIT is sent.
+ */
+class DigiViewProtocol : public DeviceProtocol
+{
+public:
+  DigiViewProtocol(const DigiViewSettings& settings, DeviceSession& session);
+
+  std::string name() const override
+  {
+    return "digiview";
+  }
+  std::string deviceName() const override;
+  Capabilities capabilities() const override;
+  void onConnected() override;
+  void onReceived(const std::uint8_t* data, std::size_t size) override;
+  void onDisconnected() override;
+  void poll() override;
+  void goTo(const AxisValues& position) override;
+  void moveAtVelocity(const AxisValues& velocity) override;
+  void stop() override;
+  void hold() override;
+  void shutdown() override;
+  void diagnostics(std::vector<DiagnosticValue>& values) const override;
+
+  const DigiViewCounters& counters() const
+  {
+    return counters_;
+  }
+
+private:
+  /// A SET awaiting DigiView's answer, and the command it served.
+  struct PendingSet
+  {
+    digiview::ParamType param;
+    std::uint64_t command;
+  };
+
+  /// Describe the stream, report the view every 100 ms.
+  void subscribe();
+  void handle(const std::uint8_t* bytes, std::size_t size);
+  void handleState(const digiview::Message& message);
+  void handleAnswer(const digiview::Message& message);
+  void send(const digiview::Message& message);
+  void sendTargets(const AxisValues& target);
+  void velocityTick();
+
+  const DigiViewSettings settings_;
+  DeviceSession& session_;
+  boost::asio::steady_timer velocity_timer_;
+  DigiViewCounters counters_;
+  std::atomic<std::uint8_t> num_user_views_{ 0 };
+  std::atomic<std::uint8_t> system_status_{ 0 };
+
+  // I/O thread only.
+  bool described_ = false;  ///< VIDEO_OUTPUT of the stream arrived on this connection
+  bool targeted_ = false;   ///< CAM_TARGETING of the view arrived on this connection
+  std::array<std::uint8_t, 2 * digiview::MESSAGE_SIZE> stream_buffer_{};
+  std::size_t buffered_ = 0;
+  std::deque<PendingSet> pending_sets_;  ///< oldest first
+  TimePoint heard_at_{};                 ///< the last state of the view, or the last subscription
+  AxisValues reported_{ { 0.0, 0.0, 1.0 } };
+  AxisValues velocity_{};
+  AxisValues velocity_origin_{};
+  TimePoint velocity_started_{};
+};
+
+/// A digiview backend: DigiViewProtocol on a DeviceSession.
+std::unique_ptr<DeviceBackend>
+makeDigiViewBackend(const DigiViewConfig& config, std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
+
+}  // namespace ptz_action_server

@@ -1,0 +1,132 @@
+/**
+ * \file
+ * \brief FLIR (Directed Perception) D46 / E46 pan-tilt units, on a serial port or (E-series) TCP port 4000.
+ */
+#pragma once
+
+#include <memory>
+
+#include "ptz_action_server/core/device/device_backend.h"
+#include "ptz_action_server/core/device/transaction_channel.h"
+#include "ptz_action_server/core/flir/flir_codec.h"
+
+namespace ptz_action_server
+{
+/// What only the FLIR protocol needs to know.
+struct FlirSettings
+{
+  double pan_speed = 1.5;       ///< rad/s of position goals (PS); capped by the unit's upper speed (PU)
+  double tilt_speed = 1.0;      ///< rad/s (TS)
+  double acceleration = 3.0;    ///< rad/s^2, for goal timeouts
+  double reply_timeout = 0.0;   ///< s for one reply; 0: the exchange's wire time plus 50 ms
+  double banner_timeout = 3.0;  ///< tcp: s to wait for the per-connection banner before the set-up goes out anyway
+};
+
+/// Everything a FLIR backend is built from.
+struct FlirConfig
+{
+  LinkConfig link;  ///< serial (D46, E46) or tcp (E-series, port 4000)
+  /// A missing reply for 0.25 s drops the link; the position is polled every 50 ms.
+  DeviceSessionConfig session{ 0.25, 0.05, 10.0, 0.1, 0.5 };
+  FlirSettings flir;
+};
+
+/// Counters for diagnostics.
+struct FlirCounters
+{
+  Counter replies;
+  Counter errors;           ///< `!` replies to commands
+  Counter limit_hits;       ///< `!P` / `!T`
+  Counter unexpected_text;  ///< banners, echoes, noise
+  Counter timeouts;         ///< requests without a reply in time
+  Counter late_replies;     ///< replies ignored after a timeout
+};
+
+/**
+ * \brief The FLIR PTU ASCII protocol over a DeviceSession.
+ *
+ * At every (re)connection (after the banner, on TCP): terse mode, echo off, position mode (`FT ED CI`), then the
+ * resolutions (`PR`/`TR`), the position limits (`PN`/`PX`/`TN`/`TX`) and upper speeds (`PU`/`TU`) are read from the
+ * unit. Position goals are `PS TS PP TP`, velocity goals switch to velocity mode (`CV`) and set signed `PS TS`,
+ * cancel is `H`. The position is polled (`PP`, `TP`) whenever the line is free, so PtzState reads a cache and never
+ * waits on the wire. The unit's counter-clockwise pan is inverted to the contract's clockwise pan. A `!` reply to a
+ * command is a device fault (the goal aborts with the unit's message); `!P` / `!T` and unexpected text are counted.
+ */
+class FlirProtocol : public DeviceProtocol
+{
+public:
+  FlirProtocol(const FlirSettings& settings, DeviceSession& session);
+
+  std::string name() const override
+  {
+    return "serial/flir";
+  }
+  std::string deviceName() const override
+  {
+    return "a FLIR PTU";
+  }
+  Capabilities capabilities() const override;
+  void onConnected() override;
+  void onReceived(const std::uint8_t* data, std::size_t size) override;
+  void onDisconnected() override;
+  void poll() override;
+  void goTo(const AxisValues& position) override;
+  void moveAtVelocity(const AxisValues& velocity) override;
+  void stop() override;
+  void diagnostics(std::vector<DiagnosticValue>& values) const override;
+
+  const FlirCounters& counters() const
+  {
+    return counters_;
+  }
+
+private:
+  /// What a request asked, to interpret its reply.
+  enum Tag
+  {
+    SETUP,           ///< FT, ED, CI: acknowledged
+    PAN_RESOLUTION,  ///< PR
+    TILT_RESOLUTION,
+    PAN_MIN,  ///< PN
+    PAN_MAX,
+    TILT_MIN,
+    TILT_MAX,
+    PAN_SPEED_MAX,  ///< PU
+    TILT_SPEED_MAX,
+    PAN_POSITION,  ///< PP query
+    TILT_POSITION,
+    COMMAND,  ///< anything acknowledged with *
+  };
+
+  void handleReply(const flir::Reply& reply);
+  void handleAnswer(const TransactionChannel::Request& request, const flir::Reply& reply);
+  void onTimeout(const TransactionChannel::Request& lost);
+  void queueSetup();
+  void request(const std::string& text, Tag tag);
+  /// Drops what is queued of the previous command (and a pending poll): the new command goes next.
+  void replaceCommand();
+  Capabilities unitCapabilities() const;
+
+  const FlirSettings settings_;
+  DeviceSession& session_;
+  TransactionChannel channel_;
+  flir::ReplyParser parser_;
+  boost::asio::steady_timer banner_timer_;
+  FlirCounters counters_;
+
+  // I/O thread only.
+  bool awaiting_banner_ = false;
+  bool ready_ = false;  ///< the set-up of this connection is complete
+  bool poll_pending_ = false;
+  double polled_pan_ = 0.0;      ///< rad, from the last PP
+  double pan_resolution_ = 0.0;  ///< rad per position
+  double tilt_resolution_ = 0.0;
+  long limits_[4] = { 0, 0, 0, 0 };  ///< PN, PX, TN, TX (positions)
+  long speed_max_[2] = { 0, 0 };     ///< PU, TU (positions/s)
+};
+
+/// A FLIR backend: FlirProtocol on a DeviceSession.
+std::unique_ptr<DeviceBackend> makeFlirBackend(const FlirConfig& config,
+                                               std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
+
+}  // namespace ptz_action_server

@@ -1,0 +1,115 @@
+/**
+ * \file
+ * \brief The pantilt_udp backend: the node is the control system, a PanTilt device controller sits across UDP.
+ */
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <memory>
+
+#include "ptz_action_server/core/device/device_backend.h"
+#include "ptz_action_server/core/pantilt/pantilt_codec.h"
+
+namespace ptz_action_server
+{
+/// What only the PanTilt protocol needs to know.
+struct PanTiltSettings
+{
+  cr::pantilt::WireVersion version = cr::pantilt::WireVersion::V1_0;
+  double state_request_period = 0.2;  ///< s between state requests while no frames arrive
+  double pan_speed = 100.0;           ///< % of the max speed for position goals
+  double tilt_speed = 100.0;          ///< %
+  /// Pan and tilt ranges (rad), max speeds at 100 % (rad/s) and accelerations (rad/s^2). Zoom: none.
+  std::array<AxisCapability, 2> axes{ { { true, { -M_PI, M_PI }, 1.5, 3.0 },
+                                        { true, { -M_PI / 2.0, M_PI / 2.0 }, 1.0, 3.0 } } };
+};
+
+/// Everything a PanTilt backend is built from.
+struct PanTiltConfig
+{
+  PanTiltConfig()
+  {
+    link.kind = LinkKind::UDP;
+    link.port = 5000;
+  }
+  LinkConfig link;  ///< udp: the device controller's address; local_host/local_port where its frames arrive
+  /// No valid params frame for 0.5 s drops the link; positions 50 ms apart that agree mean "settled".
+  DeviceSessionConfig session{ 0.5, 0.05, 10.0, 0.05, 0.5 };
+  PanTiltSettings pantilt;
+};
+
+/// Why datagrams from the device were dropped; each is counted under exactly one reason. (Datagrams from anyone
+/// else are the link's `foreign_datagrams`.)
+struct PanTiltCounters
+{
+  Counter frames_ok;
+  Counter bad_size;
+  Counter bad_header;
+  Counter bad_version;
+  Counter bad_mask;
+
+  std::uint64_t dropped() const
+  {
+    return bad_size + bad_header + bad_version + bad_mask;
+  }
+};
+
+/**
+ * \brief PanTilt over a DeviceSession on UDP.
+ *
+ * Goals become SET_PARAM (speeds, angles in degrees) + COMMAND GO_TO_PAN_TILT_ANGLE frames (1.1: one COMMAND with
+ * the angles as arguments); velocity goals become MOVE_PAN_TILT in 1.1 and, in 1.0, which has no velocity command,
+ * a speed setting plus a move towards the limit; cancel becomes STOP. State comes from the device's params frames
+ * (see PanTiltUdpDevice for the reporting rules), asked for while the device is quiet. After a loss the device is
+ * held with STOP and the speeds are set again.
+ */
+class PanTiltProtocol : public DeviceProtocol
+{
+public:
+  PanTiltProtocol(const PanTiltSettings& settings, DeviceSession& session);
+
+  std::string name() const override
+  {
+    return "pantilt_udp";
+  }
+  std::string deviceName() const override
+  {
+    return "a PanTilt device controller";
+  }
+  Capabilities capabilities() const override;
+  void onConnected() override;
+  void onReceived(const std::uint8_t* data, std::size_t size) override;
+  void poll() override;
+  void goTo(const AxisValues& position) override;
+  void moveAtVelocity(const AxisValues& velocity) override;
+  void stop() override;
+  void hold() override;
+  void diagnostics(std::vector<DiagnosticValue>& values) const override;
+
+  const PanTiltCounters& counters() const
+  {
+    return counters_;
+  }
+
+private:
+  void sendSetParam(cr::pantilt::PanTiltParam id, double value);
+  void sendCommand(cr::pantilt::PanTiltCommand id, double arg1 = 0.0, double arg2 = 0.0);
+  void sendSpeeds();
+  void sendStateRequest();
+
+  const PanTiltSettings settings_;
+  DeviceSession& session_;
+  PanTiltCounters counters_;
+
+  // I/O thread only.
+  bool heard_ = false;  ///< a valid frame arrived since the socket opened
+  TimePoint last_frame_at_{};
+  TimePoint last_request_at_{};
+};
+
+/// A pantilt_udp backend: PanTiltProtocol on a DeviceSession.
+std::unique_ptr<DeviceBackend> makePanTiltBackend(const PanTiltConfig& config,
+                                                  std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
+
+}  // namespace ptz_action_server

@@ -1,0 +1,117 @@
+/**
+ * \file
+ * \brief PTZ cameras that speak Pelco-D, on RS-485 or behind a serial-to-Ethernet server (TCP).
+ */
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <memory>
+
+#include "ptz_action_server/core/device/device_backend.h"
+#include "ptz_action_server/core/device/transaction_channel.h"
+#include "ptz_action_server/core/pelco_d/pelco_d_codec.h"
+
+namespace ptz_action_server
+{
+/// What only the Pelco-D protocol needs to know.
+struct PelcoSettings
+{
+  std::uint8_t address = 1;
+  pelco::TiltEncoding tilt_encoding = pelco::TiltEncoding::WRAP;
+  bool general_reply = false;  ///< the device acknowledges commands with 4-byte general replies
+  /// Ranges (rad, X), speed at 0x3F (rad/s; zoom: X/s) and acceleration (for timeouts) of each axis.
+  std::array<AxisCapability, AXIS_COUNT> axes{ { { true, { -M_PI, M_PI }, 1.5, 3.0 },
+                                                 { true, { -M_PI / 2.0, M_PI / 2.0 }, 1.0, 3.0 },
+                                                 { true, { 1.0, 24.0 }, 8.0, 0.0 } } };
+  std::uint16_t zoom_position_max = 0xFFFF;  ///< the zoom position value at the longest focal length
+  double reply_timeout = 0.0;                ///< s for one reply; 0: the exchange's wire time plus 50 ms
+
+  /// Zoom X-factor <-> the device's zoom position value.
+  std::uint16_t zoomToPosition(double zoom) const;
+  double positionToZoom(std::uint16_t position) const;
+};
+
+/// Everything a Pelco-D backend is built from.
+struct PelcoConfig
+{
+  LinkConfig link;  ///< serial, or tcp to a serial-to-Ethernet server
+  DeviceSessionConfig session{ 0.25, 0.05, 10.0, 0.1, 0.5 };
+  PelcoSettings pelco;
+};
+
+struct PelcoCounters
+{
+  Counter frames;             ///< valid frames and general replies for our address
+  Counter bad_checksum;       ///< dropped: a 0xFF whose frame did not check
+  Counter skipped_bytes;      ///< dropped: bytes outside frames
+  Counter wrong_address;      ///< dropped: frames for another address
+  Counter unexpected_frames;  ///< valid frames that answer nothing asked
+  Counter timeouts;
+  Counter late_replies;
+};
+
+/**
+ * \brief Pelco-D over a DeviceSession.
+ *
+ * Goals become the extended absolute commands (0x4B pan, 0x4D tilt, 0x4F zoom), velocity goals the standard
+ * movement command with speeds 0..0x3F, cancel the all-zero stop frame. The position is polled (0x51, 0x53, 0x55,
+ * answered by 0x59, 0x5B, 0x5D). Frames with a bad checksum and partial frames are dropped with a counter; the
+ * reader resynchronises on 0xFF. Pan is clockwise from home, as the contract's. Pelco-D has no error replies.
+ */
+class PelcoProtocol : public DeviceProtocol
+{
+public:
+  PelcoProtocol(const PelcoSettings& settings, DeviceSession& session);
+
+  std::string name() const override
+  {
+    return "serial/pelco_d";
+  }
+  std::string deviceName() const override;
+  Capabilities capabilities() const override;
+  void onConnected() override;
+  void onReceived(const std::uint8_t* data, std::size_t size) override;
+  void onDisconnected() override;
+  void poll() override;
+  void goTo(const AxisValues& position) override;
+  void moveAtVelocity(const AxisValues& velocity) override;
+  void stop() override;
+  void diagnostics(std::vector<DiagnosticValue>& values) const override;
+
+  const PelcoCounters& counters() const
+  {
+    return counters_;
+  }
+
+private:
+  enum Tag
+  {
+    QUERY_PAN,
+    QUERY_TILT,
+    QUERY_ZOOM,
+    COMMAND,  ///< acknowledged by a general reply (when the device sends them)
+  };
+
+  void handle(const pelco::FrameParser::Event& event);
+  void queueFrame(const pelco::Frame& frame, Tag tag);
+  void replaceCommand();
+  void updateParserCounters();
+
+  const PelcoSettings settings_;
+  DeviceSession& session_;
+  TransactionChannel channel_;
+  pelco::FrameParser parser_;
+  PelcoCounters counters_;
+
+  // I/O thread only.
+  int polls_pending_ = 0;
+  AxisValues polled_{ { 0.0, 0.0, 1.0 } };
+  std::vector<pelco::FrameParser::Event> events_;  ///< reused for every read
+};
+
+/// A Pelco-D backend: PelcoProtocol on a DeviceSession.
+std::unique_ptr<DeviceBackend> makePelcoBackend(const PelcoConfig& config,
+                                                std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
+
+}  // namespace ptz_action_server

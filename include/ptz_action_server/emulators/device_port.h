@@ -1,0 +1,107 @@
+/**
+ * \file
+ * \brief The device end of an emulator's line: a pseudo-terminal paced at a baud rate, or a TCP server (a unit on
+ * Ethernet, or a serial device behind a serial-to-Ethernet server). Faults on demand.
+ */
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <random>
+#include <string>
+
+#include "ptz_action_server/core/types.h"
+
+namespace ptz_action_server
+{
+struct DevicePortConfig
+{
+  enum class Kind
+  {
+    PTY,  ///< a pseudo-terminal (a serial line)
+    TCP,  ///< a TCP server; one client at a time, a new one replaces the old
+  };
+  Kind kind = Kind::PTY;
+  /// pty: keep this symlink pointing at the current pseudo-terminal (so an unplug/replug keeps one path, like udev).
+  /// Empty: no link; use path().
+  std::string link;
+  /// pty: open this existing tty instead of creating a pseudo-terminal (no unplug/replug then).
+  std::string tty;
+  unsigned baud = 9600;            ///< pty: bytes are paced at 10 bits each (8N1), as a real line does
+  std::string host = "127.0.0.1";  ///< tcp: where to listen
+  std::uint16_t port = 0;          ///< tcp: 0 = any free port (see tcpPort())
+  double tick_period = 0.05;       ///< s between tick handler calls, for devices that report on their own
+};
+
+/**
+ * \brief One end of a line to a client. Owns its I/O thread; the handlers run on it.
+ *
+ * Faults (any thread): silent (input ignored, nothing sent), garbled output bytes, unplug (the port closes; a
+ * pseudo-terminal's link disappears, a TCP server stops listening) and replug.
+ */
+class DevicePort
+{
+public:
+  /// Bytes from the client, and the time the last of them arrived.
+  using BytesHandler = std::function<void(const std::uint8_t* data, std::size_t size, TimePoint arrived_at)>;
+  struct Handlers
+  {
+    BytesHandler on_bytes;
+    std::function<void()> on_tick;     ///< every tick_period (optional)
+    std::function<void()> on_connect;  ///< tcp: a client connected (optional)
+  };
+
+  static std::unique_ptr<DevicePort> create(const DevicePortConfig& config, Handlers handlers);
+  virtual ~DevicePort() = default;
+
+  /// Starts the I/O thread (call once the handlers can run).
+  virtual void start() = 0;
+  /// What a client opens: the pseudo-terminal's path (or link), or "host:port".
+  virtual std::string path() const = 0;
+  /// tcp: the port clients connect to; 0 for a pseudo-terminal.
+  virtual std::uint16_t tcpPort() const
+  {
+    return 0;
+  }
+  /// Seconds one byte takes on the wire (0 on TCP).
+  virtual double byteTime() const = 0;
+  /// Queues bytes for the client (paced on a pseudo-terminal). Any thread.
+  virtual void send(const std::uint8_t* data, std::size_t size) = 0;
+  void send(const std::string& text)
+  {
+    send(reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
+  }
+  /// The client sees its device vanish.
+  virtual void unplug() = 0;
+  /// The device is back (a new pseudo-terminal under the same link, or listening again on the same port).
+  virtual void replug() = 0;
+
+  void setSilent(bool silent)
+  {
+    silent_ = silent;
+  }
+  bool silent() const
+  {
+    return silent_;
+  }
+  void setGarbleRatio(double ratio);
+  std::uint64_t bytesGarbled() const
+  {
+    return bytes_garbled_;
+  }
+
+protected:
+  /// Replaces the configured share of \p bytes with random ones. One thread at a time.
+  void garble(std::uint8_t* bytes, std::size_t size);
+
+private:
+  std::atomic<bool> silent_{ false };
+  std::atomic<double> garble_ratio_{ 0.0 };
+  std::atomic<std::uint64_t> bytes_garbled_{ 0 };
+  std::mt19937 random_{ 4242 };
+};
+
+}  // namespace ptz_action_server

@@ -1,0 +1,126 @@
+/**
+ * \file
+ * \brief A DigiView emulator: answers the 0.5 messages over TCP or UDP, with virtual views that slew.
+ */
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <tuple>
+#include <vector>
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/ip/udp.hpp>
+
+#include "ptz_action_server/core/transport/link.h"
+#include "ptz_action_server/emulators/received_log.h"
+#include "ptz_action_server/core/digiview/digiview_codec.h"
+#include "ptz_action_server/core/sim_device_model.h"
+
+namespace ptz_action_server
+{
+struct DigiViewEmulatorConfig
+{
+  std::string host = "127.0.0.1";
+  std::uint16_t port = 0;              ///< 0: an ephemeral port (see port())
+  LinkKind transport = LinkKind::TCP;  ///< TCP or UDP
+  std::vector<std::string> streams{ "main" };
+  std::uint8_t layout_mode = 4;  ///< 4: four user views in a 2x2 grid
+  double slew_rate = 1.0;        ///< rad/s a view turns at
+  double acceleration = 4.0;     ///< rad/s^2
+  double fov_rate = 1.0;         ///< rad/s the field of view changes at
+  double initial_fov = 1.2;      ///< rad
+};
+
+/// A message as it reached the emulator.
+struct ReceivedMessage
+{
+  TimePoint at;
+  digiview::UnpackError error = digiview::UnpackError::NONE;
+  digiview::Message message;  ///< valid when error is NONE
+};
+
+/**
+ * \brief Behaves as DigiView does towards a PTZ client.
+ *
+ * ACKNOWLEDGEMENT for accepted SETs (CAM_TARGETING in directional mode, absolute or delta; CAM_OPTICS_AND_CONTROL),
+ * CURRENT_PARAMETERS for GETs (SYSTEM_STATUS, VIDEO_OUTPUT, CAM_TARGETING, CAM_OPTICS_AND_CONTROL), periodic
+ * CURRENT_PARAMETERS for GET_INTERVAL (at least 100 ms; 0 cancels; less is ignored), CHECKSUM_ERROR for a bad
+ * checksum, DATA_ERROR for data out of range, UNKNOWN for types it does not know or model, FORBIDDEN for SETs
+ * while told to refuse, and QUIT closes the connection. Requests about an unknown stream or camera are ignored,
+ * as the seed says. Owns its I/O thread.
+ */
+class DigiViewEmulator
+{
+public:
+  explicit DigiViewEmulator(const DigiViewEmulatorConfig& config);
+  ~DigiViewEmulator();
+  DigiViewEmulator(const DigiViewEmulator&) = delete;
+  DigiViewEmulator& operator=(const DigiViewEmulator&) = delete;
+
+  std::uint16_t port() const
+  {
+    return port_;
+  }
+
+  /// Silent: reads and ignores everything, sends nothing (subscriptions pause).
+  void setSilent(bool silent);
+  /// Refuse: every SET is answered FORBIDDEN.
+  void setRefuse(bool refuse);
+  /// Closes every TCP connection (the client sees the connection drop).
+  void dropConnections();
+
+  std::vector<ReceivedMessage> received() const;
+  void clearReceived();
+  bool waitForReceived(const std::function<bool(const ReceivedMessage&)>& predicate, double timeout) const;
+  std::size_t connections() const;
+
+  /// The view's state: yaw, pitch (rad) and field of view (rad, in the zoom slot). Throws for an unknown view.
+  PtzSample view(const std::string& stream, std::uint8_t cam_id) const;
+
+private:
+  struct Subscription;
+  struct Session;
+  using SessionPtr = std::shared_ptr<Session>;
+
+  void accept();
+  void readTcp(const SessionPtr& session);
+  void readUdp();
+  void handle(const SessionPtr& session, const std::uint8_t* bytes, std::size_t size);
+  void reply(const SessionPtr& session, const digiview::Message& message);
+  void writeNext(const SessionPtr& session);
+  void waitSubscription(const SessionPtr& session, const std::tuple<int, std::string, std::uint8_t>& key);
+  void closeSession(const SessionPtr& session);
+  void subscribe(const SessionPtr& session, const digiview::IntervalRequest& request);
+  /// CURRENT_PARAMETERS of \p param for \p camera, or false if there is no such view / param.
+  bool current(digiview::ParamType param, const digiview::CameraId& camera, digiview::Message& message);
+  SimDeviceModel* model(const digiview::CameraId& camera);
+  std::uint8_t numUserViews() const;
+
+  const DigiViewEmulatorConfig config_;
+  boost::asio::io_context context_;
+  boost::asio::ip::tcp::acceptor acceptor_;
+  boost::asio::ip::udp::socket udp_;
+  std::uint16_t port_ = 0;
+  std::array<std::uint8_t, 2048> udp_buffer_{};
+  boost::asio::ip::udp::endpoint udp_peer_;
+
+  std::atomic<bool> silent_{ false };
+  std::atomic<bool> refuse_{ false };
+
+  mutable std::mutex mutex_;  ///< guards the models and the session list
+  mutable std::map<std::pair<std::string, std::uint8_t>, SimDeviceModel> models_;  ///< mutable: sampling
+  ReceivedLog<ReceivedMessage> received_;
+  std::vector<SessionPtr> sessions_;
+  std::map<boost::asio::ip::udp::endpoint, SessionPtr> udp_sessions_;
+
+  std::thread thread_;
+};
+
+}  // namespace ptz_action_server

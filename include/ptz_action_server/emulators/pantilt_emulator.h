@@ -1,0 +1,136 @@
+/**
+ * \file
+ * \brief A PanTilt device controller on UDP: the emulator behind `pantilt_udp_device` and the backend's tests.
+ *
+ * State reporting, which the PanTilt protocol leaves open, is defined here:
+ * - every valid datagram (SET_PARAM, COMMAND or a params frame) is answered with a full params frame;
+ * - a params frame with an empty mask (`02 1 MINOR 00 00`) is the "state request": it changes nothing;
+ * - every state_period the device also sends a full params frame, unasked, to the last client that sent a valid
+ *   datagram.
+ * Invalid datagrams are counted by reason and dropped without a reply.
+ */
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <random>
+#include <thread>
+#include <vector>
+
+#include "ptz_action_server/emulators/sim_pantilt.h"
+#include "ptz_action_server/emulators/received_log.h"
+#include "ptz_action_server/emulators/udp_socket.h"
+
+namespace ptz_action_server
+{
+using cr::pantilt::SimPanTilt;
+using cr::pantilt::WireVersion;
+struct PanTiltEmulatorConfig
+{
+  std::string host = "127.0.0.1";
+  std::uint16_t port = 0;  ///< 0: an ephemeral port (see endpoint())
+  WireVersion version = WireVersion::V1_0;
+  double state_period = 0.1;  ///< s between unsolicited params frames (0: replies only)
+  SimDeviceConfig device = defaultDevice();
+
+  /// The sim defaults without zoom: a pan-tilt unit.
+  static SimDeviceConfig defaultDevice();
+};
+
+/// What the device has seen, for diagnostics and tests.
+struct PanTiltEmulatorCounters
+{
+  std::uint64_t commands_executed = 0;     ///< SET_PARAM and COMMAND frames decoded and executed
+  std::uint64_t commands_refused = 0;      ///< decoded, but the value or command was refused
+  std::uint64_t state_requests = 0;        ///< params frames received
+  std::array<std::uint64_t, 6> invalid{};  ///< indexed by DecodeError
+  std::uint64_t replies_sent = 0;
+  std::uint64_t dropped_by_fault = 0;  ///< datagrams ignored while silent, replies dropped on purpose
+};
+
+/// One datagram as it reached the device.
+struct ReceivedDatagram
+{
+  TimePoint at;
+  std::vector<std::uint8_t> bytes;
+};
+
+/**
+ * \brief Listens on UDP, executes what arrives on a SimPanTilt, and reports its params. Owns its I/O thread.
+ *
+ * Fault switches (any thread): silent (receive and do nothing, send nothing: an unplugged device), a ratio of
+ * replies dropped, and a reply delay.
+ */
+class PanTiltEmulator
+{
+public:
+  explicit PanTiltEmulator(const PanTiltEmulatorConfig& config,
+                           std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
+  ~PanTiltEmulator();
+  PanTiltEmulator(const PanTiltEmulator&) = delete;
+  PanTiltEmulator& operator=(const PanTiltEmulator&) = delete;
+
+  /// Where the device listens.
+  UdpEndpoint endpoint() const;
+
+  void setSilent(bool silent);
+  void setDropRatio(double ratio);
+  void setReplyDelay(double seconds);
+
+  /// The last datagrams that reached the device (at most 10000), oldest first.
+  std::vector<ReceivedDatagram> received() const;
+  void clearReceived();
+  /// Waits until at least \p count datagrams are in received(), or \p timeout s pass.
+  bool waitForReceived(std::size_t count, double timeout) const;
+
+  /// Sends raw bytes from the device's own socket (tests: garbage from the device's address).
+  void sendRaw(const UdpEndpoint& to, const std::uint8_t* data, std::size_t size);
+
+  PanTiltEmulatorCounters counters() const;
+  SimPanTilt& panTilt()
+  {
+    return pan_tilt_;
+  }
+
+private:
+  struct PendingReply
+  {
+    TimePoint send_at;
+    UdpEndpoint to;
+  };
+
+  void run();
+  void handleDatagram(const std::uint8_t* data, std::size_t size, const UdpEndpoint& from);
+  void reply(const UdpEndpoint& to, TimePoint now);
+  void sendState(const UdpEndpoint& to);
+  int millisecondsToNextEvent(TimePoint now) const;
+
+  const PanTiltEmulatorConfig config_;
+  const std::shared_ptr<const Clock> clock_;
+  SimPanTilt pan_tilt_;
+  UdpSocket socket_;
+
+  std::atomic<bool> running_{ true };
+  std::atomic<bool> silent_{ false };
+  std::atomic<double> drop_ratio_{ 0.0 };
+  std::atomic<double> reply_delay_{ 0.0 };
+
+  mutable std::mutex mutex_;  ///< guards the counters
+  ReceivedLog<ReceivedDatagram> received_;
+  PanTiltEmulatorCounters counters_;
+
+  // I/O thread only.
+  bool has_client_ = false;
+  UdpEndpoint last_client_;
+  TimePoint next_state_at_{};
+  std::deque<PendingReply> pending_replies_;
+  std::mt19937 random_{ 12345 };
+
+  std::thread thread_;  ///< last: starts after everything above exists
+};
+
+}  // namespace ptz_action_server

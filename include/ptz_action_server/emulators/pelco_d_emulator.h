@@ -1,0 +1,82 @@
+/**
+ * \file
+ * \brief A Pelco-D camera emulator on a pseudo-terminal, over the simulated motion model.
+ */
+#pragma once
+
+#include <condition_variable>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <vector>
+
+#include "ptz_action_server/core/pelco_d/pelco_d_codec.h"
+#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/received_log.h"
+
+namespace ptz_action_server
+{
+struct PelcoDEmulatorConfig
+{
+  DevicePortConfig port;  ///< a pseudo-terminal (RS-485), or a TCP server (a serial-to-Ethernet server)
+  std::uint8_t address = 1;
+  pelco::TiltEncoding tilt_encoding = pelco::TiltEncoding::WRAP;
+  bool general_reply = false;                            ///< answer every non-query command with a 4-byte general reply
+  SimDeviceConfig device = SimDeviceConfig::defaults();  ///< pan +-pi, tilt +-pi/2, zoom 1..24
+  std::uint16_t zoom_position_max = 0xFFFF;
+};
+
+/// A frame as it reached the device.
+struct ReceivedFrame
+{
+  TimePoint at;  ///< when its last byte had crossed the line
+  pelco::Frame frame;
+};
+
+/**
+ * \brief Speaks Pelco-D on a pseudo-terminal: stop, movement with speeds, the extended absolute position commands,
+ * position queries (answered with 0x59 / 0x5B / 0x5D) and presets. Frames for other addresses are ignored, frames
+ * with a bad checksum are counted and dropped.
+ */
+class PelcoDEmulator
+{
+public:
+  explicit PelcoDEmulator(const PelcoDEmulatorConfig& config);
+  ~PelcoDEmulator();
+
+  std::string path() const
+  {
+    return port_->path();
+  }
+  DevicePort& port()
+  {
+    return *port_;
+  }
+  void unplug();
+  void replug();
+
+  std::vector<ReceivedFrame> received() const;
+  void clearReceived();
+  bool waitForFrame(const std::function<bool(const ReceivedFrame&)>& predicate, double timeout) const;
+  pelco::ParserCounters parserCounters() const;
+
+  PtzSample sample() const;
+  void setFaults(const SimFaults& faults);
+
+private:
+  void onBytes(const std::uint8_t* data, std::size_t size, TimePoint arrived_at);
+  /// Executes a frame; returns the reply bytes (empty: none).
+  std::vector<std::uint8_t> execute(const pelco::Frame& frame, TimePoint at);
+
+  const PelcoDEmulatorConfig config_;
+  mutable std::mutex mutex_;
+  mutable SimDeviceModel model_;
+  pelco::FrameParser parser_;
+  ReceivedLog<ReceivedFrame> received_;
+  std::map<int, AxisValues> presets_;
+
+  std::unique_ptr<DevicePort> port_;  ///< last: its thread calls back into everything above
+};
+
+}  // namespace ptz_action_server

@@ -1,0 +1,316 @@
+#include "ptz_action_server/core/device/device_session.h"
+
+#include <boost/asio/post.hpp>
+
+#include "ptz_action_server/core/device/device_protocol.h"
+#include "ptz_action_server/core/text.h"
+#include "ptz_action_server/core/units.h"
+
+namespace ptz_action_server
+{
+DeviceSession::DeviceSession(const LinkConfig& link, const DeviceSessionConfig& config,
+                             std::shared_ptr<const Clock> clock)
+  : config_(config)
+  , clock_(std::move(clock))
+  , link_(Link::create(context_, link, *this))
+  , tick_timer_(context_)
+  , grace_timer_(context_)
+  , motion_(config.settle_window)
+{
+}
+
+DeviceSession::~DeviceSession()
+{
+  stop();
+}
+
+void DeviceSession::attach(DeviceProtocol& protocol)
+{
+  protocol_ = &protocol;
+  std::lock_guard<std::mutex> lock(mutex_);
+  capabilities_ = protocol.capabilities();
+}
+
+void DeviceSession::start()
+{
+  thread_ = std::thread([this] {
+    auto work = boost::asio::make_work_guard(context_);
+    context_.run();
+  });
+  boost::asio::post(context_, [this] {
+    link_->open();
+    tick();
+  });
+  std::unique_lock<std::mutex> lock(mutex_);
+  const bool settled = startup_changed_.wait_for(lock, toDuration(config_.startup_timeout),
+                                                 [this] { return ever_up_ || !startup_problem_.empty(); });
+  if (settled && startup_problem_.empty())
+  {
+    return;
+  }
+  const std::string problem = startup_problem_;
+  lock.unlock();
+  const std::string device = protocol_->deviceName() + " on " + link_->config().describe();
+  const std::string link_error = link_->lastError();
+  stop();
+  if (!problem.empty())
+  {
+    throw BackendError(device + ": " + problem);
+  }
+  throw BackendError(formatText("no answer from %s within %.1f s%s%s", device.c_str(), config_.startup_timeout,
+                                link_error.empty() ? "" : ": ", link_error.c_str()));
+}
+
+void DeviceSession::stop()
+{
+  if (!thread_.joinable())
+  {
+    return;
+  }
+  boost::asio::post(context_, [this] {
+    tick_timer_.cancel();
+    if (link_->isOpen())
+    {
+      protocol_->shutdown();
+    }
+    // Close once the last words are out, or after the grace time if the device does not take them.
+    link_->whenWritten([this] { finishStop(); });
+    grace_timer_.expires_after(toDuration(config_.shutdown_grace));
+    grace_timer_.async_wait([this](const boost::system::error_code& error) {
+      if (!error)
+      {
+        finishStop();
+      }
+    });
+  });
+  thread_.join();
+}
+
+void DeviceSession::finishStop()
+{
+  grace_timer_.cancel();
+  link_->close();
+  context_.stop();
+}
+
+void DeviceSession::command(std::function<void()> work)
+{
+  boost::asio::post(context_, [this, work = std::move(work)] {
+    ++command_serial_;
+    work();
+  });
+}
+
+PtzSample DeviceSession::sample() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const TimePoint now = clock_->now();
+  checkLinkLocked(now);
+  PtzSample sample;
+  sample.stamp = now;
+  sample.position = last_position_;
+  motion_.fill(sample);
+  sample.link_up = linkUpLocked(now);
+  sample.fault_count = fault_count_;
+  sample.link_losses = counters_.link_losses;
+  return sample;
+}
+
+PtzSample DeviceSession::estimate() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  PtzSample sample;
+  sample.stamp = clock_->now();
+  sample.position = last_position_;
+  motion_.fill(sample);
+  return sample;
+}
+
+Capabilities DeviceSession::capabilities() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return capabilities_;
+}
+
+std::string DeviceSession::lastFault() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return last_fault_;
+}
+
+std::string DeviceSession::lastLinkLoss() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  checkLinkLocked(clock_->now());
+  return last_link_loss_;
+}
+
+void DeviceSession::diagnostics(std::vector<DiagnosticValue>& values) const
+{
+  link_->diagnostics(values);
+  values.emplace_back("state reports", std::to_string(counters_.state_reports));
+  values.emplace_back("link losses", std::to_string(counters_.link_losses));
+  values.emplace_back("last link loss", lastLinkLoss());
+  values.emplace_back("recoveries (device held after a loss)", std::to_string(counters_.recoveries));
+  values.emplace_back("device faults", std::to_string(counters_.faults));
+  values.emplace_back("faults of replaced commands (ignored)", std::to_string(counters_.stale_faults));
+}
+
+void DeviceSession::setCapabilities(const Capabilities& capabilities)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  capabilities_ = capabilities;
+}
+
+void DeviceSession::reportState(const AxisValues& position)
+{
+  ++counters_.state_reports;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const TimePoint now = clock_->now();
+    checkLinkLocked(now);  // a report after a silence ends that silence as a loss first
+    last_state_at_ = now;
+    has_state_ = true;
+    last_position_ = position;
+    motion_.add(now, position);
+  }
+  refreshLink();
+}
+
+void DeviceSession::reportAlive()
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const TimePoint now = clock_->now();
+    checkLinkLocked(now);
+    last_state_at_ = now;
+    has_state_ = true;
+  }
+  refreshLink();
+}
+
+void DeviceSession::reportFault(const std::string& text, std::uint64_t command)
+{
+  if (command != command_serial_)
+  {
+    ++counters_.stale_faults;
+    return;
+  }
+  ++counters_.faults;
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++fault_count_;
+  last_fault_ = text;
+}
+
+void DeviceSession::ready()
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ready_ = true;
+  }
+  refreshLink();
+}
+
+void DeviceSession::failStartup(const std::string& reason)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  startup_problem_ = reason;
+  startup_changed_.notify_all();
+}
+
+void DeviceSession::onLinkUp()
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    connected_ = true;
+    ready_ = false;
+    has_state_ = false;
+    motion_.clear();  // old positions say nothing about the device behind a new connection
+  }
+  protocol_->onConnected();
+}
+
+void DeviceSession::onLinkBytes(const std::uint8_t* data, std::size_t size)
+{
+  protocol_->onReceived(data, size);
+}
+
+void DeviceSession::onLinkDown(const std::string& reason)
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (link_was_up_)
+    {
+      recordLossLocked(reason);
+    }
+    connected_ = false;
+    ready_ = false;
+    has_state_ = false;
+  }
+  protocol_->onDisconnected();
+}
+
+void DeviceSession::tick()
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    checkLinkLocked(clock_->now());
+  }
+  if (link_->isOpen())
+  {
+    protocol_->poll();
+  }
+  tick_timer_.expires_after(toDuration(config_.poll_period));
+  tick_timer_.async_wait([this](const boost::system::error_code& error) {
+    if (!error)
+    {
+      tick();
+    }
+  });
+}
+
+bool DeviceSession::linkUpLocked(TimePoint now) const
+{
+  return connected_ && ready_ && has_state_ && secondsBetween(last_state_at_, now) <= config_.state_timeout;
+}
+
+void DeviceSession::checkLinkLocked(TimePoint now) const
+{
+  if (link_was_up_ && !linkUpLocked(now))
+  {
+    recordLossLocked(formatText("no state from %s for %.2f s", protocol_->deviceName().c_str(), config_.state_timeout));
+  }
+}
+
+void DeviceSession::recordLossLocked(const std::string& reason) const
+{
+  link_was_up_ = false;
+  recovery_owed_ = true;
+  ++counters_.link_losses;
+  last_link_loss_ = reason;
+}
+
+void DeviceSession::refreshLink()
+{
+  bool recover = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (link_was_up_ || !linkUpLocked(clock_->now()))
+    {
+      return;
+    }
+    link_was_up_ = true;
+    ever_up_ = true;
+    recover = recovery_owed_;
+    recovery_owed_ = false;
+    startup_changed_.notify_all();
+  }
+  if (recover)
+  {
+    // Same handler as the report that brought the link up: no command the node sends on seeing it up can come first.
+    ++counters_.recoveries;
+    protocol_->hold();
+  }
+}
+
+}  // namespace ptz_action_server

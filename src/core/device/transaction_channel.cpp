@@ -1,0 +1,120 @@
+#include "ptz_action_server/core/device/transaction_channel.h"
+
+#include "ptz_action_server/core/units.h"
+
+namespace ptz_action_server
+{
+double replyTimeout(const LinkConfig& link, double configured, std::size_t exchange_bytes)
+{
+  return configured > 0.0 ? configured : link.wireTime(exchange_bytes) + 0.05;
+}
+
+TransactionChannel::TransactionChannel(boost::asio::io_context& context, const Clock& clock, Writer write,
+                                       double reply_timeout, std::function<void(const Request&)> on_timeout)
+  : clock_(clock)
+  , write_(std::move(write))
+  , reply_timeout_(reply_timeout)
+  , on_timeout_(std::move(on_timeout))
+  , timer_(context)
+{
+}
+
+void TransactionChannel::queue(Request request)
+{
+  if (!request.expects_reply && queue_.empty())
+  {
+    // Nothing to wait for and nothing ahead of it: a request without reply cannot confuse the matching.
+    send(request);
+    return;
+  }
+  queue_.push_back(std::move(request));
+  pump();
+}
+
+void TransactionChannel::sendUrgent(Request request)
+{
+  send(request);
+}
+
+void TransactionChannel::clearQueue()
+{
+  queue_.clear();
+}
+
+void TransactionChannel::reset()
+{
+  queue_.clear();
+  outstanding_.clear();
+  timer_.cancel();
+  drain_until_ = TimePoint{};
+}
+
+std::optional<TransactionChannel::Request> TransactionChannel::complete()
+{
+  if (clock_.now() < drain_until_ || outstanding_.empty())
+  {
+    ++late_replies_;
+    return std::nullopt;
+  }
+  Request answered = std::move(outstanding_.front());
+  outstanding_.pop_front();
+  armTimer();
+  pump();
+  return answered;
+}
+
+void TransactionChannel::pump()
+{
+  while (outstanding_.empty() && !queue_.empty() && clock_.now() >= drain_until_)
+  {
+    Request next = std::move(queue_.front());
+    queue_.pop_front();
+    send(next);
+  }
+}
+
+void TransactionChannel::send(const Request& request)
+{
+  write_(request.bytes);
+  if (request.expects_reply)
+  {
+    outstanding_.push_back(request);
+    if (outstanding_.size() == 1)
+    {
+      armTimer();
+    }
+  }
+}
+
+void TransactionChannel::armTimer()
+{
+  timer_.cancel();
+  if (outstanding_.empty())
+  {
+    return;
+  }
+  // The oldest request's reply is due reply_timeout from now: it went out now, or the one before it just answered
+  // (the device answers in order).
+  timer_.expires_after(toDuration(reply_timeout_));
+  timer_.async_wait([this](const boost::system::error_code& error) {
+    if (error || outstanding_.empty())
+    {
+      return;
+    }
+    const Request lost = outstanding_.front();
+    // Whatever is still on the wire may answer late: drop it all and ignore replies for a while.
+    outstanding_.clear();
+    drain_until_ = addSeconds(clock_.now(), reply_timeout_);
+    on_timeout_(lost);
+    // Resume once the drain time has passed.
+    timer_.expires_after(toDuration(reply_timeout_));
+    timer_.async_wait([this](const boost::system::error_code& drained) {
+      if (!drained)
+      {
+        pump();
+      }
+    });
+  });
+}
+
+}  // namespace ptz_action_server

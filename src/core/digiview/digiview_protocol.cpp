@@ -1,0 +1,355 @@
+#include "ptz_action_server/core/digiview/digiview_protocol.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "ptz_action_server/core/text.h"
+#include "ptz_action_server/core/units.h"
+
+namespace ptz_action_server
+{
+namespace
+{
+using namespace digiview;
+
+constexpr double NARROWEST_FOV = 0.1;  ///< rad, DigiView's smallest field of view
+constexpr std::uint32_t STATE_INTERVAL_MS = MIN_INTERVAL_MS;
+constexpr std::size_t MAX_PENDING_SETS = 64;
+constexpr double ZOOM_RATE = 2.0;  ///< X/s of velocity goals on zoom
+/// Three missed states: DigiView may have restarted (over UDP nothing else tells): subscribe again.
+constexpr double RESUBSCRIBE_AFTER = 3 * STATE_INTERVAL_MS / 1000.0;
+
+bool sameCamera(const CameraId& a, const CameraId& b)
+{
+  return a.stream_name == b.stream_name && a.cam_id == b.cam_id;
+}
+}  // namespace
+
+double DigiViewSettings::zoomMax() const
+{
+  return zoom_max > 0.0 ? zoom_max : fov_wide / NARROWEST_FOV;
+}
+
+DigiViewProtocol::DigiViewProtocol(const DigiViewSettings& settings, DeviceSession& session)
+  : settings_(settings), session_(session), velocity_timer_(session.context())
+{
+}
+
+std::string DigiViewProtocol::deviceName() const
+{
+  return formatText("DigiView view '%s' camera %u", settings_.stream_name.c_str(), settings_.cam_id);
+}
+
+Capabilities DigiViewProtocol::capabilities() const
+{
+  Capabilities capabilities;
+  capabilities.axes[PAN] = AxisCapability{ true, { -M_PI, M_PI }, settings_.slew_rate, settings_.acceleration };
+  capabilities.axes[TILT] =
+      AxisCapability{ true, { -M_PI / 2.0, M_PI / 2.0 }, settings_.slew_rate, settings_.acceleration };
+  capabilities.axes[ZOOM] = AxisCapability{ true, { 1.0, settings_.zoomMax() }, ZOOM_RATE, 0.0 };
+  return capabilities;
+}
+
+void DigiViewProtocol::onConnected()
+{
+  described_ = false;
+  targeted_ = false;
+  buffered_ = 0;
+  pending_sets_.clear();
+  subscribe();
+}
+
+void DigiViewProtocol::subscribe()
+{
+  heard_at_ = session_.now();
+  send(packGet(ParamType::VIDEO_OUTPUT, settings_.camera()));
+  send(packGet(ParamType::SYSTEM_STATUS, settings_.camera()));
+  for (ParamType param : { ParamType::CAM_TARGETING, ParamType::CAM_OPTICS_AND_CONTROL })
+  {
+    send(packGet(param, settings_.camera()));
+    send(packInterval(IntervalRequest{ param, settings_.camera(), STATE_INTERVAL_MS }));
+  }
+}
+
+void DigiViewProtocol::poll()
+{
+  if (secondsBetween(heard_at_, session_.now()) > RESUBSCRIBE_AFTER)
+  {
+    subscribe();
+  }
+}
+
+void DigiViewProtocol::onDisconnected()
+{
+  velocity_timer_.cancel();
+  pending_sets_.clear();
+}
+
+void DigiViewProtocol::onReceived(const std::uint8_t* data, std::size_t size)
+{
+  if (session_.carriesDatagrams())
+  {
+    handle(data, size);  // one message per datagram
+    return;
+  }
+  // A stream: cut it into 80-byte messages.
+  while (size > 0)
+  {
+    const std::size_t taken = std::min(size, MESSAGE_SIZE - buffered_);
+    std::copy(data, data + taken, stream_buffer_.begin() + buffered_);
+    buffered_ += taken;
+    data += taken;
+    size -= taken;
+    if (buffered_ == MESSAGE_SIZE)
+    {
+      buffered_ = 0;
+      handle(stream_buffer_.data(), MESSAGE_SIZE);
+    }
+  }
+}
+
+void DigiViewProtocol::handle(const std::uint8_t* bytes, std::size_t size)
+{
+  Message message;
+  const UnpackError error = Message::unpack(bytes, size, message);
+  ++counters_.messages;
+  if (error != UnpackError::NONE)
+  {
+    ++counters_.bad[static_cast<std::size_t>(error)];
+    return;
+  }
+  switch (message.message_type)
+  {
+    case MessageType::CURRENT_PARAMETERS:
+      handleState(message);
+      return;
+    case MessageType::ACKNOWLEDGEMENT:
+    case MessageType::CHECKSUM_ERROR:
+    case MessageType::DATA_ERROR:
+    case MessageType::FORBIDDEN:
+    case MessageType::UNKNOWN:
+      handleAnswer(message);
+      return;
+    case MessageType::QUIT:
+      session_.disconnect("DigiView sent QUIT");
+      return;
+    default:
+      return;
+  }
+}
+
+void DigiViewProtocol::handleState(const Message& message)
+{
+  if (message.param_type == ParamType::VIDEO_OUTPUT)
+  {
+    VideoOutput output;
+    if (unpackVideoOutput(message, output) == UnpackError::NONE && output.stream_name == settings_.stream_name)
+    {
+      num_user_views_ = output.num_user_views;
+      described_ = settings_.cam_id < output.num_user_views;
+      if (!described_)
+      {
+        session_.failStartup(formatText("stream '%s' has %u user view(s), so cam_id %u does not exist",
+                                        settings_.stream_name.c_str(), output.num_user_views, settings_.cam_id));
+      }
+    }
+  }
+  else if (message.param_type == ParamType::SYSTEM_STATUS)
+  {
+    SystemStatus status;
+    if (unpackSystemStatus(message, status) == UnpackError::NONE)
+    {
+      system_status_ = status.status;
+    }
+    return;
+  }
+  else if (message.param_type == ParamType::CAM_TARGETING)
+  {
+    CamTargeting targeting;
+    if (unpackTargeting(message, targeting) != UnpackError::NONE || !sameCamera(targeting.camera, settings_.camera()))
+    {
+      return;
+    }
+    reported_[PAN] = targeting.yaw;
+    reported_[TILT] = targeting.pitch;
+    targeted_ = true;
+    heard_at_ = session_.now();
+    ++counters_.states;
+    session_.reportState(reported_);
+  }
+  else if (message.param_type == ParamType::CAM_OPTICS_AND_CONTROL)
+  {
+    CamOpticsAndControl optics;
+    if (unpackOptics(message, optics) != UnpackError::NONE || !sameCamera(optics.camera, settings_.camera()) ||
+        !(optics.fov > 0.0))
+    {
+      return;
+    }
+    reported_[ZOOM] = settings_.fov_wide / optics.fov;
+    ++counters_.states;
+    session_.reportState(reported_);
+  }
+  if (described_ && targeted_)
+  {
+    session_.ready();
+  }
+}
+
+void DigiViewProtocol::handleAnswer(const Message& message)
+{
+  const auto set = std::find_if(pending_sets_.begin(), pending_sets_.end(),
+                                [&message](const PendingSet& pending) { return pending.param == message.param_type; });
+  const bool answers_a_set = set != pending_sets_.end();
+  const std::uint64_t command = answers_a_set ? set->command : 0;
+  if (answers_a_set)
+  {
+    pending_sets_.erase(set);
+  }
+  if (message.message_type == MessageType::ACKNOWLEDGEMENT)
+  {
+    ++counters_.acknowledged;
+    return;
+  }
+  ++counters_.refused;
+  if (answers_a_set)
+  {
+    session_.reportFault(formatText("DigiView refused SET %s: %s (%s)", toString(message.param_type),
+                                    toString(message.message_type), describeError(message.message_type)),
+                         command);
+  }
+}
+
+void DigiViewProtocol::send(const Message& message)
+{
+  Message stamped = message;
+  stamped.timestamp = static_cast<std::uint64_t>(
+      std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count());
+  if (message.message_type == MessageType::SET_PARAMETERS && session_.connected())
+  {
+    if (pending_sets_.size() >= MAX_PENDING_SETS)
+    {
+      pending_sets_.pop_front();  // never answered: forget the oldest
+    }
+    pending_sets_.push_back(PendingSet{ message.param_type, session_.currentCommand() });
+  }
+  const Bytes bytes = stamped.pack();
+  session_.write(bytes.data(), bytes.size());
+}
+
+void DigiViewProtocol::sendTargets(const AxisValues& target)
+{
+  CamTargeting targeting;
+  targeting.camera = settings_.camera();
+  targeting.targeting_mode = 0;  // directional
+  targeting.yaw = target[PAN];
+  targeting.pitch = target[TILT];
+  targeting.lock_flags = settings_.lock_flags;
+  send(packTargeting(MessageType::SET_PARAMETERS, targeting));
+  CamOpticsAndControl optics;
+  optics.camera = settings_.camera();
+  optics.fov = settings_.fov_wide / std::clamp(target[ZOOM], 1.0, settings_.zoomMax());
+  optics.crop_mode = settings_.crop_mode;
+  send(packOptics(MessageType::SET_PARAMETERS, optics));
+}
+
+void DigiViewProtocol::goTo(const AxisValues& position)
+{
+  velocity_timer_.cancel();
+  sendTargets(position);
+}
+
+void DigiViewProtocol::moveAtVelocity(const AxisValues& velocity)
+{
+  if (std::all_of(velocity.begin(), velocity.end(), [](double value) { return value == 0.0; }))
+  {
+    stop();
+    return;
+  }
+  velocity_origin_ = session_.estimate().position;
+  velocity_ = velocity;
+  velocity_started_ = session_.now();
+  velocity_timer_.cancel();
+  velocityTick();
+}
+
+void DigiViewProtocol::velocityTick()
+{
+  // DigiView has no velocity command: the target moves on from where the view was, at the asked rate.
+  const double elapsed = secondsBetween(velocity_started_, session_.now());
+  const Capabilities limits = capabilities();
+  AxisValues target{};
+  for (Axis axis : ALL_AXES)
+  {
+    const AxisRange& range = limits.axes[axis].range;
+    target[axis] = std::clamp(velocity_origin_[axis] + velocity_[axis] * elapsed, range.min, range.max);
+  }
+  sendTargets(target);
+  velocity_timer_.expires_after(toDuration(settings_.velocity_period));
+  velocity_timer_.async_wait([this](const boost::system::error_code& error) {
+    if (!error)
+    {
+      velocityTick();
+    }
+  });
+}
+
+void DigiViewProtocol::stop()
+{
+  velocity_timer_.cancel();
+  // Hold where the view would come to rest: where it is, plus its braking distance if the turn decelerates.
+  const PtzSample now = session_.estimate();
+  AxisValues hold = now.position;
+  if (settings_.acceleration > 0.0)
+  {
+    for (Axis axis : { PAN, TILT })
+    {
+      hold[axis] += now.velocity[axis] * std::abs(now.velocity[axis]) / (2.0 * settings_.acceleration);
+    }
+  }
+  sendTargets(hold);
+}
+
+void DigiViewProtocol::hold()
+{
+  // Back after a loss: whatever DigiView still does belongs to a goal that has ended. Hold the view where it is.
+  velocity_timer_.cancel();
+  sendTargets(session_.estimate().position);
+}
+
+void DigiViewProtocol::shutdown()
+{
+  velocity_timer_.cancel();
+  for (ParamType param : { ParamType::CAM_TARGETING, ParamType::CAM_OPTICS_AND_CONTROL })
+  {
+    send(packInterval(IntervalRequest{ param, settings_.camera(), 0 }));
+  }
+  send(packBare(MessageType::QUIT, ParamType::SYSTEM_STATUS));
+}
+
+void DigiViewProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
+{
+  values.emplace_back("view", formatText("stream '%s' camera %u of %u", settings_.stream_name.c_str(), settings_.cam_id,
+                                         num_user_views_.load()));
+  values.emplace_back("system status", std::to_string(system_status_.load()));
+  values.emplace_back("messages", std::to_string(counters_.messages));
+  values.emplace_back("states", std::to_string(counters_.states));
+  values.emplace_back("acknowledged", std::to_string(counters_.acknowledged));
+  values.emplace_back("refused", std::to_string(counters_.refused));
+  for (std::size_t index = 1; index < counters_.bad.size(); ++index)
+  {
+    values.emplace_back(std::string("dropped: ") + toString(static_cast<UnpackError>(index)),
+                        std::to_string(counters_.bad[index]));
+  }
+}
+
+std::unique_ptr<DeviceBackend> makeDigiViewBackend(const DigiViewConfig& config, std::shared_ptr<const Clock> clock)
+{
+  return std::make_unique<DeviceBackend>(
+      config.link, config.session,
+      [&config](DeviceSession& session) { return std::make_unique<DigiViewProtocol>(config.digiview, session); },
+      std::move(clock));
+}
+
+}  // namespace ptz_action_server

@@ -1,0 +1,190 @@
+#include "ptz_action_server/core/pantilt/pantilt_protocol.h"
+
+#include <algorithm>
+
+#include "ptz_action_server/core/units.h"
+
+namespace ptz_action_server
+{
+namespace
+{
+using cr::pantilt::DecodeError;
+using cr::pantilt::PanTilt;
+using cr::pantilt::PanTiltCommand;
+using cr::pantilt::PanTiltParam;
+using cr::pantilt::WireVersion;
+}  // namespace
+
+PanTiltProtocol::PanTiltProtocol(const PanTiltSettings& settings, DeviceSession& session)
+  : settings_(settings), session_(session)
+{
+}
+
+Capabilities PanTiltProtocol::capabilities() const
+{
+  Capabilities capabilities;
+  const double speed_share[] = { settings_.pan_speed / 100.0, settings_.tilt_speed / 100.0 };
+  for (Axis axis : { PAN, TILT })
+  {
+    capabilities.axes[axis] = settings_.axes[axis];
+    capabilities.axes[axis].max_speed *= speed_share[axis];
+  }
+  capabilities.axes[ZOOM].present = false;
+  capabilities.axes[ZOOM].range = AxisRange{ 1.0, 1.0 };
+  return capabilities;
+}
+
+void PanTiltProtocol::onConnected()
+{
+  heard_ = false;
+  sendStateRequest();
+  sendSpeeds();
+}
+
+void PanTiltProtocol::onReceived(const std::uint8_t* data, std::size_t size)
+{
+  DecodeError error = DecodeError::NONE;
+  cr::pantilt::PanTiltParams params;
+  if (!params.decode(data, static_cast<int>(size), settings_.version, &error))
+  {
+    switch (error)
+    {
+      case DecodeError::BAD_HEADER:
+        ++counters_.bad_header;
+        break;
+      case DecodeError::BAD_VERSION:
+        ++counters_.bad_version;
+        break;
+      case DecodeError::BAD_MASK:
+        ++counters_.bad_mask;
+        break;
+      default:
+        ++counters_.bad_size;
+        break;
+    }
+    return;
+  }
+  ++counters_.frames_ok;
+  heard_ = true;
+  last_frame_at_ = session_.now();
+  session_.ready();
+  session_.reportState(AxisValues{ { toRadians(params.panAngle), toRadians(params.tiltAngle), 1.0 } });
+}
+
+void PanTiltProtocol::poll()
+{
+  // Ask for state while the device is quiet (at start, or silent): its periodic frames make this unnecessary.
+  const TimePoint now = session_.now();
+  const bool quiet = !heard_ || secondsBetween(last_frame_at_, now) >= settings_.state_request_period;
+  if (quiet && secondsBetween(last_request_at_, now) >= settings_.state_request_period)
+  {
+    sendStateRequest();
+  }
+}
+
+void PanTiltProtocol::goTo(const AxisValues& position)
+{
+  sendSpeeds();
+  if (settings_.version == WireVersion::V1_1)
+  {
+    sendCommand(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, toDegrees(position[PAN]), toDegrees(position[TILT]));
+    return;
+  }
+  sendSetParam(PanTiltParam::PAN_ANGLE, toDegrees(position[PAN]));
+  sendSetParam(PanTiltParam::TILT_ANGLE, toDegrees(position[TILT]));
+  sendCommand(PanTiltCommand::GO_TO_PAN_TILT_ANGLE);
+}
+
+void PanTiltProtocol::moveAtVelocity(const AxisValues& velocity)
+{
+  const double percent[] = { 100.0 * velocity[PAN] / settings_.axes[PAN].max_speed,
+                             100.0 * velocity[TILT] / settings_.axes[TILT].max_speed };
+  if (settings_.version == WireVersion::V1_1)
+  {
+    sendCommand(PanTiltCommand::MOVE_PAN_TILT, percent[PAN], percent[TILT]);
+    return;
+  }
+  // 1.0 has no velocity command: move towards the limit at that speed. An axis at 0 holds where it is.
+  const PtzSample current = session_.estimate();
+  const PanTiltParam speed_param[] = { PanTiltParam::PAN_MOTOR_SPEED, PanTiltParam::TILT_MOTOR_SPEED };
+  const PanTiltParam angle_param[] = { PanTiltParam::PAN_ANGLE, PanTiltParam::TILT_ANGLE };
+  const double configured_speed[] = { settings_.pan_speed, settings_.tilt_speed };
+  for (Axis axis : { PAN, TILT })
+  {
+    const AxisRange& range = settings_.axes[axis].range;
+    const bool holds = velocity[axis] == 0.0;
+    const double target = holds ? current.position[axis] : (velocity[axis] > 0.0 ? range.max : range.min);
+    sendSetParam(speed_param[axis], holds ? configured_speed[axis] : std::min(100.0, std::abs(percent[axis])));
+    sendSetParam(angle_param[axis], toDegrees(target));
+  }
+  sendCommand(PanTiltCommand::GO_TO_PAN_TILT_ANGLE);
+}
+
+void PanTiltProtocol::stop()
+{
+  sendCommand(PanTiltCommand::STOP);
+}
+
+void PanTiltProtocol::hold()
+{
+  // Whatever the device was doing belongs to a goal that has ended; the next position goal runs at the set speeds.
+  sendCommand(PanTiltCommand::STOP);
+  sendSpeeds();
+}
+
+void PanTiltProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
+{
+  values.emplace_back("wire version", cr::pantilt::toString(settings_.version));
+  values.emplace_back("frames ok", std::to_string(counters_.frames_ok));
+  values.emplace_back("dropped: bad size", std::to_string(counters_.bad_size));
+  values.emplace_back("dropped: bad header", std::to_string(counters_.bad_header));
+  values.emplace_back("dropped: bad version", std::to_string(counters_.bad_version));
+  values.emplace_back("dropped: bad mask", std::to_string(counters_.bad_mask));
+}
+
+void PanTiltProtocol::sendSetParam(PanTiltParam id, double value)
+{
+  std::uint8_t frame[cr::pantilt::SET_PARAM_SIZE];
+  int size = 0;
+  if (PanTilt::encodeSetParamCommand(frame, size, id, static_cast<float>(value), settings_.version))
+  {
+    session_.write(frame, static_cast<std::size_t>(size));
+  }
+}
+
+void PanTiltProtocol::sendCommand(PanTiltCommand id, double arg1, double arg2)
+{
+  std::uint8_t frame[cr::pantilt::COMMAND_SIZE_V1_1];
+  int size = 0;
+  if (PanTilt::encodeCommand(frame, size, id, settings_.version, static_cast<float>(arg1), static_cast<float>(arg2)))
+  {
+    session_.write(frame, static_cast<std::size_t>(size));
+  }
+}
+
+void PanTiltProtocol::sendSpeeds()
+{
+  sendSetParam(PanTiltParam::PAN_MOTOR_SPEED, settings_.pan_speed);
+  sendSetParam(PanTiltParam::TILT_MOTOR_SPEED, settings_.tilt_speed);
+}
+
+void PanTiltProtocol::sendStateRequest()
+{
+  // A params frame with an empty mask asks for the device's params and changes nothing.
+  const cr::pantilt::PanTiltParamsMask empty = cr::pantilt::PanTiltParamsMask::none();
+  std::uint8_t frame[cr::pantilt::PARAMS_HEADER_SIZE];
+  int size = 0;
+  cr::pantilt::PanTiltParams().encode(frame, sizeof(frame), size, &empty, settings_.version);
+  last_request_at_ = session_.now();
+  session_.write(frame, static_cast<std::size_t>(size));
+}
+
+std::unique_ptr<DeviceBackend> makePanTiltBackend(const PanTiltConfig& config, std::shared_ptr<const Clock> clock)
+{
+  return std::make_unique<DeviceBackend>(
+      config.link, config.session,
+      [&config](DeviceSession& session) { return std::make_unique<PanTiltProtocol>(config.pantilt, session); },
+      std::move(clock));
+}
+
+}  // namespace ptz_action_server

@@ -1,0 +1,260 @@
+#include "ptz_action_server/core/pelco_d/pelco_d_protocol.h"
+
+#include <algorithm>
+
+#include "ptz_action_server/core/units.h"
+
+namespace ptz_action_server
+{
+namespace
+{
+/// A query and its reply: two frames.
+constexpr std::size_t EXCHANGE_BYTES = 2 * pelco::FRAME_SIZE;
+
+/// A speed (rad/s, X/s) as a Pelco speed byte 1..0x3F, signed; 0 stays 0.
+int speedByte(double speed, double max_speed)
+{
+  if (speed == 0.0 || !(max_speed > 0.0))
+  {
+    return 0;
+  }
+  const int magnitude = std::clamp(static_cast<int>(std::lround(std::abs(speed) / max_speed * pelco::MAX_SPEED)), 1,
+                                   static_cast<int>(pelco::MAX_SPEED));
+  return speed > 0.0 ? magnitude : -magnitude;
+}
+
+int direction(double value)
+{
+  return value > 0.0 ? 1 : (value < 0.0 ? -1 : 0);
+}
+}  // namespace
+
+std::uint16_t PelcoSettings::zoomToPosition(double zoom) const
+{
+  const AxisRange& range = axes[ZOOM].range;
+  const double share =
+      range.max > range.min ? (std::clamp(zoom, range.min, range.max) - range.min) / (range.max - range.min) : 0.0;
+  return static_cast<std::uint16_t>(std::lround(share * zoom_position_max));
+}
+
+double PelcoSettings::positionToZoom(std::uint16_t position) const
+{
+  const AxisRange& range = axes[ZOOM].range;
+  const double share = zoom_position_max > 0 ? std::min(1.0, double(position) / zoom_position_max) : 0.0;
+  return range.min + share * (range.max - range.min);
+}
+
+PelcoProtocol::PelcoProtocol(const PelcoSettings& settings, DeviceSession& session)
+  : settings_(settings)
+  , session_(session)
+  , channel_(
+        session.context(), session.clock(), [&session](const std::string& bytes) { session.write(bytes); },
+        replyTimeout(session.linkConfig(), settings.reply_timeout, EXCHANGE_BYTES),
+        [this](const TransactionChannel::Request& lost) {
+          parser_.reset();
+          if (lost.tag != COMMAND)
+          {
+            polls_pending_ = 0;
+          }
+          ++counters_.timeouts;
+        })
+  , parser_(settings.address, settings.general_reply)
+{
+}
+
+std::string PelcoProtocol::deviceName() const
+{
+  return "a Pelco-D device (address " + std::to_string(settings_.address) + ")";
+}
+
+Capabilities PelcoProtocol::capabilities() const
+{
+  Capabilities capabilities;
+  capabilities.axes = settings_.axes;
+  if (!capabilities.axes[ZOOM].present)
+  {
+    capabilities.axes[ZOOM].range = AxisRange{ 1.0, 1.0 };
+  }
+  return capabilities;
+}
+
+void PelcoProtocol::onConnected()
+{
+  channel_.reset();
+  parser_.reset();
+  polls_pending_ = 0;
+}
+
+void PelcoProtocol::onDisconnected()
+{
+  channel_.reset();
+  polls_pending_ = 0;
+}
+
+void PelcoProtocol::poll()
+{
+  if (polls_pending_ != 0 || channel_.queued() != 0)
+  {
+    return;  // goal commands first; the position when the line is free
+  }
+  queueFrame(pelco::withValue(settings_.address, pelco::QUERY_PAN, 0), QUERY_PAN);
+  queueFrame(pelco::withValue(settings_.address, pelco::QUERY_TILT, 0), QUERY_TILT);
+  polls_pending_ = 2;
+  if (settings_.axes[ZOOM].present)
+  {
+    queueFrame(pelco::withValue(settings_.address, pelco::QUERY_ZOOM, 0), QUERY_ZOOM);
+    ++polls_pending_;
+  }
+}
+
+void PelcoProtocol::replaceCommand()
+{
+  channel_.clearQueue();
+  polls_pending_ = 0;
+}
+
+void PelcoProtocol::goTo(const AxisValues& position)
+{
+  if (!session_.connected())
+  {
+    return;
+  }
+  replaceCommand();
+  const std::uint8_t address = settings_.address;
+  queueFrame(pelco::withValue(address, pelco::SET_PAN, pelco::encodePan(toDegrees(position[PAN]))), COMMAND);
+  queueFrame(
+      pelco::withValue(address, pelco::SET_TILT, pelco::encodeTilt(toDegrees(position[TILT]), settings_.tilt_encoding)),
+      COMMAND);
+  if (settings_.axes[ZOOM].present)
+  {
+    queueFrame(pelco::withValue(address, pelco::SET_ZOOM, settings_.zoomToPosition(position[ZOOM])), COMMAND);
+  }
+}
+
+void PelcoProtocol::moveAtVelocity(const AxisValues& velocity)
+{
+  if (!session_.connected())
+  {
+    return;
+  }
+  replaceCommand();
+  const int zoom = settings_.axes[ZOOM].present ? direction(velocity[ZOOM]) : 0;
+  queueFrame(pelco::move(settings_.address, speedByte(velocity[PAN], settings_.axes[PAN].max_speed),
+                         speedByte(velocity[TILT], settings_.axes[TILT].max_speed), zoom),
+             COMMAND);
+}
+
+void PelcoProtocol::stop()
+{
+  if (!session_.connected())
+  {
+    return;
+  }
+  replaceCommand();
+  const pelco::Bytes bytes = pelco::encode(pelco::stop(settings_.address));
+  channel_.sendUrgent(TransactionChannel::Request{ std::string(bytes.begin(), bytes.end()), COMMAND,
+                                                   settings_.general_reply, session_.currentCommand() });
+}
+
+void PelcoProtocol::queueFrame(const pelco::Frame& frame, Tag tag)
+{
+  const pelco::Bytes bytes = pelco::encode(frame);
+  const bool expects_reply = tag != COMMAND || settings_.general_reply;
+  channel_.queue(TransactionChannel::Request{ std::string(bytes.begin(), bytes.end()), tag, expects_reply,
+                                              session_.currentCommand() });
+}
+
+void PelcoProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
+{
+  values.emplace_back("address", std::to_string(settings_.address));
+  values.emplace_back("frames", std::to_string(counters_.frames));
+  values.emplace_back("dropped: bad checksum or partial", std::to_string(counters_.bad_checksum));
+  values.emplace_back("dropped: bytes outside frames", std::to_string(counters_.skipped_bytes));
+  values.emplace_back("dropped: other address", std::to_string(counters_.wrong_address));
+  values.emplace_back("unexpected frames", std::to_string(counters_.unexpected_frames));
+  values.emplace_back("reply timeouts", std::to_string(counters_.timeouts));
+  values.emplace_back("late replies dropped", std::to_string(counters_.late_replies));
+}
+
+void PelcoProtocol::onReceived(const std::uint8_t* data, std::size_t size)
+{
+  events_.clear();
+  parser_.feed(data, size, events_);
+  for (const pelco::FrameParser::Event& event : events_)
+  {
+    handle(event);
+  }
+  updateParserCounters();
+}
+
+void PelcoProtocol::updateParserCounters()
+{
+  const pelco::ParserCounters& parsed = parser_.counters();
+  counters_.frames.set(parsed.frames + parsed.general_replies);
+  counters_.bad_checksum.set(parsed.bad_checksum);
+  counters_.skipped_bytes.set(parsed.skipped_bytes);
+  counters_.wrong_address.set(parsed.wrong_address);
+}
+
+void PelcoProtocol::handle(const pelco::FrameParser::Event& event)
+{
+  const std::uint8_t reply = event.frame.command2;
+  const bool query_reply =
+      !event.general_reply && (reply == pelco::PAN_REPLY || reply == pelco::TILT_REPLY || reply == pelco::ZOOM_REPLY);
+  if (!event.general_reply && !query_reply)
+  {
+    ++counters_.unexpected_frames;
+    return;
+  }
+  const std::optional<TransactionChannel::Request> answered = channel_.complete();
+  if (!answered)
+  {
+    ++counters_.late_replies;
+    return;
+  }
+  const int expected_reply = answered->tag == QUERY_PAN  ? pelco::PAN_REPLY :
+                             answered->tag == QUERY_TILT ? pelco::TILT_REPLY :
+                             answered->tag == QUERY_ZOOM ? pelco::ZOOM_REPLY :
+                                                           -1;
+  if ((event.general_reply && answered->tag != COMMAND) || (!event.general_reply && reply != expected_reply))
+  {
+    ++counters_.unexpected_frames;
+    return;
+  }
+  session_.ready();  // the device answers: that is all Pelco-D has to say about itself
+  session_.reportAlive();
+  if (event.general_reply)
+  {
+    return;
+  }
+  const std::uint16_t value = event.frame.value();
+  switch (answered->tag)
+  {
+    case QUERY_PAN:
+      polled_[PAN] = toRadians(pelco::decodePan(value));
+      break;
+    case QUERY_TILT:
+      polled_[TILT] = toRadians(pelco::decodeTilt(value, settings_.tilt_encoding));
+      break;
+    case QUERY_ZOOM:
+      polled_[ZOOM] = settings_.positionToZoom(value);
+      break;
+    default:
+      break;
+  }
+  if (--polls_pending_ <= 0)
+  {
+    polls_pending_ = 0;
+    session_.reportState(polled_);
+  }
+}
+
+std::unique_ptr<DeviceBackend> makePelcoBackend(const PelcoConfig& config, std::shared_ptr<const Clock> clock)
+{
+  return std::make_unique<DeviceBackend>(
+      config.link, config.session,
+      [&config](DeviceSession& session) { return std::make_unique<PelcoProtocol>(config.pelco, session); },
+      std::move(clock));
+}
+
+}  // namespace ptz_action_server

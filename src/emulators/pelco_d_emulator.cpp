@@ -1,0 +1,183 @@
+#include "ptz_action_server/emulators/pelco_d_emulator.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ptz_action_server
+{
+namespace
+{
+
+double radians(double degrees)
+{
+  return degrees * M_PI / 180.0;
+}
+
+double degrees(double radians)
+{
+  return radians * 180.0 / M_PI;
+}
+}  // namespace
+
+PelcoDEmulator::PelcoDEmulator(const PelcoDEmulatorConfig& config)
+  : config_(config)
+  , model_(config.device, SteadyClock::now())
+  , parser_(config.address, false)
+  , port_(DevicePort::create(config.port, DevicePort::Handlers{ [this](const std::uint8_t* data, std::size_t size,
+                                                                       TimePoint at) { onBytes(data, size, at); },
+                                                                {},
+                                                                {} }))
+{
+  port_->start();
+}
+
+PelcoDEmulator::~PelcoDEmulator() = default;
+
+void PelcoDEmulator::unplug()
+{
+  port_->unplug();
+}
+
+void PelcoDEmulator::replug()
+{
+  port_->replug();
+  std::lock_guard<std::mutex> lock(mutex_);
+  parser_.reset();
+  model_.stop(SteadyClock::now());
+}
+
+std::vector<ReceivedFrame> PelcoDEmulator::received() const
+{
+  return received_.items();
+}
+
+void PelcoDEmulator::clearReceived()
+{
+  received_.clear();
+}
+
+bool PelcoDEmulator::waitForFrame(const std::function<bool(const ReceivedFrame&)>& predicate, double timeout) const
+{
+  return received_.waitFor(predicate, timeout);
+}
+
+pelco::ParserCounters PelcoDEmulator::parserCounters() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return parser_.counters();
+}
+
+PtzSample PelcoDEmulator::sample() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return model_.sample(SteadyClock::now());
+}
+
+void PelcoDEmulator::setFaults(const SimFaults& faults)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  model_.setFaults(faults, SteadyClock::now());
+}
+
+void PelcoDEmulator::onBytes(const std::uint8_t* data, std::size_t size, TimePoint arrived_at)
+{
+  std::vector<std::uint8_t> replies;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<pelco::FrameParser::Event> events;
+    const double byte_time = port_->byteTime();
+    // Byte by byte, so each frame is stamped with the moment its own last byte crossed the line.
+    for (std::size_t index = 0; index < size; ++index)
+    {
+      events.clear();
+      parser_.feed(data + index, 1, events);
+      const TimePoint at = addSeconds(arrived_at, -(static_cast<double>(size - 1 - index) * byte_time));
+      for (const pelco::FrameParser::Event& event : events)
+      {
+        received_.add(ReceivedFrame{ at, event.frame });
+        const std::vector<std::uint8_t> reply = execute(event.frame, at);
+        replies.insert(replies.end(), reply.begin(), reply.end());
+      }
+    }
+  }
+  if (!replies.empty())
+  {
+    port_->send(replies.data(), replies.size());
+  }
+}
+
+std::vector<std::uint8_t> PelcoDEmulator::execute(const pelco::Frame& frame, TimePoint at)
+{
+  const std::uint8_t address = config_.address;
+  auto answer = [](const pelco::Frame& reply) {
+    const pelco::Bytes bytes = pelco::encode(reply);
+    return std::vector<std::uint8_t>(bytes.begin(), bytes.end());
+  };
+  const PtzSample now = model_.sample(at);
+  const AxisRange& zoom = config_.device.axes[ZOOM].range;
+  switch (frame.command2)
+  {
+    case pelco::QUERY_PAN:
+      return answer(pelco::withValue(address, pelco::PAN_REPLY, pelco::encodePan(degrees(now.position[PAN]))));
+    case pelco::QUERY_TILT:
+      return answer(pelco::withValue(address, pelco::TILT_REPLY,
+                                     pelco::encodeTilt(degrees(now.position[TILT]), config_.tilt_encoding)));
+    case pelco::QUERY_ZOOM: {
+      const double share = zoom.max > zoom.min ? (now.position[ZOOM] - zoom.min) / (zoom.max - zoom.min) : 0.0;
+      return answer(pelco::withValue(address, pelco::ZOOM_REPLY,
+                                     static_cast<std::uint16_t>(std::lround(share * config_.zoom_position_max))));
+    }
+    case pelco::SET_PAN:
+      model_.goToAxis(PAN, radians(pelco::decodePan(frame.value())), at);
+      break;
+    case pelco::SET_TILT:
+      model_.goToAxis(TILT, radians(pelco::decodeTilt(frame.value(), config_.tilt_encoding)), at);
+      break;
+    case pelco::SET_ZOOM:
+      model_.goToAxis(
+          ZOOM, zoom.min + std::min(1.0, double(frame.value()) / config_.zoom_position_max) * (zoom.max - zoom.min),
+          at);
+      break;
+    case pelco::SET_PRESET:
+      presets_[frame.data2] = now.position;
+      break;
+    case pelco::CLEAR_PRESET:
+      presets_.erase(frame.data2);
+      break;
+    case pelco::GO_TO_PRESET: {
+      const auto preset = presets_.find(frame.data2);
+      if (preset != presets_.end())
+      {
+        model_.goTo(preset->second, at);
+      }
+      break;
+    }
+    default: {
+      if (frame.command2 & 0x01)
+      {
+        break;  // another extended command: not modelled
+      }
+      // The standard movement command (all zero: stop). Speeds 0..0x3F scale the max speed; 0x40 is turbo.
+      const auto speed = [](std::uint8_t value, double max_speed) {
+        return std::min(1.0, value / static_cast<double>(pelco::MAX_SPEED)) * max_speed;
+      };
+      const double pan_speed = speed(frame.data1, config_.device.axes[PAN].motion.max_speed);
+      const double tilt_speed = speed(frame.data2, config_.device.axes[TILT].motion.max_speed);
+      const double zoom_rate = config_.device.axes[ZOOM].motion.max_speed;
+      const std::uint8_t bits = frame.command2;
+      model_.moveAxisAtVelocity(PAN, bits & pelco::RIGHT ? pan_speed : (bits & pelco::LEFT ? -pan_speed : 0.0), at);
+      model_.moveAxisAtVelocity(TILT, bits & pelco::UP ? tilt_speed : (bits & pelco::DOWN ? -tilt_speed : 0.0), at);
+      model_.moveAxisAtVelocity(ZOOM,
+                                bits & pelco::ZOOM_TELE ? zoom_rate : (bits & pelco::ZOOM_WIDE ? -zoom_rate : 0.0), at);
+      break;
+    }
+  }
+  if (!config_.general_reply)
+  {
+    return {};
+  }
+  const std::uint8_t alarm = 0;
+  return { pelco::SYNC, address, alarm, static_cast<std::uint8_t>(address + alarm) };
+}
+
+}  // namespace ptz_action_server

@@ -1,0 +1,274 @@
+#include "pty_port.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <pty.h>
+#include <sys/eventfd.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+namespace ptz_action_server
+{
+namespace
+{
+void makeRaw(int fd)
+{
+  termios settings{};
+  if (tcgetattr(fd, &settings) == 0)
+  {
+    cfmakeraw(&settings);
+    tcsetattr(fd, TCSANOW, &settings);
+  }
+}
+}  // namespace
+
+PtyPort::PtyPort(const DevicePortConfig& config, Handlers handlers) : config_(config), handlers_(std::move(handlers))
+{
+  wake_fd_ = ::eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
+  if (wake_fd_ < 0)
+  {
+    throw BackendError(std::string("eventfd: ") + std::strerror(errno));
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  openPort();
+}
+
+PtyPort::~PtyPort()
+{
+  running_ = false;
+  wake();
+  if (thread_.joinable())
+  {
+    thread_.join();
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  closePort();
+  ::close(wake_fd_);
+}
+
+void PtyPort::start()
+{
+  running_ = true;
+  thread_ = std::thread(&PtyPort::run, this);
+}
+
+std::string PtyPort::path() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return config_.link.empty() ? pty_path_ : config_.link;
+}
+
+void PtyPort::openPort()
+{
+  if (!config_.tty.empty())
+  {
+    master_ = ::open(config_.tty.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+    if (master_ < 0)
+    {
+      throw BackendError("cannot open " + config_.tty + ": " + std::strerror(errno));
+    }
+    makeRaw(master_);
+    pty_path_ = config_.tty;
+    return;
+  }
+  char name[256] = {};
+  if (::openpty(&master_, &slave_, name, nullptr, nullptr) != 0)
+  {
+    throw BackendError(std::string("openpty: ") + std::strerror(errno));
+  }
+  makeRaw(slave_);
+  ::fcntl(master_, F_SETFL, ::fcntl(master_, F_GETFL) | O_NONBLOCK);
+  ::fcntl(master_, F_SETFD, FD_CLOEXEC);
+  ::fcntl(slave_, F_SETFD, FD_CLOEXEC);
+  pty_path_ = name;
+  if (!config_.link.empty())
+  {
+    // Replace the link atomically, as udev does: a client never sees a half-made path.
+    const std::string temporary = config_.link + ".new";
+    ::unlink(temporary.c_str());
+    if (::symlink(name, temporary.c_str()) != 0 || ::rename(temporary.c_str(), config_.link.c_str()) != 0)
+    {
+      throw BackendError("cannot link " + config_.link + " to " + name + ": " + std::strerror(errno));
+    }
+  }
+}
+
+void PtyPort::closePort()
+{
+  if (master_ >= 0)
+  {
+    ::close(master_);
+    master_ = -1;
+  }
+  if (slave_ >= 0)
+  {
+    ::close(slave_);
+    slave_ = -1;
+  }
+  if (!config_.link.empty())
+  {
+    ::unlink(config_.link.c_str());
+  }
+  output_.clear();
+  input_.clear();
+}
+
+void PtyPort::send(const std::uint8_t* data, std::size_t size)
+{
+  if (silent())
+  {
+    return;
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (master_ < 0)
+    {
+      return;
+    }
+    // Each byte reaches the client once its ten bits have crossed the line.
+    const double byte_time = byteTime();
+    for (std::size_t index = 0; index < size; ++index)
+    {
+      output_free_at_ = addSeconds(std::max(SteadyClock::now(), output_free_at_), byte_time);
+      output_.push_back(OutputByte{ output_free_at_, data[index] });
+    }
+  }
+  wake();
+}
+
+void PtyPort::unplug()
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (config_.tty.empty())
+    {
+      closePort();
+    }
+  }
+  wake();
+}
+
+void PtyPort::replug()
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (master_ < 0)
+    {
+      openPort();
+    }
+  }
+  wake();
+}
+
+void PtyPort::wake()
+{
+  const std::uint64_t one = 1;
+  (void)!::write(wake_fd_, &one, sizeof(one));
+}
+
+void PtyPort::run()
+{
+  const double byte_time = byteTime();
+  TimePoint next_tick = SteadyClock::now();  // the first tick runs at once
+  std::uint8_t buffer[1024];
+  while (running_)
+  {
+    // 1. Work out how long to sleep: the next paced byte out, the next input delivery, the next tick.
+    TimePoint now = SteadyClock::now();
+    TimePoint wake_at = handlers_.on_tick ? next_tick : addSeconds(now, 3600.0);
+    int master = -1;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      master = master_;
+      if (!output_.empty())
+      {
+        wake_at = std::min(wake_at, output_.front().at);
+      }
+      if (!input_.empty())
+      {
+        wake_at = std::min(wake_at, input_.front().at);
+      }
+    }
+    const double wait = std::max(0.0, secondsBetween(now, wake_at));
+    timespec timeout{ static_cast<time_t>(wait), static_cast<long>((wait - std::floor(wait)) * 1e9) };
+    pollfd descriptors[2] = { { wake_fd_, POLLIN, 0 }, { master, POLLIN, 0 } };
+    const int ready = ::ppoll(descriptors, master >= 0 ? 2 : 1, &timeout, nullptr);
+    if (ready > 0 && (descriptors[0].revents & POLLIN))
+    {
+      std::uint64_t count = 0;
+      (void)!::read(wake_fd_, &count, sizeof(count));
+    }
+    if (!running_)
+    {
+      break;
+    }
+    now = SteadyClock::now();
+
+    // 2. Bytes from the client: they "arrive" at the line's pace.
+    if (ready > 0 && master >= 0 && (descriptors[1].revents & POLLIN))
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      const ssize_t size = master_ >= 0 ? ::read(master_, buffer, sizeof(buffer)) : -1;
+      if (size > 0)
+      {
+        input_free_at_ = addSeconds(std::max(now, input_free_at_), size * byte_time);
+        input_.push_back(Pending{ input_free_at_, std::vector<std::uint8_t>(buffer, buffer + size) });
+      }
+    }
+    else if (ready > 0 && master >= 0 && (descriptors[1].revents & (POLLHUP | POLLERR)))
+    {
+      // No client holds the other end (we keep our own copy open, so this is rare): do not spin on it.
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+
+    // 3. Hand over the input whose time has come.
+    while (true)
+    {
+      Pending arrived;
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (input_.empty() || input_.front().at > now)
+        {
+          break;
+        }
+        arrived = std::move(input_.front());
+        input_.pop_front();
+      }
+      if (!silent())
+      {
+        handlers_.on_bytes(arrived.bytes.data(), arrived.bytes.size(), arrived.at);
+      }
+    }
+
+    // 4. Send the output bytes whose time has come.
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      std::vector<std::uint8_t> chunk;
+      while (!output_.empty() && output_.front().at <= now)
+      {
+        chunk.push_back(output_.front().byte);
+        output_.pop_front();
+      }
+      garble(chunk.data(), chunk.size());
+      if (!chunk.empty() && master_ >= 0)
+      {
+        (void)!::write(master_, chunk.data(), chunk.size());
+      }
+    }
+
+    // 5. The device's own periodic work.
+    if (handlers_.on_tick && now >= next_tick)
+    {
+      next_tick = addSeconds(now, config_.tick_period);
+      handlers_.on_tick();
+    }
+  }
+}
+
+}  // namespace ptz_action_server

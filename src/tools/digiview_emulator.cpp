@@ -1,0 +1,141 @@
+/**
+ * \file
+ * \brief digiview_emulator: a DigiView emulator (message format 0.5) with virtual views that slew.
+ */
+#include <cstdio>
+#include <string>
+
+#include "emulator_main.h"
+
+#include "ptz_action_server/emulators/digiview_emulator.h"
+
+namespace
+{
+const char* PROGRAM = "digiview_emulator";
+const char* USAGE = R"(usage: digiview_emulator [options]
+
+Answers as DigiView does (80-byte messages, CRC-8/BLUETOOTH): ACKNOWLEDGEMENT for SET CAM_TARGETING and
+CAM_OPTICS_AND_CONTROL, CURRENT_PARAMETERS for GETs and GET_INTERVAL subscriptions (>= 100 ms, 0 cancels),
+CHECKSUM_ERROR, DATA_ERROR, UNKNOWN, FORBIDDEN when told to refuse; QUIT closes the connection.
+
+Options:
+  --host HOST            address to listen on (default 127.0.0.1)
+  --port PORT            port (default 5500; 0 = any free port)
+  --transport tcp|udp    default tcp
+  --stream NAME          a stream name (default main; repeat for more streams)
+  --layout N             layout mode 0..6 (default 4: four user views)
+  --rate R               rad/s a view turns at (default 1.0)
+  --acceleration A       rad/s^2 (default 4.0)
+  --refuse               answer every SET with FORBIDDEN
+  --silent               start silent: read and ignore everything, send nothing
+  --silent-after S       fall silent S seconds after start
+Signals: SIGUSR1 toggles silence, SIGUSR2 drops every connection; SIGINT / SIGTERM end the program.
+)";
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  ptz_action_server::DigiViewEmulatorConfig config;
+  config.port = 5500;
+  config.streams.clear();
+  bool silent = false;
+  bool refuse = false;
+  emulator_main::Schedule schedule;
+  emulator_main::parseArguments(
+      argc, argv, PROGRAM, USAGE, [&](const std::string& arg, const emulator_main::Value& value) {
+        auto number = [&]() { return emulator_main::number(PROGRAM, value(), arg, USAGE); };
+        if (arg == "--host")
+        {
+          config.host = value();
+        }
+        else if (arg == "--port")
+        {
+          const double port = number();
+          if (port > 65535)
+          {
+            emulator_main::fail(PROGRAM, "--port must be 0..65535", USAGE);
+          }
+          config.port = static_cast<std::uint16_t>(port);
+        }
+        else if (arg == "--transport")
+        {
+          const std::string transport = value();
+          if (transport != "tcp" && transport != "udp")
+          {
+            emulator_main::fail(PROGRAM, "--transport must be tcp or udp", USAGE);
+          }
+          config.transport = transport == "tcp" ? ptz_action_server::LinkKind::TCP : ptz_action_server::LinkKind::UDP;
+        }
+        else if (arg == "--stream")
+        {
+          const std::string name = value();
+          if (name.empty() || name.size() > 8)
+          {
+            emulator_main::fail(PROGRAM, "--stream takes 1 to 8 characters", USAGE);
+          }
+          config.streams.push_back(name);
+        }
+        else if (arg == "--layout")
+        {
+          const double layout = number();
+          if (layout > 6)
+          {
+            emulator_main::fail(PROGRAM, "--layout must be 0..6", USAGE);
+          }
+          config.layout_mode = static_cast<std::uint8_t>(layout);
+        }
+        else if (arg == "--rate")
+        {
+          config.slew_rate = number();
+        }
+        else if (arg == "--acceleration")
+        {
+          config.acceleration = number();
+        }
+        else if (arg == "--refuse")
+        {
+          refuse = true;
+        }
+        else if (arg == "--silent")
+        {
+          silent = true;
+        }
+        else if (arg == "--silent-after")
+        {
+          schedule.silent_after = number();
+        }
+        else
+        {
+          return false;
+        }
+        return true;
+      });
+  if (config.streams.empty())
+  {
+    config.streams.push_back("main");
+  }
+
+  const sigset_t signals = emulator_main::blockSignals();
+  try
+  {
+    ptz_action_server::DigiViewEmulator device(config);
+    device.setSilent(silent);
+    device.setRefuse(refuse);
+    std::printf("%s: listening on %s:%u (%s), stream %s, layout %u%s\n", PROGRAM, config.host.c_str(), device.port(),
+                ptz_action_server::toString(config.transport), config.streams.front().c_str(), config.layout_mode,
+                refuse ? ", refusing SETs" : "");
+    std::fflush(stdout);
+    emulator_main::Hooks hooks;
+    hooks.set_silent = [&device](bool value) { device.setSilent(value); };
+    // SIGUSR2 drops the connections; the client reconnects, so "replug" has nothing to do.
+    hooks.unplug = [&device] { device.dropConnections(); };
+    hooks.replug = [] {};
+    emulator_main::run(PROGRAM, signals, hooks, schedule, silent);
+  }
+  catch (const std::exception& error)
+  {
+    std::fprintf(stderr, "%s: %s\n", PROGRAM, error.what());
+    return 1;
+  }
+  return 0;
+}

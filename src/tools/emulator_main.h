@@ -1,0 +1,323 @@
+/**
+ * \file
+ * \brief What the device emulator programs share: option parsing helpers and the signal loop that switches faults.
+ */
+#pragma once
+
+#include <pthread.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+
+#include "ptz_action_server/emulators/device_port.h"
+
+namespace emulator_main
+{
+/// Fault switches a program offers; an empty function means "not supported".
+struct Hooks
+{
+  std::function<void(bool)> set_silent;
+  std::function<void()> unplug;
+  std::function<void()> replug;
+};
+
+/// Timed faults, in seconds from the start (< 0: never).
+struct Schedule
+{
+  double silent_after = -1.0;
+  double unplug_after = -1.0;
+  double replug_after = -1.0;
+};
+
+[[noreturn]] inline void fail(const char* program, const std::string& message, const char* usage)
+{
+  std::fprintf(stderr, "%s: %s\n\n%s", program, message.c_str(), usage);
+  std::exit(2);
+}
+
+/// A number >= 0, or fail().
+inline double number(const char* program, const char* text, const std::string& option, const char* usage)
+{
+  char* end = nullptr;
+  const double value = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !(value >= 0.0))
+  {
+    fail(program, option + " needs a number >= 0", usage);
+  }
+  return value;
+}
+
+/// roslaunch adds __name:= and remapping arguments; the programs ignore them.
+inline bool isRosArgument(const std::string& argument)
+{
+  return argument.rfind("__", 0) == 0 || argument.find(":=") != std::string::npos;
+}
+
+/// Fetches the value of the option being parsed (fails when there is none).
+using Value = std::function<const char*()>;
+
+/**
+ * \brief Walks the arguments: skips roslaunch's, answers --help with \p usage, hands every other option to
+ * \p take (which returns false for an option it does not know: an error).
+ */
+inline void parseArguments(int argc, char** argv, const char* program, const std::string& usage,
+                           const std::function<bool(const std::string& arg, const Value& value)>& take)
+{
+  for (int index = 1; index < argc; ++index)
+  {
+    const std::string arg = argv[index];
+    if (isRosArgument(arg))
+    {
+      continue;
+    }
+    if (arg == "-h" || arg == "--help")
+    {
+      std::printf("%s", usage.c_str());
+      std::exit(0);
+    }
+    const Value value = [&]() -> const char* {
+      if (index + 1 >= argc)
+      {
+        fail(program, arg + " needs a value", usage.c_str());
+      }
+      return argv[++index];
+    };
+    if (!take(arg, value))
+    {
+      fail(program, "unknown option " + arg, usage.c_str());
+    }
+  }
+}
+
+/// Options every serial emulator takes.
+struct SerialOptions
+{
+  ptz_action_server::DevicePortConfig port;
+  Schedule schedule;
+  bool silent = false;
+  double garble = 0.0;
+};
+
+constexpr const char* SERIAL_OPTIONS_HELP = R"(Line options (a pseudo-terminal by default):
+  --link PATH            keep this symlink pointing at the pseudo-terminal (default %s)
+  --tty PATH             use this existing tty instead of creating a pseudo-terminal
+  --baud N               pace bytes at this rate, 8N1 (default 9600)
+  --tcp PORT             serve TCP on PORT instead (0 = any free port; one client at a time)
+  --host HOST            the address --tcp listens on (default 127.0.0.1)
+Faults:
+  --silent               start silent: read and ignore everything, send nothing
+  --silent-after S       fall silent S seconds after start
+  --garble RATIO         replace this share of the sent bytes with random ones (0..1)
+  --unplug-after S       close the port (remove the link; stop listening) S seconds after start
+  --replug-after S       the port is back (a new pseudo-terminal under the same link) S seconds after start
+Signals: SIGUSR1 toggles silence, SIGUSR2 unplugs / replugs; SIGINT / SIGTERM end the program.
+)";
+
+/// The usage text of a serial emulator: its own text, then the serial options with its default link.
+inline std::string serialUsage(const char* own, const char* default_link)
+{
+  char serial_help[2048];
+  std::snprintf(serial_help, sizeof(serial_help), SERIAL_OPTIONS_HELP, default_link);
+  return std::string(own) + serial_help;
+}
+
+/// Takes \p arg if it is a serial option; \p value fetches its argument.
+inline bool parseSerialOption(const std::string& arg, const Value& value, const char* program, const char* usage,
+                              SerialOptions& options)
+{
+  auto number = [&]() { return emulator_main::number(program, value(), arg, usage); };
+  if (arg == "--link")
+  {
+    options.port.link = value();
+  }
+  else if (arg == "--tty")
+  {
+    options.port.tty = value();
+    options.port.link.clear();
+  }
+  else if (arg == "--baud")
+  {
+    options.port.baud = static_cast<unsigned>(number());
+    if (options.port.baud == 0)
+    {
+      fail(program, "--baud must be > 0", usage);
+    }
+  }
+  else if (arg == "--tcp")
+  {
+    const double port = number();
+    if (port > 65535)
+    {
+      fail(program, "--tcp must be 0..65535", usage);
+    }
+    options.port.kind = ptz_action_server::DevicePortConfig::Kind::TCP;
+    options.port.port = static_cast<std::uint16_t>(port);
+  }
+  else if (arg == "--host")
+  {
+    options.port.host = value();
+  }
+  else if (arg == "--silent")
+  {
+    options.silent = true;
+  }
+  else if (arg == "--silent-after")
+  {
+    options.schedule.silent_after = number();
+  }
+  else if (arg == "--garble")
+  {
+    options.garble = std::min(1.0, number());
+  }
+  else if (arg == "--unplug-after")
+  {
+    options.schedule.unplug_after = number();
+  }
+  else if (arg == "--replug-after")
+  {
+    options.schedule.replug_after = number();
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+
+/// Blocks the signals the loop takes; call before any thread starts, so every thread inherits the mask.
+inline sigset_t blockSignals()
+{
+  sigset_t signals;
+  sigemptyset(&signals);
+  for (int signal : { SIGINT, SIGTERM, SIGUSR1, SIGUSR2 })
+  {
+    sigaddset(&signals, signal);
+  }
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  return signals;
+}
+
+/**
+ * \brief Runs until SIGINT or SIGTERM. SIGUSR1 toggles silence, SIGUSR2 unplugs or replugs; the schedule's faults
+ * happen on time. Messages go to stdout, flushed, so a test can follow them.
+ */
+inline void run(const char* program, const sigset_t& signals, const Hooks& hooks, Schedule schedule, bool silent)
+{
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point started = Clock::now();
+  bool plugged = true;
+  auto say = [program](const char* what) {
+    std::printf("%s: %s\n", program, what);
+    std::fflush(stdout);
+  };
+  auto set_silent = [&](bool value) {
+    if (hooks.set_silent)
+    {
+      silent = value;
+      hooks.set_silent(value);
+      say(value ? "silent" : "answering again");
+    }
+  };
+  auto set_plugged = [&](bool value) {
+    if (hooks.unplug && hooks.replug && plugged != value)
+    {
+      plugged = value;
+      (value ? hooks.replug : hooks.unplug)();
+      say(value ? "replugged" : "unplugged");
+    }
+  };
+  while (true)
+  {
+    double* next = nullptr;
+    for (double* deadline : { &schedule.silent_after, &schedule.unplug_after, &schedule.replug_after })
+    {
+      if (*deadline >= 0.0 && (next == nullptr || *deadline < *next))
+      {
+        next = deadline;
+      }
+    }
+    int signal = 0;
+    if (next != nullptr)
+    {
+      const double left = std::max(0.0, *next - std::chrono::duration<double>(Clock::now() - started).count());
+      timespec timeout{ static_cast<time_t>(left), static_cast<long>((left - static_cast<time_t>(left)) * 1e9) };
+      signal = sigtimedwait(&signals, nullptr, &timeout);
+      if (signal < 0 && errno == EAGAIN)
+      {
+        if (next == &schedule.silent_after)
+        {
+          set_silent(true);
+        }
+        else
+        {
+          set_plugged(next == &schedule.replug_after);
+        }
+        *next = -1.0;
+        continue;
+      }
+    }
+    else
+    {
+      signal = sigwaitinfo(&signals, nullptr);
+    }
+    if (signal == SIGUSR1)
+    {
+      set_silent(!silent);
+    }
+    else if (signal == SIGUSR2)
+    {
+      set_plugged(!plugged);
+    }
+    else if (signal == SIGINT || signal == SIGTERM)
+    {
+      return;
+    }
+  }
+}
+
+/**
+ * \brief Runs a serial emulator (FlirPtuEmulator, PelcoDEmulator) on the options' port, with their faults, until
+ * SIGINT or SIGTERM. \p detail is appended to the start-up line. Returns the exit code.
+ */
+template <class Device, class Config>
+int runSerialDevice(const char* program, Config config, const SerialOptions& options, const std::string& detail)
+{
+  config.port = options.port;
+  const sigset_t signals = blockSignals();
+  try
+  {
+    Device device(config);
+    device.port().setSilent(options.silent);
+    device.port().setGarbleRatio(options.garble);
+    if (config.port.kind == ptz_action_server::DevicePortConfig::Kind::TCP)
+    {
+      std::printf("%s: listening on tcp %s%s%s\n", program, device.path().c_str(), detail.c_str(),
+                  options.silent ? ", silent" : "");
+    }
+    else
+    {
+      std::printf("%s: %s at %u baud%s%s\n", program, device.path().c_str(), config.port.baud, detail.c_str(),
+                  options.silent ? ", silent" : "");
+    }
+    std::fflush(stdout);
+    Hooks hooks;
+    hooks.set_silent = [&device](bool silent) { device.port().setSilent(silent); };
+    hooks.unplug = [&device] { device.unplug(); };
+    hooks.replug = [&device] { device.replug(); };
+    run(program, signals, hooks, options.schedule, options.silent);
+  }
+  catch (const std::exception& error)
+  {
+    std::fprintf(stderr, "%s: %s\n", program, error.what());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace emulator_main

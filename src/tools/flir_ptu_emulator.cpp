@@ -1,0 +1,47 @@
+/**
+ * \file
+ * \brief flir_ptu_emulator: a FLIR PTU on a pseudo-terminal, over the simulated motion model.
+ */
+#include <cstdio>
+#include <string>
+
+#include "emulator_main.h"
+
+#include "ptz_action_server/emulators/flir_ptu_emulator.h"
+
+namespace
+{
+const char* PROGRAM = "flir_ptu_emulator";
+const char* DEFAULT_LINK = "/tmp/ptz_flir";
+const char* USAGE = R"(usage: flir_ptu_emulator [options]
+
+A FLIR (Directed Perception) D46-like pan-tilt unit on a pseudo-terminal: its ASCII protocol (terse/verbose,
+echo, position and velocity modes, resolution 185.1428"/position, pan +-3090 and tilt -907..604 positions),
+paced at the baud rate. Point the node at the link: backend:=serial with port: /tmp/ptz_flir.
+
+Options:
+  --no-banner            start terse, without echo and banner
+)";
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  emulator_main::SerialOptions options;
+  options.port.link = DEFAULT_LINK;
+  ptz_action_server::FlirPtuEmulatorConfig config;
+  const std::string usage = emulator_main::serialUsage(USAGE, DEFAULT_LINK);
+  emulator_main::parseArguments(argc, argv, PROGRAM, usage,
+                                [&](const std::string& arg, const emulator_main::Value& value) {
+                                  if (emulator_main::parseSerialOption(arg, value, PROGRAM, usage.c_str(), options))
+                                  {
+                                    return true;
+                                  }
+                                  if (arg == "--no-banner")
+                                  {
+                                    config.banner = false;
+                                    return true;
+                                  }
+                                  return false;
+                                });
+  return emulator_main::runSerialDevice<ptz_action_server::FlirPtuEmulator>(PROGRAM, config, options, "");
+}

@@ -1,0 +1,113 @@
+/**
+ * \file
+ * \brief pantilt_emulator: a PanTilt device controller on UDP over the simulated motion model.
+ *
+ * Try the pantilt_udp backend without hardware, or break the link on purpose. SIGUSR1 toggles silence.
+ */
+#include <cstdio>
+#include <string>
+
+#include "emulator_main.h"
+
+#include "ptz_action_server/emulators/pantilt_emulator.h"
+
+namespace
+{
+const char* PROGRAM = "pantilt_emulator";
+const char* USAGE = R"(usage: pantilt_emulator [options]
+
+A PanTilt device controller on UDP: executes SET_PARAM / COMMAND frames on a simulated pan-tilt unit and reports
+its params (a full params frame in reply to every valid datagram, and every --state-period to the last client).
+
+Options:
+  --host HOST            address to listen on (default 127.0.0.1)
+  --port PORT            UDP port (default 5000; 0 = any free port)
+  --version 1.0|1.1      wire format (default 1.0, the seed's)
+  --state-period S       seconds between unsolicited params frames (default 0.1; 0 = replies only)
+  --drop RATIO           drop this share of replies (0..1)
+  --delay S              delay every reply by S seconds
+  --silent               start silent: ignore everything, send nothing (an unplugged device)
+  --silent-after S       fall silent S seconds after start
+Signals: SIGUSR1 toggles silence; SIGINT / SIGTERM end the program.
+)";
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  ptz_action_server::PanTiltEmulatorConfig config;
+  config.port = 5000;
+  bool silent = false;
+  emulator_main::Schedule schedule;
+  double drop = 0.0;
+  double delay = 0.0;
+  emulator_main::parseArguments(argc, argv, PROGRAM, USAGE,
+                                [&](const std::string& arg, const emulator_main::Value& value) {
+                                  auto number = [&]() { return emulator_main::number(PROGRAM, value(), arg, USAGE); };
+                                  if (arg == "--host")
+                                  {
+                                    config.host = value();
+                                  }
+                                  else if (arg == "--port")
+                                  {
+                                    const double port = number();
+                                    if (port > 65535)
+                                    {
+                                      emulator_main::fail(PROGRAM, "--port must be 0..65535", USAGE);
+                                    }
+                                    config.port = static_cast<std::uint16_t>(port);
+                                  }
+                                  else if (arg == "--version")
+                                  {
+                                    if (!cr::pantilt::parseWireVersion(value(), config.version))
+                                    {
+                                      emulator_main::fail(PROGRAM, "--version must be 1.0 or 1.1", USAGE);
+                                    }
+                                  }
+                                  else if (arg == "--state-period")
+                                  {
+                                    config.state_period = number();
+                                  }
+                                  else if (arg == "--drop")
+                                  {
+                                    drop = number();
+                                  }
+                                  else if (arg == "--delay")
+                                  {
+                                    delay = number();
+                                  }
+                                  else if (arg == "--silent")
+                                  {
+                                    silent = true;
+                                  }
+                                  else if (arg == "--silent-after")
+                                  {
+                                    schedule.silent_after = number();
+                                  }
+                                  else
+                                  {
+                                    return false;
+                                  }
+                                  return true;
+                                });
+
+  const sigset_t signals = emulator_main::blockSignals();
+  try
+  {
+    ptz_action_server::PanTiltEmulator device(config);
+    device.setSilent(silent);
+    device.setDropRatio(drop);
+    device.setReplyDelay(delay);
+    std::printf("%s: listening on %s, wire %s, state every %.2f s%s\n", PROGRAM, device.endpoint().toString().c_str(),
+                cr::pantilt::toString(config.version), config.state_period, silent ? ", silent" : "");
+    std::fflush(stdout);
+    emulator_main::Hooks hooks;
+    hooks.set_silent = [&device](bool value) { device.setSilent(value); };
+    emulator_main::run(PROGRAM, signals, hooks, schedule, silent);
+  }
+  catch (const std::exception& error)
+  {
+    std::fprintf(stderr, "%s: %s\n", PROGRAM, error.what());
+    return 1;
+  }
+  return 0;
+}

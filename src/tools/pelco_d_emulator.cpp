@@ -1,0 +1,72 @@
+/**
+ * \file
+ * \brief pelco_d_emulator: a Pelco-D PTZ camera on a pseudo-terminal, over the simulated motion model.
+ */
+#include <cstdio>
+#include <string>
+
+#include "emulator_main.h"
+
+#include "ptz_action_server/emulators/pelco_d_emulator.h"
+
+namespace
+{
+const char* PROGRAM = "pelco_d_emulator";
+const char* DEFAULT_LINK = "/tmp/ptz_pelco_d";
+const char* USAGE = R"(usage: pelco_d_emulator [options]
+
+A Pelco-D PTZ camera (pan +-180, tilt +-90 degrees, zoom 1..24x) on a pseudo-terminal: stop, movement with speeds,
+absolute positions (0x4B, 0x4D, 0x4F), position queries (0x51/0x53/0x55 answered with 0x59/0x5B/0x5D) and presets,
+paced at the baud rate. Point the node at the link: backend:=serial with protocol: pelco_d, port: /tmp/ptz_pelco_d.
+
+Options:
+  --address N            the camera's address, 1..255 (default 1)
+  --tilt-encoding E      wrap (up positive, negative as 36000 - x; default) or inverted_wrap (down positive)
+  --general-reply        answer every command with a 4-byte general reply
+)";
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  emulator_main::SerialOptions options;
+  options.port.link = DEFAULT_LINK;
+  ptz_action_server::PelcoDEmulatorConfig config;
+  const std::string usage = emulator_main::serialUsage(USAGE, DEFAULT_LINK);
+  emulator_main::parseArguments(
+      argc, argv, PROGRAM, usage, [&](const std::string& arg, const emulator_main::Value& value) {
+        if (emulator_main::parseSerialOption(arg, value, PROGRAM, usage.c_str(), options))
+        {
+          return true;
+        }
+        if (arg == "--address")
+        {
+          const double address = emulator_main::number(PROGRAM, value(), arg, usage.c_str());
+          if (address < 1 || address > 255)
+          {
+            emulator_main::fail(PROGRAM, "--address must be 1..255", usage.c_str());
+          }
+          config.address = static_cast<std::uint8_t>(address);
+        }
+        else if (arg == "--tilt-encoding")
+        {
+          const std::string encoding = value();
+          if (encoding != "wrap" && encoding != "inverted_wrap")
+          {
+            emulator_main::fail(PROGRAM, "--tilt-encoding must be wrap or inverted_wrap", usage.c_str());
+          }
+          config.tilt_encoding = encoding == "wrap" ? ptz_action_server::pelco::TiltEncoding::WRAP :
+                                                      ptz_action_server::pelco::TiltEncoding::INVERTED_WRAP;
+        }
+        else if (arg == "--general-reply")
+        {
+          config.general_reply = true;
+        }
+        else
+        {
+          return false;
+        }
+        return true;
+      });
+  return emulator_main::runSerialDevice<ptz_action_server::PelcoDEmulator>(
+      PROGRAM, config, options, ", address " + std::to_string(config.address));
+}

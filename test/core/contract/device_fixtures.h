@@ -1,0 +1,97 @@
+/**
+ * \file
+ * \brief One fixture per device backend and transport, for the backend contract suite: the emulator, a backend
+ * configured for it, and what the contract needs to know of the protocol (how its commands look, how its link
+ * breaks, what it refuses).
+ */
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ptz_action_server/core/device/device_backend.h"
+
+namespace ptz_action_server
+{
+/// A command as the emulator received it, sorted into what the contract cares about.
+struct DeviceCommand
+{
+  enum class Kind
+  {
+    MOVE,   ///< a position goal's command (or a velocity goal's, on protocols that aim a target)
+    STOP,   ///< a stop or halt
+    QUERY,  ///< a state poll, a subscription, a state request
+    OTHER,  ///< set-up, speeds, modes
+  };
+  TimePoint at;
+  Kind kind = Kind::OTHER;
+  std::string text;  ///< readable, for failure messages
+  bool aims = false;  ///< the command carries a pan it aims at (pan)
+  double pan = 0.0;   ///< rad, the contract's sign
+};
+
+std::string describe(const std::vector<DeviceCommand>& commands);
+
+/// A device backend against its emulator over one transport.
+class DeviceFixture
+{
+public:
+  virtual ~DeviceFixture() = default;
+
+  /// A new backend configured for the emulator (not started). Device backends are DeviceBackends.
+  virtual std::unique_ptr<DeviceBackend> makeBackend() = 0;
+
+  /// Everything the emulator received since the last clearCommands(), oldest first.
+  virtual std::vector<DeviceCommand> commands() const = 0;
+  virtual void clearCommands() = 0;
+  /// The emulator's own state: pan, tilt (rad) and zoom (X, or 1 without zoom).
+  virtual PtzSample deviceState() const = 0;
+
+  /// The device stops answering (it reads and ignores everything).
+  virtual void setSilent(bool silent) = 0;
+  /// The link vanishes as it does on this transport: a port unplugged, a connection closed, a device gone.
+  virtual void breakLink() = 0;
+  /// The link can come back (the port replugged, the device listening again).
+  virtual void restoreLink() = 0;
+  /// True where breakLink() closes something the backend notices at once (a port, a connection); false for UDP,
+  /// where only the silence tells.
+  virtual bool breaksAtOnce() const
+  {
+    return true;
+  }
+  /// A word of lastLinkLoss() when breakLink() ended the goal.
+  virtual std::string linkLossWords() const = 0;
+
+  /// Makes the device refuse a goal: fills \p goal with one it refuses and returns the words its refusal carries,
+  /// or "" for protocols without refusals (Pelco-D, PanTilt).
+  virtual std::string prepareRefusal(AxisValues& goal)
+  {
+    (void)goal;
+    return {};
+  }
+
+  /// Checks the commands goTo(\p target) produced against the protocol's frames (gtest assertions).
+  virtual void expectGoalCommands(const std::vector<DeviceCommand>& commands, const AxisValues& target) const = 0;
+  /// How many recovery holds \p commands contain, beside those of a goal to \p target (by default: stops).
+  virtual std::size_t holds(const std::vector<DeviceCommand>& commands, const AxisValues& target) const;
+
+  /// A position goal at \p pan, \p tilt, with a zoom the device has (2x) or none (1x).
+  virtual AxisValues goal(double pan, double tilt) const
+  {
+    return AxisValues{ { pan, tilt, 1.0 } };
+  }
+};
+
+/// A named way to make a fixture, for INSTANTIATE_TEST_SUITE_P.
+struct FixtureMaker
+{
+  std::string name;
+  std::function<std::unique_ptr<DeviceFixture>()> make;
+};
+
+/// Every device backend over every transport it supports.
+std::vector<FixtureMaker> allDeviceFixtures();
+
+}  // namespace ptz_action_server

@@ -1,0 +1,255 @@
+/**
+ * \file
+ * \brief The backend contract suite: every device backend, over every transport it supports, against its emulator.
+ *
+ * A new device joins by adding a fixture to allDeviceFixtures(). The cases never assert how fast something took on
+ * the test's clock: they assert what the backend reported (a link that was still "up" after its deadline fails,
+ * wherever the test thread was), and they wait on conditions with generous deadlines.
+ */
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../wait_until.h"
+#include "device_fixtures.h"
+#include "ptz_action_server/core/goal_monitor.h"
+
+namespace ptz_action_server
+{
+namespace
+{
+constexpr double WAIT = 15.0;          ///< s: generous, for a loaded machine
+constexpr double DEADLINE_SLACK = 0.3;  ///< s a late report may stretch the state timeout (loaded I/O thread)
+
+class DeviceContract : public ::testing::TestWithParam<FixtureMaker>
+{
+protected:
+  void SetUp() override
+  {
+    device_ = GetParam().make();
+    backend_ = device_->makeBackend();
+    backend_->start();
+    ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT)) << "the link never came up";
+  }
+
+  double stateTimeout() const
+  {
+    return backend_->session().config().state_timeout;
+  }
+
+  bool atRest(const AxisValues& target) const
+  {
+    const PtzSample sample = backend_->sample();
+    const Capabilities capabilities = backend_->capabilities();
+    for (Axis axis : ALL_AXES)
+    {
+      if (capabilities.axes[axis].present && std::abs(sample.position[axis] - target[axis]) > 2e-3 * (axis == ZOOM ? 10 : 1))
+      {
+        return false;
+      }
+    }
+    return sample.link_up && !sample.moving;
+  }
+
+  bool waitForRest(const AxisValues& target)
+  {
+    return waitUntil([&] { return atRest(target); }, WAIT);
+  }
+
+  /// Starts a long goal and waits until the device moves fast towards it.
+  AxisValues startLongGoal()
+  {
+    const AxisValues far = device_->goal(2.0, 0.0);
+    backend_->goTo(far);
+    EXPECT_TRUE(waitUntil([&] { return device_->deviceState().position[PAN] > 0.5; }, WAIT));
+    return far;
+  }
+
+  /// Feeds samples to \p monitor until it ends the goal; remembers the last sample that still said "link up".
+  GoalVerdict superviseUntilFinal(GoalMonitor& monitor)
+  {
+    GoalVerdict verdict;
+    waitUntil(
+        [&] {
+          const PtzSample sample = backend_->sample();
+          if (sample.link_up)
+          {
+            last_up_at_ = sample.stamp;
+          }
+          verdict = monitor.update(sample, SteadyClock::now());
+          return verdict.phase != GoalPhase::ACTIVE;
+        },
+        WAIT);
+    return verdict;
+  }
+
+  GoalMonitor monitorFor(const AxisValues& target) const
+  {
+    return GoalMonitor::forPosition(target, backend_->sample(), backend_->capabilities(), GoalMonitorConfig(),
+                                    SteadyClock::now());
+  }
+
+  std::unique_ptr<DeviceFixture> device_;
+  std::unique_ptr<DeviceBackend> backend_;
+  TimePoint last_up_at_{};
+};
+
+TEST_P(DeviceContract, AGoalArrivesAsTheProtocolsCommandsAndIsReached)
+{
+  device_->clearCommands();
+  const AxisValues target = device_->goal(0.5, -0.2);
+  backend_->goTo(target);
+  ASSERT_TRUE(waitForRest(target)) << "pan " << backend_->sample().position[PAN] << ", tilt "
+                                   << backend_->sample().position[TILT] << "; sent " << describe(device_->commands());
+  device_->expectGoalCommands(device_->commands(), target);
+  // The signs held end to end: the device itself is where the contract says.
+  EXPECT_NEAR(device_->deviceState().position[PAN], target[PAN], 2e-3);
+  EXPECT_NEAR(device_->deviceState().position[TILT], target[TILT], 2e-3);
+  EXPECT_EQ(backend_->sample().fault_count, 0u);
+}
+
+TEST_P(DeviceContract, ANewGoalRetargetsTheMovingDeviceWithoutAStop)
+{
+  backend_->goTo(device_->goal(2.0, 0.0));
+  ASSERT_TRUE(waitUntil([&] { return device_->deviceState().position[PAN] > 0.5; }, WAIT));
+  device_->clearCommands();
+  const AxisValues second = device_->goal(2.5, 0.0);
+  backend_->goTo(second);
+  // Until well before it brakes for the new target, the device never slows down as a stop would make it.
+  double slowest = 1e9;
+  ASSERT_TRUE(waitUntil(
+      [&] {
+        const PtzSample state = device_->deviceState();
+        slowest = std::min(slowest, state.velocity[PAN]);
+        return state.position[PAN] > 1.5;
+      },
+      WAIT));
+  EXPECT_GT(slowest, 0.3) << "the device slowed to " << slowest << " rad/s";
+  ASSERT_TRUE(waitForRest(second));
+  for (const DeviceCommand& command : device_->commands())
+  {
+    EXPECT_NE(command.kind, DeviceCommand::Kind::STOP) << describe(device_->commands());
+  }
+}
+
+TEST_P(DeviceContract, CancelDeceleratesTheDeviceToRest)
+{
+  const AxisValues far = startLongGoal();
+  device_->clearCommands();
+  const double at_cancel = device_->deviceState().position[PAN];
+  backend_->stop();
+  ASSERT_TRUE(waitUntil([&] { return device_->holds(device_->commands(), far) > 0; }, WAIT))
+      << describe(device_->commands());
+  ASSERT_TRUE(waitUntil([&] { return !device_->deviceState().moving; }, WAIT));
+  const double stopped = device_->deviceState().position[PAN];
+  EXPECT_GT(stopped, at_cancel);        // it braked on: it did not jump back,
+  EXPECT_LT(stopped, far[PAN] - 0.2);   // and it did not go on to the target
+  ASSERT_TRUE(waitUntil([&] { return !backend_->sample().moving; }, WAIT));
+}
+
+TEST_P(DeviceContract, AVelocityGoalMovesAtTheRateUntilStopped)
+{
+  backend_->moveAtVelocity({ 0.3, 0.0, 0.0 });
+  ASSERT_TRUE(waitUntil([&] { return std::abs(device_->deviceState().velocity[PAN] - 0.3) < 0.05; }, WAIT))
+      << device_->deviceState().velocity[PAN];
+  ASSERT_TRUE(waitUntil([&] { return std::abs(backend_->sample().velocity[PAN] - 0.3) < 0.08; }, WAIT))
+      << backend_->sample().velocity[PAN];
+  backend_->stop();
+  ASSERT_TRUE(waitUntil([&] { return !device_->deviceState().moving && !backend_->sample().moving; }, WAIT));
+}
+
+TEST_P(DeviceContract, ARefusedCommandAbortsTheGoalWithTheDevicesWords)
+{
+  AxisValues refused{};
+  const std::string words = device_->prepareRefusal(refused);
+  if (words.empty())
+  {
+    GTEST_SKIP() << "this protocol has no error replies";
+  }
+  GoalMonitor monitor = monitorFor(refused);
+  backend_->goTo(refused);
+  const GoalVerdict verdict = superviseUntilFinal(monitor);
+  EXPECT_EQ(verdict.phase, GoalPhase::ABORTED) << verdict.reason;
+  EXPECT_TRUE(verdict.device_fault) << verdict.reason;
+  EXPECT_NE(backend_->lastFault().find(words), std::string::npos) << backend_->lastFault();
+}
+
+TEST_P(DeviceContract, SilenceEndsTheGoalAsLinkLostWithinTheDeadline)
+{
+  const AxisValues far = startLongGoal();
+  GoalMonitor monitor = monitorFor(far);
+  device_->setSilent(true);
+  const TimePoint silenced = SteadyClock::now();
+  const GoalVerdict verdict = superviseUntilFinal(monitor);
+  EXPECT_EQ(verdict.phase, GoalPhase::ABORTED) << verdict.reason;
+  EXPECT_TRUE(verdict.link_lost) << verdict.reason;
+  // No sample may say "up" past the deadline, however late this thread looked.
+  EXPECT_LE(secondsBetween(silenced, last_up_at_), stateTimeout() + DEADLINE_SLACK);
+  EXPECT_NE(backend_->lastLinkLoss().find("no state from"), std::string::npos) << backend_->lastLinkLoss();
+  EXPECT_EQ(backend_->sample().link_losses, 1u);
+}
+
+TEST_P(DeviceContract, RecoveryHoldsTheDeviceOnceAndAGoalSentRightAfterSucceeds)
+{
+  startLongGoal();
+  device_->setSilent(true);
+  ASSERT_TRUE(waitUntil([&] { return !backend_->sample().link_up; }, WAIT));
+  const std::uint64_t recoveries = backend_->session().counters().recoveries;
+  device_->clearCommands();
+  device_->setSilent(false);
+  ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT));
+  // At once, as a client would: the recovery must not override it.
+  const AxisValues target = device_->goal(-0.5, 0.1);
+  backend_->goTo(target);
+  ASSERT_TRUE(waitForRest(target)) << "sent " << describe(device_->commands());
+  EXPECT_EQ(backend_->session().counters().recoveries, recoveries + 1);
+  EXPECT_EQ(device_->holds(device_->commands(), target), 1u) << describe(device_->commands());
+}
+
+TEST_P(DeviceContract, ABrokenLinkEndsTheGoalAsLinkLostAndTheNextGoalWorks)
+{
+  const AxisValues far = startLongGoal();
+  GoalMonitor monitor = monitorFor(far);
+  device_->breakLink();
+  const TimePoint broken = SteadyClock::now();
+  const GoalVerdict verdict = superviseUntilFinal(monitor);
+  EXPECT_EQ(verdict.phase, GoalPhase::ABORTED) << verdict.reason;
+  EXPECT_TRUE(verdict.link_lost) << verdict.reason;
+  EXPECT_LE(secondsBetween(broken, last_up_at_), stateTimeout() + DEADLINE_SLACK);
+  EXPECT_NE(backend_->lastLinkLoss().find(device_->linkLossWords()), std::string::npos) << backend_->lastLinkLoss();
+
+  device_->restoreLink();
+  ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT)) << "no reconnection";
+  const AxisValues target = device_->goal(-0.4, 0.1);
+  backend_->goTo(target);
+  EXPECT_TRUE(waitForRest(target));
+}
+
+TEST_P(DeviceContract, ALinkThatBreaksAndReopensAtOnceStillEndsTheGoalAndTheDeviceIsHeld)
+{
+  if (!device_->breaksAtOnce())
+  {
+    GTEST_SKIP() << "no connection to break: on UDP only a silence longer than the state timeout is a loss";
+  }
+  const AxisValues far = startLongGoal();
+  GoalMonitor monitor = monitorFor(far);
+  device_->breakLink();
+  device_->restoreLink();  // back faster than the state timeout
+  const GoalVerdict verdict = superviseUntilFinal(monitor);
+  EXPECT_EQ(verdict.phase, GoalPhase::ABORTED) << verdict.reason;
+  EXPECT_TRUE(verdict.link_lost) << verdict.reason;
+  EXPECT_NE(backend_->lastLinkLoss().find(device_->linkLossWords()), std::string::npos) << backend_->lastLinkLoss();
+  // The old goal does not go on: once the device answers again it is held where it is.
+  ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT)) << "no reconnection";
+  ASSERT_TRUE(waitUntil([&] { return !device_->deviceState().moving; }, WAIT));
+  EXPECT_LT(device_->deviceState().position[PAN], far[PAN] - 0.2);
+  const AxisValues target = device_->goal(-0.3, -0.1);
+  backend_->goTo(target);
+  EXPECT_TRUE(waitForRest(target));
+}
+
+INSTANTIATE_TEST_SUITE_P(Devices, DeviceContract, ::testing::ValuesIn(allDeviceFixtures()),
+                         [](const ::testing::TestParamInfo<FixtureMaker>& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace ptz_action_server
