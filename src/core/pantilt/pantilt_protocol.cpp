@@ -45,9 +45,11 @@ void PanTiltProtocol::onReceived(const std::uint8_t* data, std::size_t size)
 {
   DecodeError error = DecodeError::NONE;
   cr::pantilt::PanTiltParams params;
-  if (!params.decode(data, static_cast<int>(size), settings_.version, &error))
+  // Longer than any params frame: a bad size, whatever its first bytes say.
+  const bool oversized = size > static_cast<std::size_t>(cr::pantilt::MAX_PARAMS_FRAME_SIZE);
+  if (oversized || !params.decode(data, static_cast<int>(size), settings_.version, &error))
   {
-    switch (error)
+    switch (oversized ? DecodeError::BAD_SIZE : error)
     {
       case DecodeError::BAD_HEADER:
         ++counters_.bad_header;

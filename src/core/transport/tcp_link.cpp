@@ -77,7 +77,8 @@ private:
       }
     });
     boost::asio::async_connect(
-        stream_, found, [this, connection = connection()](const boost::system::error_code& error, const tcp::endpoint&) {
+        stream_, found,
+        [this, connection = connection()](const boost::system::error_code& error, const tcp::endpoint&) {
           if (connection != this->connection())
           {
             return;

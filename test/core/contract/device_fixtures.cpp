@@ -138,10 +138,9 @@ public:
     {
       texts.push_back(command.text);
     }
-    const std::vector<std::string> expected = {
-      "CI", "PS1671", "TS1114", "PP" + std::to_string(std::lround(-target[PAN] / resolution)),
-      "TP" + std::to_string(std::lround(target[TILT] / resolution))
-    };
+    const std::vector<std::string> expected = { "CI", "PS1671", "TS1114",
+                                                "PP" + std::to_string(std::lround(-target[PAN] / resolution)),
+                                                "TP" + std::to_string(std::lround(target[TILT] / resolution)) };
     EXPECT_EQ(texts, expected);
   }
 
@@ -243,8 +242,9 @@ public:
       return hex(std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
     };
     EXPECT_EQ(sent[0].text, text(pelco::withValue(7, pelco::SET_PAN, pelco::encodePan(toDegrees(target[PAN])))));
-    EXPECT_EQ(sent[1].text, text(pelco::withValue(7, pelco::SET_TILT, pelco::encodeTilt(toDegrees(target[TILT]),
-                                                                                          config_.pelco.tilt_encoding))));
+    EXPECT_EQ(sent[1].text,
+              text(pelco::withValue(7, pelco::SET_TILT,
+                                    pelco::encodeTilt(toDegrees(target[TILT]), config_.pelco.tilt_encoding))));
     EXPECT_EQ(sent[2].text, text(pelco::withValue(7, pelco::SET_ZOOM, config_.pelco.zoomToPosition(target[ZOOM]))));
   }
 

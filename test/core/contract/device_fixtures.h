@@ -27,7 +27,7 @@ struct DeviceCommand
   };
   TimePoint at;
   Kind kind = Kind::OTHER;
-  std::string text;  ///< readable, for failure messages
+  std::string text;   ///< readable, for failure messages
   bool aims = false;  ///< the command carries a pan it aims at (pan)
   double pan = 0.0;   ///< rad, the contract's sign
 };

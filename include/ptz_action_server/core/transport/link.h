@@ -38,9 +38,9 @@ const char* toString(LinkKind kind);
 struct LinkConfig
 {
   LinkKind kind = LinkKind::SERIAL;
-  std::string path;              ///< serial: e.g. /dev/ttyUSB0, or a udev / emulator symlink
-  unsigned baud = 9600;          ///< serial: standard rates only (a pseudo-terminal accepts no others)
-  double identity_check = 0.25;  ///< serial: s between checks that the path still names the open device
+  std::string path;                    ///< serial: e.g. /dev/ttyUSB0, or a udev / emulator symlink
+  unsigned baud = 9600;                ///< serial: standard rates only (a pseudo-terminal accepts no others)
+  double identity_check = 0.25;        ///< serial: s between checks that the path still names the open device
   std::string host = "127.0.0.1";      ///< tcp, udp: the device's address or name
   std::uint16_t port = 0;              ///< tcp, udp: the device's port
   std::string local_host = "0.0.0.0";  ///< udp: the address the device's datagrams arrive at

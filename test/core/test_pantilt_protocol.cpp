@@ -1,0 +1,209 @@
+/**
+ * \file
+ * \brief What only the pantilt_udp backend does, against the PanTilt emulator on 127.0.0.1 with ephemeral ports
+ * (the backend contract suite covers what every device does).
+ */
+#include <gtest/gtest.h>
+
+#include "wait_until.h"
+
+#include <chrono>
+#include <functional>
+#include <thread>
+
+#include "ptz_action_server/core/pantilt/pantilt_protocol.h"
+#include "ptz_action_server/emulators/pantilt_emulator.h"
+
+using namespace ptz_action_server;
+using namespace cr::pantilt;
+using Bytes = std::vector<std::uint8_t>;
+
+namespace
+{
+/// The frames the device received that are not state requests (params frames).
+std::vector<Bytes> commandsReceived(const PanTiltEmulator& device)
+{
+  std::vector<Bytes> commands;
+  for (const ReceivedDatagram& datagram : device.received())
+  {
+    if (!datagram.bytes.empty() && datagram.bytes[0] != PARAMS_HEADER)
+    {
+      commands.push_back(datagram.bytes);
+    }
+  }
+  return commands;
+}
+
+Bytes setParamFrame(PanTiltParam id, float value, WireVersion version)
+{
+  Bytes frame(SET_PARAM_SIZE);
+  int size = 0;
+  PanTilt::encodeSetParamCommand(frame.data(), size, id, value, version);
+  return frame;
+}
+
+Bytes commandFrame(PanTiltCommand id, WireVersion version, float arg1 = 0.0f, float arg2 = 0.0f)
+{
+  Bytes frame(COMMAND_SIZE_V1_1);
+  int size = 0;
+  PanTilt::encodeCommand(frame.data(), size, id, version, arg1, arg2);
+  frame.resize(static_cast<std::size_t>(size));
+  return frame;
+}
+
+class PanTiltUdpTest : public ::testing::TestWithParam<WireVersion>
+{
+protected:
+  void SetUp() override
+  {
+    PanTiltEmulatorConfig device_config;
+    device_config.version = GetParam();
+    device_config.state_period = 0.05;
+    device_ = std::make_unique<PanTiltEmulator>(device_config);
+    PanTiltConfig config;
+    config.pantilt.version = GetParam();
+    config.link.port = device_->endpoint().port();
+    config.link.local_host = "127.0.0.1";
+    config.link.local_port = localPort();
+    local_port_ = config.link.local_port;
+    backend_ = makePanTiltBackend(config);
+    backend_->start();
+    ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, 10.0)) << "the link never came up";
+  }
+
+  bool waitForRest(double pan, double tilt, double timeout = 10.0)
+  {
+    return waitUntil(
+        [&] {
+          const PtzSample sample = backend_->sample();
+          return !sample.moving && std::abs(sample.position[PAN] - pan) < 2e-3 &&
+                 std::abs(sample.position[TILT] - tilt) < 2e-3;
+        },
+        timeout);
+  }
+
+  /// A free UDP port for the backend, so the test can send it datagrams.
+  static std::uint16_t localPort()
+  {
+    UdpSocket probe;
+    probe.bind("127.0.0.1", 0);
+    return probe.localEndpoint().port();
+  }
+
+  PanTiltCounters counters() const
+  {
+    return backend_->protocol<PanTiltProtocol>().counters();
+  }
+  /// Every datagram dropped: from strangers (the link's count) and from the device (the protocol's).
+  std::uint64_t dropped() const
+  {
+    return backend_->session().linkCounters().foreign_datagrams + counters().dropped();
+  }
+
+  std::unique_ptr<PanTiltEmulator> device_;
+  std::unique_ptr<DeviceBackend> backend_;
+  std::uint16_t local_port_ = 0;
+};
+}  // namespace
+
+TEST_P(PanTiltUdpTest, VelocityGoalsMoveAndStop)
+{
+  const WireVersion version = GetParam();
+  device_->clearReceived();
+  backend_->moveAtVelocity({ -0.75, 0.0, 0.0 });
+  ASSERT_TRUE(waitUntil([&] { return backend_->sample().velocity[PAN] < -0.7; }, 10.0))
+      << backend_->sample().velocity[PAN];
+  const std::vector<Bytes> commands = commandsReceived(*device_);
+  if (version == WireVersion::V1_1)
+  {
+    EXPECT_EQ(commands.front(), commandFrame(PanTiltCommand::MOVE_PAN_TILT, version, -50.0f, 0.0f));
+  }
+  else
+  {
+    // 1.0: the speed as a motor-speed param, and a move towards the limit.
+    EXPECT_EQ(commands.front(), setParamFrame(PanTiltParam::PAN_MOTOR_SPEED, 50.0f, version));
+    EXPECT_EQ(commands[1], setParamFrame(PanTiltParam::PAN_ANGLE, -180.0f, version));
+    EXPECT_EQ(commands[2], setParamFrame(PanTiltParam::TILT_MOTOR_SPEED, 100.0f, version));  // tilt holds
+    EXPECT_EQ(commands[4], commandFrame(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, version));
+  }
+  backend_->stop();
+  EXPECT_TRUE(waitUntil([&] { return !backend_->sample().moving; }, 10.0));
+  // The next position goal runs at the configured speed again.
+  backend_->goTo({ 2.0, 0.0, 1.0 });
+  EXPECT_TRUE(waitUntil([&] { return backend_->sample().velocity[PAN] > 1.4; }, 10.0));
+}
+
+TEST_P(PanTiltUdpTest, MalformedDatagramsAreCountedOnceAndDropped)
+{
+  const WireVersion version = GetParam();
+  const UdpEndpoint backend_endpoint = UdpEndpoint::resolve("127.0.0.1", local_port_);
+  UdpSocket stranger;
+  stranger.bind("127.0.0.1", 0);
+
+  PanTiltParams params;
+  Bytes valid(MAX_PARAMS_FRAME_SIZE);
+  int size = 0;
+  params.encode(valid.data(), static_cast<int>(valid.size()), size, nullptr, version);
+  valid.resize(static_cast<std::size_t>(size));
+  const Bytes bad_size(valid.begin(), valid.end() - 1);
+  Bytes bad_header = valid;
+  bad_header[0] = 0x00;
+  Bytes bad_version = valid;
+  bad_version[2] ^= 0x01;
+  Bytes bad_mask = valid;
+  bad_mask[4] |= 0x01;
+  const Bytes empty;
+  const Bytes oversized(4000, 0x02);
+  const std::vector<const Bytes*> from_device = { &bad_size, &bad_header, &bad_version, &bad_mask, &empty, &oversized };
+
+  const PanTiltCounters before = counters();
+  const std::uint64_t dropped_before = dropped();
+  const std::uint64_t foreign_before = backend_->session().linkCounters().foreign_datagrams;
+  constexpr int TOTAL = 10000;
+  constexpr int BATCH = 25;  // paced so that the kernel's socket buffer (~200 kB of small datagrams) never overflows
+  for (int sent = 0; sent < TOTAL; sent += 2 * BATCH)
+  {
+    for (int index = 0; index < BATCH; ++index)
+    {
+      stranger.sendTo(backend_endpoint, valid.data(), valid.size());  // a valid frame, but from a stranger
+      const Bytes& garbage = *from_device[static_cast<std::size_t>(sent / 2 + index) % from_device.size()];
+      device_->sendRaw(backend_endpoint, garbage.data(), garbage.size());
+    }
+    ASSERT_TRUE(waitUntil([&] { return dropped() - dropped_before >= std::uint64_t(sent + 2 * BATCH); }, 10.0))
+        << "the backend stopped counting at " << dropped() - dropped_before << " size " << counters().bad_size
+        << " header " << counters().bad_header << " version " << counters().bad_version << " mask "
+        << counters().bad_mask;
+  }
+  const PanTiltCounters after = counters();
+  EXPECT_EQ(backend_->session().linkCounters().foreign_datagrams - foreign_before, TOTAL / 2u);
+  // 5000 from the device's port, spread over six kinds; empty and oversized count as bad size.
+  const std::uint64_t bad_sizes = after.bad_size - before.bad_size;
+  const std::uint64_t bad_headers = after.bad_header - before.bad_header;
+  const std::uint64_t bad_versions = after.bad_version - before.bad_version;
+  const std::uint64_t bad_masks = after.bad_mask - before.bad_mask;
+  EXPECT_EQ(bad_sizes + bad_headers + bad_versions + bad_masks, TOTAL / 2u);
+  EXPECT_NEAR(static_cast<double>(bad_sizes), TOTAL / 2.0 * 3 / 6, 2.0);
+  EXPECT_NEAR(static_cast<double>(bad_headers), TOTAL / 2.0 / 6, 2.0);
+  EXPECT_NEAR(static_cast<double>(bad_versions), TOTAL / 2.0 / 6, 2.0);
+  EXPECT_NEAR(static_cast<double>(bad_masks), TOTAL / 2.0 / 6, 2.0);
+
+  // Invalid frames are no sign of life: with the device silent, garbage from its port keeps nothing up.
+  device_->setSilent(true);
+  const TimePoint silenced = SteadyClock::now();
+  EXPECT_TRUE(waitUntil(
+      [&] {
+        device_->sendRaw(backend_endpoint, bad_header.data(), bad_header.size());
+        stranger.sendTo(backend_endpoint, valid.data(), valid.size());
+        return !backend_->sample().link_up && secondsBetween(silenced, SteadyClock::now()) > 0.8;
+      },
+      10.0, std::chrono::milliseconds(10)));
+  device_->setSilent(false);
+  ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, 10.0));
+  backend_->goTo({ 0.2, 0.0, 1.0 });
+  EXPECT_TRUE(waitForRest(0.2, 0.0));
+}
+
+INSTANTIATE_TEST_SUITE_P(BothWireVersions, PanTiltUdpTest, ::testing::Values(WireVersion::V1_0, WireVersion::V1_1),
+                         [](const ::testing::TestParamInfo<WireVersion>& info) {
+                           return info.param == WireVersion::V1_0 ? std::string("V1_0") : std::string("V1_1");
+                         });
