@@ -617,7 +617,7 @@ int main(int argc, char** argv)
         "pantilt_udp",
         [&device] {
           std::vector<Arrival> arrivals;
-          for (const ReceivedDatagram& datagram : device.received())
+          for (const ReceivedDatagram& datagram : device.received().items())
           {
             if (!datagram.bytes.empty() && datagram.bytes[0] != cr::pantilt::PARAMS_HEADER)
             {
@@ -638,7 +638,7 @@ int main(int argc, char** argv)
         "digiview",
         [&device] {
           std::vector<Arrival> arrivals;
-          for (const ReceivedMessage& item : device.received())
+          for (const ReceivedMessage& item : device.received().items())
           {
             if (item.message.message_type == digiview::MessageType::SET_PARAMETERS &&
                 item.message.param_type == digiview::ParamType::CAM_TARGETING)
@@ -661,7 +661,7 @@ int main(int argc, char** argv)
         "serial flir at " + std::to_string(baud) + " baud",
         [&device, byte_time] {
           std::vector<Arrival> arrivals;
-          for (const ReceivedCommand& command : device.received())
+          for (const ReceivedCommand& command : device.received().items())
           {
             if (command.text != "PP" && command.text != "TP")  // polls
             {
@@ -683,7 +683,7 @@ int main(int argc, char** argv)
         "serial pelco_d at " + std::to_string(baud) + " baud",
         [&device, byte_time] {
           std::vector<Arrival> arrivals;
-          for (const ReceivedFrame& item : device.received())
+          for (const ReceivedFrame& item : device.received().items())
           {
             const std::uint8_t command = item.frame.command2;
             if (command != pelco::QUERY_PAN && command != pelco::QUERY_TILT && command != pelco::QUERY_ZOOM)

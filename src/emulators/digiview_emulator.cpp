@@ -141,22 +141,6 @@ void DigiViewEmulator::dropConnections()
   });
 }
 
-std::vector<ReceivedMessage> DigiViewEmulator::received() const
-{
-  return received_.items();
-}
-
-void DigiViewEmulator::clearReceived()
-{
-  received_.clear();
-}
-
-bool DigiViewEmulator::waitForReceived(const std::function<bool(const ReceivedMessage&)>& predicate,
-                                       double timeout) const
-{
-  return received_.waitFor(predicate, timeout);
-}
-
 std::size_t DigiViewEmulator::connections() const
 {
   std::lock_guard<std::mutex> lock(mutex_);

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "ptz_action_server/core/units.h"
+
 namespace ptz_action_server
 {
 namespace
@@ -26,7 +28,7 @@ bool isDelimiter(char character)
 
 SimDeviceConfig modelConfig(const FlirPtuEmulatorConfig& config)
 {
-  const double resolution = config.resolution / 3600.0 * M_PI / 180.0;
+  const double resolution = arcSecondsToRadians(config.resolution);
   SimDeviceConfig model = SimDeviceConfig::defaults();
   // The unit's positive pan is counter-clockwise; the model's is the contract's clockwise.
   model.axes[PAN].range = AxisRange{ -config.pan_max * resolution, -config.pan_min * resolution };
@@ -43,21 +45,21 @@ SimDeviceConfig modelConfig(const FlirPtuEmulatorConfig& config)
 }  // namespace
 
 FlirPtuEmulator::FlirPtuEmulator(const FlirPtuEmulatorConfig& config)
-  : config_(config)
-  , resolution_rad_(config.resolution / 3600.0 * M_PI / 180.0)
-  , model_(modelConfig(config), SteadyClock::now())
-  , port_(DevicePort::create(config.port, DevicePort::Handlers{ [this](const std::uint8_t* data, std::size_t size,
-                                                                       TimePoint at) { onBytes(data, size, at); },
-                                                                [this] { onTick(); }, [this] { greet(); } }))
+  : LineEmulator(modelConfig(config)), config_(config), resolution_rad_(arcSecondsToRadians(config.resolution))
 {
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    powerUp();
-  }
-  port_->start();
+  // Under the lock: the port's thread waits until the unit has powered up.
+  std::lock_guard<std::mutex> lock(mutex_);
+  openPort(config.port, DevicePort::Handlers{ [this](const std::uint8_t* data, std::size_t size, TimePoint at) {
+                                               onBytes(data, size, at);
+                                             },
+                                              [this] { onTick(); }, [this] { greet(); } });
+  powerUp();
 }
 
-FlirPtuEmulator::~FlirPtuEmulator() = default;
+FlirPtuEmulator::~FlirPtuEmulator()
+{
+  closePort();
+}
 
 void FlirPtuEmulator::powerUp()
 {
@@ -87,46 +89,6 @@ void FlirPtuEmulator::greet()
   port_->send(TCP_BANNER);
   banner_ready_at_ = addSeconds(SteadyClock::now(), TCP_BANNER_DELAY);
   banner_pending_ = true;
-}
-
-void FlirPtuEmulator::unplug()
-{
-  port_->unplug();
-}
-
-void FlirPtuEmulator::replug()
-{
-  port_->replug();
-  std::lock_guard<std::mutex> lock(mutex_);
-  model_.stop(SteadyClock::now());  // a unit that lost power stops
-  powerUp();
-}
-
-std::vector<ReceivedCommand> FlirPtuEmulator::received() const
-{
-  return received_.items();
-}
-
-void FlirPtuEmulator::clearReceived()
-{
-  received_.clear();
-}
-
-bool FlirPtuEmulator::waitForCommand(const std::function<bool(const ReceivedCommand&)>& predicate, double timeout) const
-{
-  return received_.waitFor(predicate, timeout);
-}
-
-PtzSample FlirPtuEmulator::sample() const
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  return model_.sample(SteadyClock::now());
-}
-
-void FlirPtuEmulator::setFaults(const SimFaults& faults)
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  model_.setFaults(faults, SteadyClock::now());
 }
 
 void FlirPtuEmulator::onBytes(const std::uint8_t* data, std::size_t size, TimePoint arrived_at)

@@ -54,21 +54,6 @@ void PanTiltEmulator::setReplyDelay(double seconds)
   reply_delay_ = std::max(0.0, seconds);
 }
 
-std::vector<ReceivedDatagram> PanTiltEmulator::received() const
-{
-  return received_.items();
-}
-
-void PanTiltEmulator::clearReceived()
-{
-  received_.clear();
-}
-
-bool PanTiltEmulator::waitForReceived(std::size_t count, double timeout) const
-{
-  return received_.waitForCount(count, timeout);
-}
-
 void PanTiltEmulator::sendRaw(const UdpEndpoint& to, const std::uint8_t* data, std::size_t size)
 {
   socket_.sendTo(to, data, size);

@@ -3,80 +3,32 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ptz_action_server/core/units.h"
+
 namespace ptz_action_server
 {
-namespace
-{
-
-double radians(double degrees)
-{
-  return degrees * M_PI / 180.0;
-}
-
-double degrees(double radians)
-{
-  return radians * 180.0 / M_PI;
-}
-}  // namespace
-
 PelcoDEmulator::PelcoDEmulator(const PelcoDEmulatorConfig& config)
-  : config_(config)
-  , model_(config.device, SteadyClock::now())
-  , parser_(config.address, false)
-  , port_(DevicePort::create(config.port, DevicePort::Handlers{ [this](const std::uint8_t* data, std::size_t size,
-                                                                       TimePoint at) { onBytes(data, size, at); },
-                                                                {},
-                                                                {} }))
+  : LineEmulator(config.device), config_(config), parser_(config.address, false)
 {
-  port_->start();
+  openPort(config.port,
+           DevicePort::Handlers{
+               [this](const std::uint8_t* data, std::size_t size, TimePoint at) { onBytes(data, size, at); }, {}, {} });
 }
 
-PelcoDEmulator::~PelcoDEmulator() = default;
-
-void PelcoDEmulator::unplug()
+PelcoDEmulator::~PelcoDEmulator()
 {
-  port_->unplug();
+  closePort();
 }
 
-void PelcoDEmulator::replug()
+void PelcoDEmulator::powerUp()
 {
-  port_->replug();
-  std::lock_guard<std::mutex> lock(mutex_);
   parser_.reset();
-  model_.stop(SteadyClock::now());
-}
-
-std::vector<ReceivedFrame> PelcoDEmulator::received() const
-{
-  return received_.items();
-}
-
-void PelcoDEmulator::clearReceived()
-{
-  received_.clear();
-}
-
-bool PelcoDEmulator::waitForFrame(const std::function<bool(const ReceivedFrame&)>& predicate, double timeout) const
-{
-  return received_.waitFor(predicate, timeout);
 }
 
 pelco::ParserCounters PelcoDEmulator::parserCounters() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
   return parser_.counters();
-}
-
-PtzSample PelcoDEmulator::sample() const
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  return model_.sample(SteadyClock::now());
-}
-
-void PelcoDEmulator::setFaults(const SimFaults& faults)
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  model_.setFaults(faults, SteadyClock::now());
 }
 
 void PelcoDEmulator::onBytes(const std::uint8_t* data, std::size_t size, TimePoint arrived_at)
@@ -118,20 +70,20 @@ std::vector<std::uint8_t> PelcoDEmulator::execute(const pelco::Frame& frame, Tim
   switch (frame.command2)
   {
     case pelco::QUERY_PAN:
-      return answer(pelco::withValue(address, pelco::PAN_REPLY, pelco::encodePan(degrees(now.position[PAN]))));
+      return answer(pelco::withValue(address, pelco::PAN_REPLY, pelco::encodePan(toDegrees(now.position[PAN]))));
     case pelco::QUERY_TILT:
       return answer(pelco::withValue(address, pelco::TILT_REPLY,
-                                     pelco::encodeTilt(degrees(now.position[TILT]), config_.tilt_encoding)));
+                                     pelco::encodeTilt(toDegrees(now.position[TILT]), config_.tilt_encoding)));
     case pelco::QUERY_ZOOM: {
       const double share = zoom.max > zoom.min ? (now.position[ZOOM] - zoom.min) / (zoom.max - zoom.min) : 0.0;
       return answer(pelco::withValue(address, pelco::ZOOM_REPLY,
                                      static_cast<std::uint16_t>(std::lround(share * config_.zoom_position_max))));
     }
     case pelco::SET_PAN:
-      model_.goToAxis(PAN, radians(pelco::decodePan(frame.value())), at);
+      model_.goToAxis(PAN, toRadians(pelco::decodePan(frame.value())), at);
       break;
     case pelco::SET_TILT:
-      model_.goToAxis(TILT, radians(pelco::decodeTilt(frame.value(), config_.tilt_encoding)), at);
+      model_.goToAxis(TILT, toRadians(pelco::decodeTilt(frame.value(), config_.tilt_encoding)), at);
       break;
     case pelco::SET_ZOOM:
       model_.goToAxis(

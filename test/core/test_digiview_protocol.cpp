@@ -35,7 +35,7 @@ DigiViewConfig backendConfig(const DigiViewEmulator& emulator, LinkKind transpor
 
 bool received(const DigiViewEmulator& emulator, MessageType type, digiview::ParamType param)
 {
-  for (const ReceivedMessage& item : emulator.received())
+  for (const ReceivedMessage& item : emulator.received().items())
   {
     if (item.error == UnpackError::NONE && item.message.message_type == type && item.message.param_type == param)
     {
@@ -69,7 +69,7 @@ TEST(DigiViewBackend, QuitIsSentAtShutdownAndClosesTheConnection)
     auto backend = makeDigiViewBackend(backendConfig(emulator));
     backend->start();
     ASSERT_TRUE(waitUntil([&] { return emulator.connections() == 1; }, WAIT));
-    emulator.clearReceived();
+    emulator.received().clear();
   }
   EXPECT_TRUE(received(emulator, MessageType::GET_INTERVAL, digiview::ParamType::CAM_TARGETING));  // interval 0
   EXPECT_TRUE(received(emulator, MessageType::QUIT, digiview::ParamType::SYSTEM_STATUS));

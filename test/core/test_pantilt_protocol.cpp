@@ -24,7 +24,7 @@ namespace
 std::vector<Bytes> commandsReceived(const PanTiltEmulator& device)
 {
   std::vector<Bytes> commands;
-  for (const ReceivedDatagram& datagram : device.received())
+  for (const ReceivedDatagram& datagram : device.received().items())
   {
     if (!datagram.bytes.empty() && datagram.bytes[0] != PARAMS_HEADER)
     {
@@ -109,7 +109,7 @@ protected:
 TEST_P(PanTiltUdpTest, VelocityGoalsMoveAndStop)
 {
   const WireVersion version = GetParam();
-  device_->clearReceived();
+  device_->received().clear();
   backend_->moveAtVelocity({ -0.75, 0.0, 0.0 });
   ASSERT_TRUE(waitUntil([&] { return backend_->sample().velocity[PAN] < -0.7; }, 10.0))
       << backend_->sample().velocity[PAN];

@@ -102,7 +102,7 @@ protected:
 
   bool received(const std::string& command) const
   {
-    for (const ReceivedCommand& item : emulator_->received())
+    for (const ReceivedCommand& item : emulator_->received().items())
     {
       if (item.text == command)
       {
@@ -136,7 +136,7 @@ TEST_F(FlirTest, StartupReadsResolutionLimitsAndSpeedsFromTheUnit)
 
 TEST_F(FlirTest, VelocityGoalsUseVelocityModeWithTheUnitsSign)
 {
-  emulator_->clearReceived();
+  emulator_->received().clear();
   backend_->moveAtVelocity({ 0.3, 0.0, 0.0 });
   ASSERT_TRUE(waitUntil([&] { return backend_->sample().velocity[PAN] > 0.25; }, WAIT));
   EXPECT_TRUE(received("CV"));
@@ -191,7 +191,7 @@ TEST(FlirTcp, AnEseriesUnitIsSetUpAfterItsBannerOnEveryConnection)
   backend->start();
   ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
   // The banner's `Initializing...*` is no reply: it must not have been taken for FT's.
-  const std::vector<ReceivedCommand> commands = emulator.received();
+  const std::vector<ReceivedCommand> commands = emulator.received().items();
   ASSERT_FALSE(commands.empty());
   EXPECT_EQ(commands.front().text, "FT");
   EXPECT_EQ(backend->protocol<FlirProtocol>().counters().errors, 0u);
@@ -220,7 +220,7 @@ protected:
   std::vector<pelco::Frame> commandsReceived() const
   {
     std::vector<pelco::Frame> frames;
-    for (const ReceivedFrame& item : emulator_->received())
+    for (const ReceivedFrame& item : emulator_->received().items())
     {
       const std::uint8_t command = item.frame.command2;
       if (command != pelco::QUERY_PAN && command != pelco::QUERY_TILT && command != pelco::QUERY_ZOOM)
@@ -237,13 +237,14 @@ protected:
 
 TEST_F(PelcoTest, VelocityGoalsBecomeMovementFramesWithScaledSpeeds)
 {
-  emulator_->clearReceived();
+  emulator_->received().clear();
   backend_->moveAtVelocity({ -0.75, 0.5, 0.0 });
   ASSERT_TRUE(waitUntil([&] { return backend_->sample().velocity[PAN] < -0.6; }, WAIT));
   ASSERT_FALSE(commandsReceived().empty());
   EXPECT_EQ(commandsReceived().front(), pelco::move(7, -32, 32, 0));  // half and half speed: 0x20
   backend_->stop();
-  ASSERT_TRUE(emulator_->waitForFrame([](const ReceivedFrame& item) { return item.frame == pelco::stop(7); }, WAIT));
+  ASSERT_TRUE(
+      emulator_->received().waitFor([](const ReceivedFrame& item) { return item.frame == pelco::stop(7); }, WAIT));
   EXPECT_TRUE(waitUntil([&] { return !emulator_->sample().moving; }, WAIT));
 }
 

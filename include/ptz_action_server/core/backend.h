@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +16,16 @@ namespace ptz_action_server
 {
 /// A name/value pair a backend reports in the node's diagnostics.
 using DiagnosticValue = std::pair<std::string, std::string>;
+
+/// Appends counts as diagnostics values, in the order given.
+inline void addCounts(std::vector<DiagnosticValue>& values,
+                      std::initializer_list<std::pair<const char*, std::uint64_t>> counts)
+{
+  for (const auto& count : counts)
+  {
+    values.emplace_back(count.first, std::to_string(count.second));
+  }
+}
 
 /**
  * \brief A pan-tilt(-zoom) device, seen by the node.

@@ -53,7 +53,7 @@ private:
   mutable SimDeviceModel model_;  ///< mutable: sampling applies commands whose lag has passed
   bool dropout_ = false;
   std::uint64_t link_losses_ = 0;  ///< dropouts so far
-  PtzSample frozen_sample_;  ///< what the device last said before it dropped out
+  PtzSample frozen_sample_;        ///< what the device last said before it dropped out
   std::uint64_t commands_received_ = 0;
   std::uint64_t commands_lost_ = 0;
 };

@@ -76,9 +76,15 @@ public:
   /// Closes every TCP connection (the client sees the connection drop).
   void dropConnections();
 
-  std::vector<ReceivedMessage> received() const;
-  void clearReceived();
-  bool waitForReceived(const std::function<bool(const ReceivedMessage&)>& predicate, double timeout) const;
+  /// What the device received, oldest first.
+  ReceivedLog<ReceivedMessage>& received()
+  {
+    return received_;
+  }
+  const ReceivedLog<ReceivedMessage>& received() const
+  {
+    return received_;
+  }
   std::size_t connections() const;
 
   /// The view's state: yaw, pitch (rad) and field of view (rad, in the zoom slot). Throws for an unknown view.

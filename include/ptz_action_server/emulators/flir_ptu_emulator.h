@@ -11,8 +11,7 @@
 #include <vector>
 
 #include "ptz_action_server/core/sim_device_model.h"
-#include "ptz_action_server/emulators/device_port.h"
-#include "ptz_action_server/emulators/received_log.h"
+#include "ptz_action_server/emulators/line_emulator.h"
 
 namespace ptz_action_server
 {
@@ -47,41 +46,19 @@ struct ReceivedCommand
  * mode), PA/TA, H/HP/HT, R, LE/LD; answers anything else with `! Illegal Command`. Reports `!P` / `!T` when a
  * velocity move reaches a limit.
  */
-class FlirPtuEmulator
+class FlirPtuEmulator : public LineEmulator<ReceivedCommand>
 {
 public:
   explicit FlirPtuEmulator(const FlirPtuEmulatorConfig& config);
-  ~FlirPtuEmulator();
-
-  /// The path a client opens.
-  std::string path() const
-  {
-    return port_->path();
-  }
-  DevicePort& port()
-  {
-    return *port_;
-  }
-  /// Closes the port and removes its link, as pulling the cable does.
-  void unplug();
-  /// A new pseudo-terminal under the same link; the unit restarts as at power-up (banner, echo, verbose).
-  void replug();
-
-  std::vector<ReceivedCommand> received() const;
-  void clearReceived();
-  /// Waits until a received command satisfies \p predicate, or \p timeout s pass.
-  bool waitForCommand(const std::function<bool(const ReceivedCommand&)>& predicate, double timeout) const;
-
-  /// The model's state (rad), for tests.
-  PtzSample sample() const;
-  void setFaults(const SimFaults& faults);
+  ~FlirPtuEmulator() override;
 
 private:
   void onBytes(const std::uint8_t* data, std::size_t size, TimePoint arrived_at);
   void onTick();
   void execute(const std::string& command, TimePoint at);
   std::string reply(const std::string& letters, bool has_value, long value, TimePoint at);
-  void powerUp();
+  /// Position mode, the default speeds; on a serial line the banner, echo on, verbose.
+  void powerUp() override;
   /// tcp: an E-series unit greets every connection (echo on, verbose, a banner).
   void greet();
   long position(Axis axis, TimePoint at);
@@ -90,8 +67,7 @@ private:
   const FlirPtuEmulatorConfig config_;
   const double resolution_rad_;
 
-  mutable std::mutex mutex_;      ///< guards everything below
-  mutable SimDeviceModel model_;  ///< mutable: sampling applies lagged commands
+  // Guarded by mutex_.
   bool echo_ = true;
   bool terse_ = false;
   bool velocity_mode_ = false;
@@ -99,11 +75,8 @@ private:
   std::array<long, 2> velocity_{ { 0, 0 } };  ///< commanded velocity in CV mode (positions/s)
   std::array<bool, 2> limit_reported_{ { false, false } };
   std::string token_;
-  ReceivedLog<ReceivedCommand> received_;
   TimePoint banner_ready_at_{};  ///< tcp: when the banner's last line goes out (the unit needs a moment)
   bool banner_pending_ = false;
-
-  std::unique_ptr<DevicePort> port_;  ///< last: its thread calls back into everything above
 };
 
 }  // namespace ptz_action_server

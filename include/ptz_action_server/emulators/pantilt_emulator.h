@@ -81,11 +81,15 @@ public:
   void setDropRatio(double ratio);
   void setReplyDelay(double seconds);
 
-  /// The last datagrams that reached the device (at most 10000), oldest first.
-  std::vector<ReceivedDatagram> received() const;
-  void clearReceived();
-  /// Waits until at least \p count datagrams are in received(), or \p timeout s pass.
-  bool waitForReceived(std::size_t count, double timeout) const;
+  /// What the device received, oldest first.
+  ReceivedLog<ReceivedDatagram>& received()
+  {
+    return received_;
+  }
+  const ReceivedLog<ReceivedDatagram>& received() const
+  {
+    return received_;
+  }
 
   /// Sends raw bytes from the device's own socket (tests: garbage from the device's address).
   void sendRaw(const UdpEndpoint& to, const std::uint8_t* data, std::size_t size);

@@ -12,8 +12,7 @@
 
 #include "ptz_action_server/core/pelco_d/pelco_d_codec.h"
 #include "ptz_action_server/core/sim_device_model.h"
-#include "ptz_action_server/emulators/device_port.h"
-#include "ptz_action_server/emulators/received_log.h"
+#include "ptz_action_server/emulators/line_emulator.h"
 
 namespace ptz_action_server
 {
@@ -39,44 +38,25 @@ struct ReceivedFrame
  * position queries (answered with 0x59 / 0x5B / 0x5D) and presets. Frames for other addresses are ignored, frames
  * with a bad checksum are counted and dropped.
  */
-class PelcoDEmulator
+class PelcoDEmulator : public LineEmulator<ReceivedFrame>
 {
 public:
   explicit PelcoDEmulator(const PelcoDEmulatorConfig& config);
-  ~PelcoDEmulator();
+  ~PelcoDEmulator() override;
 
-  std::string path() const
-  {
-    return port_->path();
-  }
-  DevicePort& port()
-  {
-    return *port_;
-  }
-  void unplug();
-  void replug();
-
-  std::vector<ReceivedFrame> received() const;
-  void clearReceived();
-  bool waitForFrame(const std::function<bool(const ReceivedFrame&)>& predicate, double timeout) const;
   pelco::ParserCounters parserCounters() const;
 
-  PtzSample sample() const;
-  void setFaults(const SimFaults& faults);
-
 private:
+  /// A partial frame is lost with the power.
+  void powerUp() override;
   void onBytes(const std::uint8_t* data, std::size_t size, TimePoint arrived_at);
   /// Executes a frame; returns the reply bytes (empty: none).
   std::vector<std::uint8_t> execute(const pelco::Frame& frame, TimePoint at);
 
   const PelcoDEmulatorConfig config_;
-  mutable std::mutex mutex_;
-  mutable SimDeviceModel model_;
+  // Guarded by mutex_.
   pelco::FrameParser parser_;
-  ReceivedLog<ReceivedFrame> received_;
   std::map<int, AxisValues> presets_;
-
-  std::unique_ptr<DevicePort> port_;  ///< last: its thread calls back into everything above
 };
 
 }  // namespace ptz_action_server

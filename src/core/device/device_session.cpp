@@ -148,12 +148,11 @@ std::string DeviceSession::lastLinkLoss() const
 void DeviceSession::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   link_->diagnostics(values);
-  values.emplace_back("state reports", std::to_string(counters_.state_reports));
-  values.emplace_back("link losses", std::to_string(counters_.link_losses));
+  addCounts(values, { { "state reports", counters_.state_reports },
+                      { "link losses", counters_.link_losses },
+                      { "recoveries (device held after a loss)", counters_.recoveries },
+                      { "faults of replaced commands (ignored)", counters_.stale_faults } });
   values.emplace_back("last link loss", lastLinkLoss());
-  values.emplace_back("recoveries (device held after a loss)", std::to_string(counters_.recoveries));
-  values.emplace_back("device faults", std::to_string(counters_.faults));
-  values.emplace_back("faults of replaced commands (ignored)", std::to_string(counters_.stale_faults));
 }
 
 void DeviceSession::setCapabilities(const Capabilities& capabilities)
@@ -196,7 +195,6 @@ void DeviceSession::reportFault(const std::string& text, std::uint64_t command)
     ++counters_.stale_faults;
     return;
   }
-  ++counters_.faults;
   std::lock_guard<std::mutex> lock(mutex_);
   ++fault_count_;
   last_fault_ = text;

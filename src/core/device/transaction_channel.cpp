@@ -1,5 +1,7 @@
 #include "ptz_action_server/core/device/transaction_channel.h"
 
+#include <algorithm>
+
 #include "ptz_action_server/core/units.h"
 
 namespace ptz_action_server
@@ -34,6 +36,17 @@ void TransactionChannel::queue(Request request)
 void TransactionChannel::sendUrgent(Request request)
 {
   send(request);
+}
+
+bool TransactionChannel::polling() const
+{
+  const auto is_poll = [](const Request& request) { return request.poll; };
+  return !queue_.empty() || std::any_of(outstanding_.begin(), outstanding_.end(), is_poll);
+}
+
+void TransactionChannel::diagnostics(std::vector<DiagnosticValue>& values) const
+{
+  addCounts(values, { { "reply timeouts", timeouts_ }, { "late replies dropped", late_replies_ } });
 }
 
 void TransactionChannel::clearQueue()
@@ -105,6 +118,7 @@ void TransactionChannel::armTimer()
     // Whatever is still on the wire may answer late: drop it all and ignore replies for a while.
     outstanding_.clear();
     drain_until_ = addSeconds(clock_.now(), reply_timeout_);
+    ++timeouts_;
     on_timeout_(lost);
     // Resume once the drain time has passed.
     timer_.expires_after(toDuration(reply_timeout_));

@@ -333,10 +333,10 @@ void DigiViewProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
   values.emplace_back("view", formatText("stream '%s' camera %u of %u", settings_.stream_name.c_str(), settings_.cam_id,
                                          num_user_views_.load()));
   values.emplace_back("system status", std::to_string(system_status_.load()));
-  values.emplace_back("messages", std::to_string(counters_.messages));
-  values.emplace_back("states", std::to_string(counters_.states));
-  values.emplace_back("acknowledged", std::to_string(counters_.acknowledged));
-  values.emplace_back("refused", std::to_string(counters_.refused));
+  addCounts(values, { { "messages", counters_.messages },
+                      { "states", counters_.states },
+                      { "acknowledged", counters_.acknowledged },
+                      { "refused", counters_.refused } });
   for (std::size_t index = 1; index < counters_.bad.size(); ++index)
   {
     values.emplace_back(std::string("dropped: ") + toString(static_cast<UnpackError>(index)),

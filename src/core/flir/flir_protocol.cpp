@@ -51,7 +51,6 @@ void FlirProtocol::onConnected()
 {
   channel_.reset();
   parser_.reset();
-  poll_pending_ = false;
   ready_ = false;
   awaiting_banner_ = session_.linkConfig().kind == LinkKind::TCP;
   if (!awaiting_banner_)
@@ -75,7 +74,6 @@ void FlirProtocol::onDisconnected()
 {
   channel_.reset();
   banner_timer_.cancel();
-  poll_pending_ = false;
   ready_ = false;
 }
 
@@ -97,12 +95,13 @@ void FlirProtocol::queueSetup()
 
 void FlirProtocol::poll()
 {
-  // Goal commands go first; the position is asked for whenever the line is otherwise free.
-  if (ready_ && !poll_pending_ && channel_.queued() == 0)
+  if (ready_ && !channel_.polling())
   {
-    request(flir::command("PP"), PAN_POSITION);
-    request(flir::command("TP"), TILT_POSITION);
-    poll_pending_ = true;
+    for (const auto& query : { std::make_pair("PP", PAN_POSITION), std::make_pair("TP", TILT_POSITION) })
+    {
+      channel_.queue(TransactionChannel::Request{ flir::command(query.first), query.second, true,
+                                                  session_.currentCommand(), true });
+    }
   }
 }
 
@@ -111,19 +110,13 @@ void FlirProtocol::request(const std::string& text, Tag tag)
   channel_.queue(TransactionChannel::Request{ text, tag, true, session_.currentCommand() });
 }
 
-void FlirProtocol::replaceCommand()
-{
-  channel_.clearQueue();
-  poll_pending_ = false;
-}
-
 void FlirProtocol::goTo(const AxisValues& position)
 {
   if (!ready_)
   {
     return;
   }
-  replaceCommand();
+  channel_.clearQueue();  // what the previous command had not sent yet
   // Every goal states its mode: a mode switch queued for an earlier goal may have been dropped with the queue.
   request(flir::command("CI"), COMMAND);
   const Capabilities limits = unitCapabilities();
@@ -139,7 +132,7 @@ void FlirProtocol::moveAtVelocity(const AxisValues& velocity)
   {
     return;
   }
-  replaceCommand();
+  channel_.clearQueue();
   request(flir::command("CV"), COMMAND);
   request(flir::command("PS", std::lround(-velocity[PAN] / pan_resolution_)), COMMAND);
   request(flir::command("TS", std::lround(velocity[TILT] / tilt_resolution_)), COMMAND);
@@ -152,18 +145,17 @@ void FlirProtocol::stop()
     return;
   }
   // The halt goes out at once, ahead of anything queued; the unit decelerates to rest.
-  replaceCommand();
+  channel_.clearQueue();
   channel_.sendUrgent(TransactionChannel::Request{ flir::command("H"), COMMAND, true, session_.currentCommand() });
 }
 
 void FlirProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 {
-  values.emplace_back("replies", std::to_string(counters_.replies));
-  values.emplace_back("device errors", std::to_string(counters_.errors));
-  values.emplace_back("limit hits", std::to_string(counters_.limit_hits));
-  values.emplace_back("unexpected text lines", std::to_string(counters_.unexpected_text));
-  values.emplace_back("reply timeouts", std::to_string(counters_.timeouts));
-  values.emplace_back("late replies dropped", std::to_string(counters_.late_replies));
+  addCounts(values, { { "replies", counters_.replies },
+                      { "device errors", counters_.errors },
+                      { "limit hits", counters_.limit_hits },
+                      { "unexpected text lines", counters_.unexpected_text } });
+  channel_.diagnostics(values);
 }
 
 void FlirProtocol::onReceived(const std::uint8_t* data, std::size_t size)
@@ -193,8 +185,7 @@ void FlirProtocol::handleReply(const flir::Reply& reply)
   const std::optional<TransactionChannel::Request> answered = channel_.complete();
   if (!answered)
   {
-    ++counters_.late_replies;
-    return;
+    return;  // late: the channel counts it
   }
   ++counters_.replies;
   session_.reportAlive();
@@ -204,10 +195,6 @@ void FlirProtocol::handleReply(const flir::Reply& reply)
 void FlirProtocol::handleAnswer(const TransactionChannel::Request& request, const flir::Reply& reply)
 {
   const Tag tag = static_cast<Tag>(request.tag);
-  if (tag == TILT_POSITION)
-  {
-    poll_pending_ = false;
-  }
   if (reply.kind == flir::Reply::Kind::ERROR)
   {
     ++counters_.errors;
@@ -261,8 +248,6 @@ void FlirProtocol::handleAnswer(const TransactionChannel::Request& request, cons
 void FlirProtocol::onTimeout(const TransactionChannel::Request& lost)
 {
   parser_.reset();
-  poll_pending_ = false;
-  ++counters_.timeouts;
   if (!ready_ && lost.tag != COMMAND)
   {
     // A set-up answer went missing: start the set-up again once the line is quiet.

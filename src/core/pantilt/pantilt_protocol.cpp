@@ -137,11 +137,11 @@ void PanTiltProtocol::hold()
 void PanTiltProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   values.emplace_back("wire version", cr::pantilt::toString(settings_.version));
-  values.emplace_back("frames ok", std::to_string(counters_.frames_ok));
-  values.emplace_back("dropped: bad size", std::to_string(counters_.bad_size));
-  values.emplace_back("dropped: bad header", std::to_string(counters_.bad_header));
-  values.emplace_back("dropped: bad version", std::to_string(counters_.bad_version));
-  values.emplace_back("dropped: bad mask", std::to_string(counters_.bad_mask));
+  addCounts(values, { { "frames ok", counters_.frames_ok },
+                      { "dropped: bad size", counters_.bad_size },
+                      { "dropped: bad header", counters_.bad_header },
+                      { "dropped: bad version", counters_.bad_version },
+                      { "dropped: bad mask", counters_.bad_mask } });
 }
 
 void PanTiltProtocol::sendSetParam(PanTiltParam id, double value)

@@ -50,14 +50,7 @@ PelcoProtocol::PelcoProtocol(const PelcoSettings& settings, DeviceSession& sessi
   , channel_(
         session.context(), session.clock(), [&session](const std::string& bytes) { session.write(bytes); },
         replyTimeout(session.linkConfig(), settings.reply_timeout, EXCHANGE_BYTES),
-        [this](const TransactionChannel::Request& lost) {
-          parser_.reset();
-          if (lost.tag != COMMAND)
-          {
-            polls_pending_ = 0;
-          }
-          ++counters_.timeouts;
-        })
+        [this](const TransactionChannel::Request&) { parser_.reset(); })
   , parser_(settings.address, settings.general_reply)
 {
 }
@@ -82,35 +75,25 @@ void PelcoProtocol::onConnected()
 {
   channel_.reset();
   parser_.reset();
-  polls_pending_ = 0;
 }
 
 void PelcoProtocol::onDisconnected()
 {
   channel_.reset();
-  polls_pending_ = 0;
 }
 
 void PelcoProtocol::poll()
 {
-  if (polls_pending_ != 0 || channel_.queued() != 0)
+  if (channel_.polling())
   {
     return;  // goal commands first; the position when the line is free
   }
   queueFrame(pelco::withValue(settings_.address, pelco::QUERY_PAN, 0), QUERY_PAN);
   queueFrame(pelco::withValue(settings_.address, pelco::QUERY_TILT, 0), QUERY_TILT);
-  polls_pending_ = 2;
   if (settings_.axes[ZOOM].present)
   {
     queueFrame(pelco::withValue(settings_.address, pelco::QUERY_ZOOM, 0), QUERY_ZOOM);
-    ++polls_pending_;
   }
-}
-
-void PelcoProtocol::replaceCommand()
-{
-  channel_.clearQueue();
-  polls_pending_ = 0;
 }
 
 void PelcoProtocol::goTo(const AxisValues& position)
@@ -119,7 +102,7 @@ void PelcoProtocol::goTo(const AxisValues& position)
   {
     return;
   }
-  replaceCommand();
+  channel_.clearQueue();  // what the previous command had not sent yet
   const std::uint8_t address = settings_.address;
   queueFrame(pelco::withValue(address, pelco::SET_PAN, pelco::encodePan(toDegrees(position[PAN]))), COMMAND);
   queueFrame(
@@ -137,7 +120,7 @@ void PelcoProtocol::moveAtVelocity(const AxisValues& velocity)
   {
     return;
   }
-  replaceCommand();
+  channel_.clearQueue();  // what the previous command had not sent yet
   const int zoom = settings_.axes[ZOOM].present ? direction(velocity[ZOOM]) : 0;
   queueFrame(pelco::move(settings_.address, speedByte(velocity[PAN], settings_.axes[PAN].max_speed),
                          speedByte(velocity[TILT], settings_.axes[TILT].max_speed), zoom),
@@ -150,7 +133,7 @@ void PelcoProtocol::stop()
   {
     return;
   }
-  replaceCommand();
+  channel_.clearQueue();  // what the previous command had not sent yet
   const pelco::Bytes bytes = pelco::encode(pelco::stop(settings_.address));
   channel_.sendUrgent(TransactionChannel::Request{ std::string(bytes.begin(), bytes.end()), COMMAND,
                                                    settings_.general_reply, session_.currentCommand() });
@@ -161,19 +144,18 @@ void PelcoProtocol::queueFrame(const pelco::Frame& frame, Tag tag)
   const pelco::Bytes bytes = pelco::encode(frame);
   const bool expects_reply = tag != COMMAND || settings_.general_reply;
   channel_.queue(TransactionChannel::Request{ std::string(bytes.begin(), bytes.end()), tag, expects_reply,
-                                              session_.currentCommand() });
+                                              session_.currentCommand(), tag != COMMAND });
 }
 
 void PelcoProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 {
-  values.emplace_back("address", std::to_string(settings_.address));
-  values.emplace_back("frames", std::to_string(counters_.frames));
-  values.emplace_back("dropped: bad checksum or partial", std::to_string(counters_.bad_checksum));
-  values.emplace_back("dropped: bytes outside frames", std::to_string(counters_.skipped_bytes));
-  values.emplace_back("dropped: other address", std::to_string(counters_.wrong_address));
-  values.emplace_back("unexpected frames", std::to_string(counters_.unexpected_frames));
-  values.emplace_back("reply timeouts", std::to_string(counters_.timeouts));
-  values.emplace_back("late replies dropped", std::to_string(counters_.late_replies));
+  addCounts(values, { { "address", settings_.address },
+                      { "frames", counters_.frames },
+                      { "dropped: bad checksum or partial", counters_.bad_checksum },
+                      { "dropped: bytes outside frames", counters_.skipped_bytes },
+                      { "dropped: other address", counters_.wrong_address },
+                      { "unexpected frames", counters_.unexpected_frames } });
+  channel_.diagnostics(values);
 }
 
 void PelcoProtocol::onReceived(const std::uint8_t* data, std::size_t size)
@@ -209,8 +191,7 @@ void PelcoProtocol::handle(const pelco::FrameParser::Event& event)
   const std::optional<TransactionChannel::Request> answered = channel_.complete();
   if (!answered)
   {
-    ++counters_.late_replies;
-    return;
+    return;  // late: the channel counts it
   }
   const int expected_reply = answered->tag == QUERY_PAN  ? pelco::PAN_REPLY :
                              answered->tag == QUERY_TILT ? pelco::TILT_REPLY :
@@ -232,21 +213,21 @@ void PelcoProtocol::handle(const pelco::FrameParser::Event& event)
   {
     case QUERY_PAN:
       polled_[PAN] = toRadians(pelco::decodePan(value));
-      break;
+      return;
     case QUERY_TILT:
       polled_[TILT] = toRadians(pelco::decodeTilt(value, settings_.tilt_encoding));
+      if (settings_.axes[ZOOM].present)
+      {
+        return;  // the zoom answer completes the state
+      }
       break;
     case QUERY_ZOOM:
       polled_[ZOOM] = settings_.positionToZoom(value);
       break;
     default:
-      break;
+      return;
   }
-  if (--polls_pending_ <= 0)
-  {
-    polls_pending_ = 0;
-    session_.reportState(polled_);
-  }
+  session_.reportState(polled_);
 }
 
 std::unique_ptr<DeviceBackend> makePelcoBackend(const PelcoConfig& config, std::shared_ptr<const Clock> clock)

@@ -118,16 +118,16 @@ std::string Link::lastError() const
 void Link::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   values.emplace_back("link", config_.describe());
-  values.emplace_back("link opens", std::to_string(counters_.opens));
-  values.emplace_back("link open failures", std::to_string(counters_.open_failures));
-  values.emplace_back("link disconnects", std::to_string(counters_.disconnects));
-  values.emplace_back("bytes in", std::to_string(counters_.bytes_in));
-  values.emplace_back("bytes out", std::to_string(counters_.bytes_out));
-  values.emplace_back("writes dropped while down", std::to_string(counters_.writes_dropped));
+  addCounts(values, { { "link opens", counters_.opens },
+                      { "link open failures", counters_.open_failures },
+                      { "link disconnects", counters_.disconnects },
+                      { "bytes in", counters_.bytes_in },
+                      { "bytes out", counters_.bytes_out },
+                      { "writes dropped while down", counters_.writes_dropped } });
   if (carriesDatagrams())
   {
-    values.emplace_back("datagrams refused by the kernel", std::to_string(counters_.write_failures));
-    values.emplace_back("dropped: datagrams from another sender", std::to_string(counters_.foreign_datagrams));
+    addCounts(values, { { "datagrams refused by the kernel", counters_.write_failures },
+                        { "dropped: datagrams from another sender", counters_.foreign_datagrams } });
   }
   values.emplace_back("last link error", lastError());
 }

@@ -48,61 +48,37 @@ std::vector<DeviceCommand> withoutQueries(const std::vector<DeviceCommand>& comm
   return kept;
 }
 
-// ---------------------------------------------------------------- FLIR PTU: serial and TCP (E-series)
+// ---------------------------------------------------------------- units on a line: a pseudo-terminal or TCP
 
-class FlirFixture : public DeviceFixture
+/// What the FLIR and Pelco-D fixtures share: an emulator on a pseudo-terminal (38400 baud) or a TCP port.
+template <class Emulator>
+class LineFixture : public DeviceFixture
 {
-public:
-  explicit FlirFixture(DevicePortConfig::Kind kind)
+protected:
+  /// Starts the emulator on a \p kind port and fills \p link to reach it.
+  template <class EmulatorConfig>
+  void startEmulator(EmulatorConfig config, DevicePortConfig::Kind kind, const char* name, LinkConfig& link)
   {
-    FlirPtuEmulatorConfig config;
     config.port.kind = kind;
-    config.port.link = uniqueLink("flir");
+    config.port.link = uniqueLink(name);
     config.port.baud = 38400;
-    emulator_ = std::make_unique<FlirPtuEmulator>(config);
+    emulator_ = std::make_unique<Emulator>(config);
     if (kind == DevicePortConfig::Kind::TCP)
     {
-      config_.link.kind = LinkKind::TCP;
-      config_.link.port = emulator_->port().tcpPort();
+      link.kind = LinkKind::TCP;
+      link.port = emulator_->port().tcpPort();
     }
     else
     {
-      config_.link.path = config.port.link;
-      config_.link.baud = config.port.baud;
+      link.path = config.port.link;
+      link.baud = config.port.baud;
     }
-    config_.session.startup_timeout = 10.0;
+    link_ = link;
   }
 
-  std::unique_ptr<DeviceBackend> makeBackend() override
-  {
-    return makeFlirBackend(config_);
-  }
-  std::vector<DeviceCommand> commands() const override
-  {
-    std::vector<DeviceCommand> commands;
-    for (const ReceivedCommand& item : emulator_->received())
-    {
-      const std::string& text = item.text;
-      Kind kind = Kind::OTHER;
-      if (text == "PP" || text == "TP")
-      {
-        kind = Kind::QUERY;
-      }
-      else if (text == "H" || text == "HP" || text == "HT")
-      {
-        kind = Kind::STOP;
-      }
-      else if (text.rfind("PP", 0) == 0 || text.rfind("TP", 0) == 0)
-      {
-        kind = Kind::MOVE;
-      }
-      commands.push_back(DeviceCommand{ item.at, kind, text });
-    }
-    return commands;
-  }
   void clearCommands() override
   {
-    emulator_->clearReceived();
+    emulator_->received().clear();
   }
   PtzSample deviceState() const override
   {
@@ -122,7 +98,49 @@ public:
   }
   std::string linkLossWords() const override
   {
-    return config_.link.kind == LinkKind::TCP ? "connection to 127.0.0.1" : config_.link.path;
+    return link_.kind == LinkKind::TCP ? "connection to 127.0.0.1" : link_.path;
+  }
+
+  std::unique_ptr<Emulator> emulator_;
+  LinkConfig link_;
+};
+
+// ---------------------------------------------------------------- FLIR PTU: serial and TCP (E-series)
+
+class FlirFixture : public LineFixture<FlirPtuEmulator>
+{
+public:
+  explicit FlirFixture(DevicePortConfig::Kind kind)
+  {
+    startEmulator(FlirPtuEmulatorConfig{}, kind, "flir", config_.link);
+  }
+
+  std::unique_ptr<DeviceBackend> makeBackend() override
+  {
+    return makeFlirBackend(config_);
+  }
+  std::vector<DeviceCommand> commands() const override
+  {
+    std::vector<DeviceCommand> commands;
+    for (const ReceivedCommand& item : emulator_->received().items())
+    {
+      const std::string& text = item.text;
+      Kind kind = Kind::OTHER;
+      if (text == "PP" || text == "TP")
+      {
+        kind = Kind::QUERY;
+      }
+      else if (text == "H" || text == "HP" || text == "HT")
+      {
+        kind = Kind::STOP;
+      }
+      else if (text.rfind("PP", 0) == 0 || text.rfind("TP", 0) == 0)
+      {
+        kind = Kind::MOVE;
+      }
+      commands.push_back(DeviceCommand{ item.at, kind, text });
+    }
+    return commands;
   }
   std::string prepareRefusal(AxisValues& goal) override
   {
@@ -145,34 +163,20 @@ public:
   }
 
 private:
-  std::unique_ptr<FlirPtuEmulator> emulator_;
   FlirConfig config_;
 };
 
 // ---------------------------------------------------------------- Pelco-D: serial and TCP
 
-class PelcoFixture : public DeviceFixture
+class PelcoFixture : public LineFixture<PelcoDEmulator>
 {
 public:
   PelcoFixture(DevicePortConfig::Kind kind, pelco::TiltEncoding encoding)
   {
     PelcoDEmulatorConfig config;
-    config.port.kind = kind;
-    config.port.link = uniqueLink("pelco");
-    config.port.baud = 38400;
     config.address = 7;
     config.tilt_encoding = encoding;
-    emulator_ = std::make_unique<PelcoDEmulator>(config);
-    if (kind == DevicePortConfig::Kind::TCP)
-    {
-      config_.link.kind = LinkKind::TCP;
-      config_.link.port = emulator_->port().tcpPort();
-    }
-    else
-    {
-      config_.link.path = config.port.link;
-      config_.link.baud = config.port.baud;
-    }
+    startEmulator(config, kind, "pelco", config_.link);
     config_.pelco.address = 7;
     config_.pelco.tilt_encoding = encoding;
   }
@@ -184,7 +188,7 @@ public:
   std::vector<DeviceCommand> commands() const override
   {
     std::vector<DeviceCommand> commands;
-    for (const ReceivedFrame& item : emulator_->received())
+    for (const ReceivedFrame& item : emulator_->received().items())
     {
       const std::uint8_t command = item.frame.command2;
       Kind kind = Kind::OTHER;
@@ -204,30 +208,6 @@ public:
       commands.push_back(DeviceCommand{ item.at, kind, hex(std::vector<std::uint8_t>(bytes.begin(), bytes.end())) });
     }
     return commands;
-  }
-  void clearCommands() override
-  {
-    emulator_->clearReceived();
-  }
-  PtzSample deviceState() const override
-  {
-    return emulator_->sample();
-  }
-  void setSilent(bool silent) override
-  {
-    emulator_->port().setSilent(silent);
-  }
-  void breakLink() override
-  {
-    emulator_->unplug();
-  }
-  void restoreLink() override
-  {
-    emulator_->replug();
-  }
-  std::string linkLossWords() const override
-  {
-    return config_.link.kind == LinkKind::TCP ? "connection to 127.0.0.1" : config_.link.path;
   }
   AxisValues goal(double pan, double tilt) const override
   {
@@ -249,7 +229,6 @@ public:
   }
 
 private:
-  std::unique_ptr<PelcoDEmulator> emulator_;
   PelcoConfig config_;
 };
 
@@ -277,7 +256,7 @@ public:
   {
     using namespace cr::pantilt;
     std::vector<DeviceCommand> commands;
-    for (const ReceivedDatagram& datagram : emulator_->received())
+    for (const ReceivedDatagram& datagram : emulator_->received().items())
     {
       PanTiltParam param{};
       PanTiltCommand command{};
@@ -305,7 +284,7 @@ public:
   }
   void clearCommands() override
   {
-    emulator_->clearReceived();
+    emulator_->received().clear();
   }
   PtzSample deviceState() const override
   {
@@ -401,7 +380,7 @@ public:
   {
     using namespace digiview;
     std::vector<DeviceCommand> commands;
-    for (const ReceivedMessage& item : emulator_->received())
+    for (const ReceivedMessage& item : emulator_->received().items())
     {
       const Message& message = item.message;
       Kind kind = Kind::OTHER;
@@ -427,7 +406,7 @@ public:
   }
   void clearCommands() override
   {
-    emulator_->clearReceived();
+    emulator_->received().clear();
   }
   PtzSample deviceState() const override
   {
@@ -480,7 +459,7 @@ public:
     using namespace digiview;
     std::size_t targetings = 0;
     std::size_t optics_seen = 0;
-    for (const ReceivedMessage& item : emulator_->received())
+    for (const ReceivedMessage& item : emulator_->received().items())
     {
       if (item.message.message_type != MessageType::SET_PARAMETERS)
       {

@@ -41,7 +41,6 @@ struct DeviceSessionCounters
   Counter state_reports;  ///< valid states the protocol reported
   Counter link_losses;    ///< the link went down after being up (closed, vanished or silent past the deadline)
   Counter recoveries;     ///< the device answered again after a loss and was held where it was
-  Counter faults;         ///< refusals of the current command
   Counter stale_faults;   ///< refusals of a command the node had already replaced: counted, not reported
 };
 

@@ -12,6 +12,8 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/steady_timer.hpp>
 
+#include "ptz_action_server/core/backend.h"
+#include "ptz_action_server/core/counter.h"
 #include "ptz_action_server/core/transport/link.h"
 #include "ptz_action_server/core/types.h"
 
@@ -38,6 +40,7 @@ public:
     int tag = 0;                ///< what the protocol asked, to interpret the reply
     bool expects_reply = true;  ///< false: written and forgotten
     std::uint64_t command = 0;  ///< the node command it serves (DeviceSession::currentCommand()), for its faults
+    bool poll = false;          ///< a state poll: asked for only while no goal command waits (see polling())
   };
   using Writer = std::function<void(const std::string& bytes)>;
 
@@ -50,7 +53,7 @@ public:
   void queue(Request request);
   /// Sends now, ahead of the queue.
   void sendUrgent(Request request);
-  /// Drops the queued (not yet sent) requests.
+  /// Drops the queued (not yet sent) requests: what a new command replaces.
   void clearQueue();
   /// Forgets everything (after a reconnect).
   void reset();
@@ -61,10 +64,19 @@ public:
   {
     return queue_.size();
   }
+  /// True while a poll waits or is on the wire, or anything else waits: then no new poll should be queued, so goal
+  /// commands go first and the line is never flooded.
+  bool polling() const;
+  std::uint64_t timeouts() const
+  {
+    return timeouts_;
+  }
   std::uint64_t lateReplies() const
   {
     return late_replies_;
   }
+  /// Reply timeouts and late replies, for diagnostics. Any thread.
+  void diagnostics(std::vector<DiagnosticValue>& values) const;
 
 private:
   void pump();
@@ -79,7 +91,8 @@ private:
   std::deque<Request> queue_;
   std::deque<Request> outstanding_;  ///< on the wire, oldest first
   TimePoint drain_until_{};
-  std::uint64_t late_replies_ = 0;
+  Counter timeouts_;
+  Counter late_replies_;
 };
 
 }  // namespace ptz_action_server

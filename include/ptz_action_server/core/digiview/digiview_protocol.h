@@ -81,15 +81,24 @@ public:
     return "digiview";
   }
   std::string deviceName() const override;
+  /// From the settings: pan +-pi, tilt +-pi/2 at the slew rate; zoom 1x to fov_wide / narrowest field of view.
   Capabilities capabilities() const override;
+  /// GET VIDEO_OUTPUT (the number of views), SYSTEM_STATUS, and the view's state, then every 100 ms.
   void onConnected() override;
+  /// 80-byte messages: cut from the stream on TCP, one per datagram on UDP.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   void onDisconnected() override;
+  /// Subscribes again after three missed states: over UDP nothing else tells that DigiView restarted.
   void poll() override;
+  /// SET CAM_TARGETING (directional, absolute) and SET CAM_OPTICS_AND_CONTROL (fov = fov_wide / zoom).
   void goTo(const AxisValues& position) override;
+  /// DigiView has none: a target moved on every velocity_period.
   void moveAtVelocity(const AxisValues& velocity) override;
+  /// A target where the view comes to rest (its braking distance at the configured acceleration).
   void stop() override;
+  /// A target where the view is.
   void hold() override;
+  /// GET_INTERVAL 0 for both subscriptions, then QUIT.
   void shutdown() override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 

@@ -31,15 +31,13 @@ struct FlirConfig
   FlirSettings flir;
 };
 
-/// Counters for diagnostics.
+/// Counters for diagnostics (reply timeouts and late replies are the channel's).
 struct FlirCounters
 {
   Counter replies;
   Counter errors;           ///< `!` replies to commands
   Counter limit_hits;       ///< `!P` / `!T`
   Counter unexpected_text;  ///< banners, echoes, noise
-  Counter timeouts;         ///< requests without a reply in time
-  Counter late_replies;     ///< replies ignored after a timeout
 };
 
 /**
@@ -65,13 +63,21 @@ public:
   {
     return "a FLIR PTU";
   }
+  /// No zoom; pan and tilt are unknown until the unit has told its limits (see onConnected()).
   Capabilities capabilities() const override;
+  /// On TCP, waits for the E-series banner; then `FT ED CI` and the queries of the unit's resolution, limits and
+  /// upper speeds. The link is ready when the last answer is in.
   void onConnected() override;
+  /// Reply lines, each matched to the one request on the wire.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   void onDisconnected() override;
+  /// `PP` and `TP` whenever the line is free.
   void poll() override;
+  /// `CI PS TS PP TP`, the pan inverted (the unit's positive pan is counter-clockwise).
   void goTo(const AxisValues& position) override;
+  /// `CV` and signed `PS TS`.
   void moveAtVelocity(const AxisValues& velocity) override;
+  /// `H` at once, ahead of anything queued.
   void stop() override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 
@@ -103,8 +109,6 @@ private:
   void onTimeout(const TransactionChannel::Request& lost);
   void queueSetup();
   void request(const std::string& text, Tag tag);
-  /// Drops what is queued of the previous command (and a pending poll): the new command goes next.
-  void replaceCommand();
   Capabilities unitCapabilities() const;
 
   const FlirSettings settings_;
@@ -116,8 +120,7 @@ private:
 
   // I/O thread only.
   bool awaiting_banner_ = false;
-  bool ready_ = false;  ///< the set-up of this connection is complete
-  bool poll_pending_ = false;
+  bool ready_ = false;           ///< the set-up of this connection is complete
   double polled_pan_ = 0.0;      ///< rad, from the last PP
   double pan_resolution_ = 0.0;  ///< rad per position
   double tilt_resolution_ = 0.0;

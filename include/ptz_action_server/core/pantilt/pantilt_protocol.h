@@ -77,13 +77,21 @@ public:
   {
     return "a PanTilt device controller";
   }
+  /// From the settings: the PanTilt protocol cannot tell limits or speeds. No zoom.
   Capabilities capabilities() const override;
+  /// A state request (a params frame with an empty mask) and the speeds.
   void onConnected() override;
+  /// One params frame per datagram; anything else is counted under its reason and dropped.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
+  /// A state request while the device is quiet (it reports on its own otherwise).
   void poll() override;
+  /// The speeds, the angles in degrees and GO_TO_PAN_TILT_ANGLE (1.1: one COMMAND with the angles).
   void goTo(const AxisValues& position) override;
+  /// 1.1: MOVE_PAN_TILT in % of the max speed; 1.0: a speed and a move towards the limit.
   void moveAtVelocity(const AxisValues& velocity) override;
+  /// COMMAND STOP.
   void stop() override;
+  /// STOP, then the speeds again.
   void hold() override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 

@@ -40,6 +40,7 @@ struct PelcoConfig
   PelcoSettings pelco;
 };
 
+/// Counters for diagnostics (reply timeouts and late replies are the channel's).
 struct PelcoCounters
 {
   Counter frames;             ///< valid frames and general replies for our address
@@ -47,8 +48,6 @@ struct PelcoCounters
   Counter skipped_bytes;      ///< dropped: bytes outside frames
   Counter wrong_address;      ///< dropped: frames for another address
   Counter unexpected_frames;  ///< valid frames that answer nothing asked
-  Counter timeouts;
-  Counter late_replies;
 };
 
 /**
@@ -69,13 +68,20 @@ public:
     return "serial/pelco_d";
   }
   std::string deviceName() const override;
+  /// From the settings: Pelco-D cannot ask a camera for its limits or speeds.
   Capabilities capabilities() const override;
+  /// Nothing to say first: the position queries are the handshake.
   void onConnected() override;
+  /// Frames of our address (and general replies), each matched to the one request on the wire.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   void onDisconnected() override;
+  /// 0x51, 0x53 (and 0x55 with zoom) whenever the line is free.
   void poll() override;
+  /// The extended absolute commands 0x4B, 0x4D, 0x4F.
   void goTo(const AxisValues& position) override;
+  /// The standard movement command, speeds scaled to 1..0x3F.
   void moveAtVelocity(const AxisValues& velocity) override;
+  /// The all-zero frame at once, ahead of anything queued.
   void stop() override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 
@@ -95,7 +101,6 @@ private:
 
   void handle(const pelco::FrameParser::Event& event);
   void queueFrame(const pelco::Frame& frame, Tag tag);
-  void replaceCommand();
   void updateParserCounters();
 
   const PelcoSettings settings_;
@@ -105,7 +110,6 @@ private:
   PelcoCounters counters_;
 
   // I/O thread only.
-  int polls_pending_ = 0;
   AxisValues polled_{ { 0.0, 0.0, 1.0 } };
   std::vector<pelco::FrameParser::Event> events_;  ///< reused for every read
 };

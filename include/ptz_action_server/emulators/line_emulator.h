@@ -1,0 +1,102 @@
+/**
+ * \file
+ * \brief What the emulated units on a line (a pseudo-terminal, or TCP) share: the port, the motion model and its
+ * lock, the log of what they received, and the faults.
+ */
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/received_log.h"
+
+namespace ptz_action_server
+{
+/**
+ * \brief The common part of a line emulator (FLIR PTU, Pelco-D, ...); a protocol adds how it reads and answers.
+ *
+ * \p Item is what the log keeps of each command (a text line, a frame). The port's thread calls back into the
+ * derived class, so the derived constructor opens the port last (openPort()) and its destructor closes it first
+ * (closePort()).
+ */
+template <class Item>
+class LineEmulator
+{
+public:
+  LineEmulator(const LineEmulator&) = delete;
+  LineEmulator& operator=(const LineEmulator&) = delete;
+
+  /// What a client opens: the pseudo-terminal's link (or path), or host:port.
+  std::string path() const
+  {
+    return port_->path();
+  }
+  DevicePort& port()
+  {
+    return *port_;
+  }
+  /// What the unit received, oldest first.
+  ReceivedLog<Item>& received()
+  {
+    return received_;
+  }
+  const ReceivedLog<Item>& received() const
+  {
+    return received_;
+  }
+  /// The model's state (rad, X), for tests.
+  PtzSample sample() const
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return model_.sample(SteadyClock::now());
+  }
+  void setFaults(const SimFaults& faults)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    model_.setFaults(faults, SteadyClock::now());
+  }
+  /// The port closes, as pulling the cable does (a pseudo-terminal's link disappears; a TCP server stops listening).
+  void unplug()
+  {
+    port_->unplug();
+  }
+  /// The port is back, and the unit with it as at power-up: it stopped when it lost power.
+  void replug()
+  {
+    port_->replug();
+    std::lock_guard<std::mutex> lock(mutex_);
+    model_.stop(SteadyClock::now());
+    powerUp();
+  }
+
+protected:
+  explicit LineEmulator(const SimDeviceConfig& model) : model_(model, SteadyClock::now())
+  {
+  }
+  virtual ~LineEmulator() = default;
+
+  /// What the unit does when it starts (called with mutex_ held).
+  virtual void powerUp() = 0;
+
+  /// Creates the port and starts its thread: the last thing the derived constructor does.
+  void openPort(const DevicePortConfig& config, DevicePort::Handlers handlers)
+  {
+    port_ = DevicePort::create(config, std::move(handlers));
+    port_->start();
+  }
+  /// Stops the port's thread: the first thing the derived destructor does.
+  void closePort()
+  {
+    port_.reset();
+  }
+
+  mutable std::mutex mutex_;      ///< guards the model and the derived unit's state
+  mutable SimDeviceModel model_;  ///< mutable: sampling applies lagged commands
+  ReceivedLog<Item> received_;
+  std::unique_ptr<DevicePort> port_;
+};
+
+}  // namespace ptz_action_server
