@@ -50,21 +50,13 @@ int main(int argc, char** argv)
         }
         else if (arg == "--port")
         {
-          const double port = number();
-          if (port > 65535)
-          {
-            emulator_main::fail(PROGRAM, "--port must be 0..65535", USAGE);
-          }
-          config.port = static_cast<std::uint16_t>(port);
+          config.port = static_cast<std::uint16_t>(emulator_main::numberIn(PROGRAM, value(), arg, 0, 65535, USAGE));
         }
         else if (arg == "--transport")
         {
-          const std::string transport = value();
-          if (transport != "tcp" && transport != "udp")
-          {
-            emulator_main::fail(PROGRAM, "--transport must be tcp or udp", USAGE);
-          }
-          config.transport = transport == "tcp" ? ptz_action_server::LinkKind::TCP : ptz_action_server::LinkKind::UDP;
+          config.transport = emulator_main::choice(PROGRAM, value(), arg, { "tcp", "udp" }, USAGE) == "tcp" ?
+                                 ptz_action_server::LinkKind::TCP :
+                                 ptz_action_server::LinkKind::UDP;
         }
         else if (arg == "--stream")
         {
@@ -77,12 +69,7 @@ int main(int argc, char** argv)
         }
         else if (arg == "--layout")
         {
-          const double layout = number();
-          if (layout > 6)
-          {
-            emulator_main::fail(PROGRAM, "--layout must be 0..6", USAGE);
-          }
-          config.layout_mode = static_cast<std::uint8_t>(layout);
+          config.layout_mode = static_cast<std::uint8_t>(emulator_main::numberIn(PROGRAM, value(), arg, 0, 6, USAGE));
         }
         else if (arg == "--rate")
         {

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <initializer_list>
 #include <string>
 
 #include "ptz_action_server/emulators/device_port.h"
@@ -51,6 +52,36 @@ inline double number(const char* program, const char* text, const std::string& o
     fail(program, option + " needs a number >= 0", usage);
   }
   return value;
+}
+
+/// A number in [\p min, \p max], or fail() saying so.
+inline double numberIn(const char* program, const char* text, const std::string& option, double min, double max,
+                       const char* usage)
+{
+  const double value = number(program, text, option, usage);
+  if (value < min || value > max)
+  {
+    char range[64];
+    std::snprintf(range, sizeof(range), " must be %g..%g", min, max);
+    fail(program, option + range, usage);
+  }
+  return value;
+}
+
+/// One of \p allowed, or fail() listing them.
+inline std::string choice(const char* program, const char* text, const std::string& option,
+                          std::initializer_list<const char*> allowed, const char* usage)
+{
+  std::string list;
+  for (const char* candidate : allowed)
+  {
+    if (std::string(text) == candidate)
+    {
+      return text;
+    }
+    list += (list.empty() ? "" : " or ") + std::string(candidate);
+  }
+  fail(program, option + " must be " + list, usage);
 }
 
 /// roslaunch adds __name:= and remapping arguments; the programs ignore them.
@@ -151,13 +182,8 @@ inline bool parseSerialOption(const std::string& arg, const Value& value, const 
   }
   else if (arg == "--tcp")
   {
-    const double port = number();
-    if (port > 65535)
-    {
-      fail(program, "--tcp must be 0..65535", usage);
-    }
     options.port.kind = ptz_action_server::DevicePortConfig::Kind::TCP;
-    options.port.port = static_cast<std::uint16_t>(port);
+    options.port.port = static_cast<std::uint16_t>(numberIn(program, value(), arg, 0, 65535, usage));
   }
   else if (arg == "--host")
   {

@@ -40,55 +40,50 @@ int main(int argc, char** argv)
   emulator_main::Schedule schedule;
   double drop = 0.0;
   double delay = 0.0;
-  emulator_main::parseArguments(argc, argv, PROGRAM, USAGE,
-                                [&](const std::string& arg, const emulator_main::Value& value) {
-                                  auto number = [&]() { return emulator_main::number(PROGRAM, value(), arg, USAGE); };
-                                  if (arg == "--host")
-                                  {
-                                    config.host = value();
-                                  }
-                                  else if (arg == "--port")
-                                  {
-                                    const double port = number();
-                                    if (port > 65535)
-                                    {
-                                      emulator_main::fail(PROGRAM, "--port must be 0..65535", USAGE);
-                                    }
-                                    config.port = static_cast<std::uint16_t>(port);
-                                  }
-                                  else if (arg == "--version")
-                                  {
-                                    if (!cr::pantilt::parseWireVersion(value(), config.version))
-                                    {
-                                      emulator_main::fail(PROGRAM, "--version must be 1.0 or 1.1", USAGE);
-                                    }
-                                  }
-                                  else if (arg == "--state-period")
-                                  {
-                                    config.state_period = number();
-                                  }
-                                  else if (arg == "--drop")
-                                  {
-                                    drop = number();
-                                  }
-                                  else if (arg == "--delay")
-                                  {
-                                    delay = number();
-                                  }
-                                  else if (arg == "--silent")
-                                  {
-                                    silent = true;
-                                  }
-                                  else if (arg == "--silent-after")
-                                  {
-                                    schedule.silent_after = number();
-                                  }
-                                  else
-                                  {
-                                    return false;
-                                  }
-                                  return true;
-                                });
+  emulator_main::parseArguments(
+      argc, argv, PROGRAM, USAGE, [&](const std::string& arg, const emulator_main::Value& value) {
+        auto number = [&]() { return emulator_main::number(PROGRAM, value(), arg, USAGE); };
+        if (arg == "--host")
+        {
+          config.host = value();
+        }
+        else if (arg == "--port")
+        {
+          config.port = static_cast<std::uint16_t>(emulator_main::numberIn(PROGRAM, value(), arg, 0, 65535, USAGE));
+        }
+        else if (arg == "--version")
+        {
+          if (!cr::pantilt::parseWireVersion(value(), config.version))
+          {
+            emulator_main::fail(PROGRAM, "--version must be 1.0 or 1.1", USAGE);
+          }
+        }
+        else if (arg == "--state-period")
+        {
+          config.state_period = number();
+        }
+        else if (arg == "--drop")
+        {
+          drop = number();
+        }
+        else if (arg == "--delay")
+        {
+          delay = number();
+        }
+        else if (arg == "--silent")
+        {
+          silent = true;
+        }
+        else if (arg == "--silent-after")
+        {
+          schedule.silent_after = number();
+        }
+        else
+        {
+          return false;
+        }
+        return true;
+      });
 
   const sigset_t signals = emulator_main::blockSignals();
   try

@@ -40,22 +40,15 @@ int main(int argc, char** argv)
         }
         if (arg == "--address")
         {
-          const double address = emulator_main::number(PROGRAM, value(), arg, usage.c_str());
-          if (address < 1 || address > 255)
-          {
-            emulator_main::fail(PROGRAM, "--address must be 1..255", usage.c_str());
-          }
-          config.address = static_cast<std::uint8_t>(address);
+          config.address =
+              static_cast<std::uint8_t>(emulator_main::numberIn(PROGRAM, value(), arg, 1, 255, usage.c_str()));
         }
         else if (arg == "--tilt-encoding")
         {
-          const std::string encoding = value();
-          if (encoding != "wrap" && encoding != "inverted_wrap")
-          {
-            emulator_main::fail(PROGRAM, "--tilt-encoding must be wrap or inverted_wrap", usage.c_str());
-          }
-          config.tilt_encoding = encoding == "wrap" ? ptz_action_server::pelco::TiltEncoding::WRAP :
-                                                      ptz_action_server::pelco::TiltEncoding::INVERTED_WRAP;
+          config.tilt_encoding =
+              emulator_main::choice(PROGRAM, value(), arg, { "wrap", "inverted_wrap" }, usage.c_str()) == "wrap" ?
+                  ptz_action_server::pelco::TiltEncoding::WRAP :
+                  ptz_action_server::pelco::TiltEncoding::INVERTED_WRAP;
         }
         else if (arg == "--general-reply")
         {
