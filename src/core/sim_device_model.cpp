@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ptz_action_server/core/units.h"
+
 namespace ptz_action_server
 {
 namespace
@@ -10,7 +12,7 @@ namespace
 /// Speeds below this are a stop.
 constexpr double MIN_SPEED = 1e-9;
 /// FLIR D46 resolution: 185.1428 arc seconds per encoder position.
-constexpr double D46_RESOLUTION = 185.1428 / 3600.0 * M_PI / 180.0;
+constexpr double D46_RESOLUTION = arcSecondsToRadians(185.1428);
 }  // namespace
 
 SimDeviceConfig SimDeviceConfig::defaults()

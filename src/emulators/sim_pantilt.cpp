@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ptz_action_server/core/units.h"
+
 namespace cr
 {
 namespace pantilt
@@ -16,16 +18,6 @@ using ptz_action_server::TimePoint;
 
 constexpr double MAX_MOTOR_POSITION = 65535.0;
 constexpr double MIN_SPEED_PERCENT = 0.1;  ///< a 0 % speed would never arrive: treated as the slowest speed
-
-double degrees(double radians)
-{
-  return radians * 180.0 / M_PI;
-}
-
-double radians(double degrees)
-{
-  return degrees * M_PI / 180.0;
-}
 
 /// Half range in degrees of the PanTilt angle on \p axis: pan +-180, tilt +-90.
 double halfRange(Axis axis)
@@ -179,8 +171,8 @@ void SimPanTilt::getParams(PanTiltParams& params) const
 void SimPanTilt::fillParams(PanTiltParams& params, TimePoint now) const
 {
   const ptz_action_server::PtzSample sample = model_.sample(now);
-  params.panAngle = static_cast<float>(degrees(sample.position[PAN]));
-  params.tiltAngle = static_cast<float>(degrees(sample.position[TILT]));
+  params.panAngle = static_cast<float>(ptz_action_server::toDegrees(sample.position[PAN]));
+  params.tiltAngle = static_cast<float>(ptz_action_server::toDegrees(sample.position[TILT]));
   params.panMotorPosition = angleToMotorPosition(PAN, params.panAngle);
   params.tiltMotorPosition = angleToMotorPosition(TILT, params.tiltAngle);
   // The seed gives the combined fields no meaning of their own: they report the pan axis.
@@ -200,11 +192,11 @@ void SimPanTilt::goToAngles(bool pan, bool tilt, TimePoint now)
 {
   if (pan)
   {
-    model_.goToAxis(PAN, radians(target_pan_), now);
+    model_.goToAxis(PAN, ptz_action_server::toRadians(target_pan_), now);
   }
   if (tilt)
   {
-    model_.goToAxis(TILT, radians(target_tilt_), now);
+    model_.goToAxis(TILT, ptz_action_server::toRadians(target_tilt_), now);
   }
 }
 

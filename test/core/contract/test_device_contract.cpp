@@ -57,10 +57,11 @@ protected:
     return waitUntil([&] { return atRest(target); }, WAIT);
   }
 
-  /// Starts a long goal and waits until the device moves fast towards it.
+  /// Starts a long goal (2.6 rad: inside every device's pan range, far enough for a busy test thread to act well
+  /// before the device gets there) and waits until the device moves fast towards it.
   AxisValues startLongGoal()
   {
-    const AxisValues far = device_->goal(2.0, 0.0);
+    const AxisValues far = device_->goal(2.6, 0.0);
     backend_->goTo(far);
     EXPECT_TRUE(waitUntil([&] { return device_->deviceState().position[PAN] > 0.5; }, WAIT));
     return far;
