@@ -65,6 +65,7 @@ protected:
     config.link.port = device_->endpoint().port();
     config.link.local_host = "127.0.0.1";
     config.link.local_port = localPort();
+    config.session.state_timeout = 1.0;  // generous: a busy test machine may starve the I/O threads
     local_port_ = config.link.local_port;
     backend_ = makePanTiltBackend(config);
     backend_->start();

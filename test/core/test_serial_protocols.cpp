@@ -24,7 +24,9 @@ using namespace ptz_action_server;
 namespace
 {
 const double FLIR_RESOLUTION = arcSecondsToRadians(185.1428);
-constexpr double WAIT = 10.0;
+constexpr double WAIT = 20.0;
+/// s without a reply before the link is down: generous, a busy test machine may starve the I/O threads.
+constexpr double STATE_TIMEOUT = 1.0;
 
 std::string uniqueLink(const char* name)
 {
@@ -95,6 +97,7 @@ protected:
     emulator_ = std::make_unique<FlirPtuEmulator>(emulator_config);
     FlirConfig config;
     config.link = serialLink(emulator_config.port.link, baud);
+    config.session.state_timeout = STATE_TIMEOUT;
     backend_ = makeFlirBackend(config);
     backend_->start();
     ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT));
@@ -187,6 +190,7 @@ TEST(FlirTcp, AnEseriesUnitIsSetUpAfterItsBannerOnEveryConnection)
   FlirConfig config;
   config.link.kind = LinkKind::TCP;
   config.link.port = emulator.port().tcpPort();
+  config.session.state_timeout = STATE_TIMEOUT;
   auto backend = makeFlirBackend(config);
   backend->start();
   ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
@@ -211,6 +215,7 @@ protected:
     emulator_ = std::make_unique<PelcoDEmulator>(emulator_config);
     PelcoConfig config;
     config.link = serialLink(emulator_config.port.link, 9600);
+    config.session.state_timeout = STATE_TIMEOUT;
     config.pelco.address = 7;
     backend_ = makePelcoBackend(config);
     backend_->start();
@@ -271,6 +276,7 @@ TEST(PelcoGeneralReplies, CommandsAreAcknowledged)
   PelcoDEmulator emulator(emulator_config);
   PelcoConfig config;
   config.link = serialLink(emulator_config.port.link, 9600);
+  config.session.state_timeout = STATE_TIMEOUT;
   config.pelco.general_reply = true;
   auto backend = makePelcoBackend(config);
   backend->start();

@@ -6,9 +6,15 @@
 
 namespace ptz_action_server
 {
+namespace
+{
+/// s a device (and this process, on a busy machine) may take to answer beyond the exchange's wire time.
+constexpr double REPLY_SLACK = 0.1;
+}  // namespace
+
 double replyTimeout(const LinkConfig& link, double configured, std::size_t exchange_bytes)
 {
-  return configured > 0.0 ? configured : link.wireTime(exchange_bytes) + 0.05;
+  return configured > 0.0 ? configured : link.wireTime(exchange_bytes) + REPLY_SLACK;
 }
 
 TransactionChannel::TransactionChannel(boost::asio::io_context& context, const Clock& clock, Writer write,
@@ -36,6 +42,12 @@ void TransactionChannel::queue(Request request)
 void TransactionChannel::sendUrgent(Request request)
 {
   send(request);
+}
+
+void TransactionChannel::retry(Request request)
+{
+  queue_.push_front(std::move(request));
+  pump();
 }
 
 bool TransactionChannel::polling() const

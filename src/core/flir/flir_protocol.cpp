@@ -250,9 +250,8 @@ void FlirProtocol::onTimeout(const TransactionChannel::Request& lost)
   parser_.reset();
   if (!ready_ && lost.tag != COMMAND)
   {
-    // A set-up answer went missing: start the set-up again once the line is quiet.
-    channel_.clearQueue();
-    queueSetup();
+    // A set-up answer went missing (a slow unit, a busy machine): ask again, and go on from there.
+    channel_.retry(lost);
   }
 }
 

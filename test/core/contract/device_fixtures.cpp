@@ -22,6 +22,9 @@ namespace
 {
 using Kind = DeviceCommand::Kind;
 
+/// s: a busy test machine may starve the I/O threads for a while (the deadline cases read it back).
+constexpr double STATE_TIMEOUT = 1.0;
+
 std::string uniqueLink(const char* name)
 {
   static int counter = 0;
@@ -113,6 +116,7 @@ public:
   explicit FlirFixture(DevicePortConfig::Kind kind)
   {
     startEmulator(FlirPtuEmulatorConfig{}, kind, "flir", config_.link);
+    config_.session.state_timeout = STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override
@@ -179,6 +183,7 @@ public:
     startEmulator(config, kind, "pelco", config_.link);
     config_.pelco.address = 7;
     config_.pelco.tilt_encoding = encoding;
+    config_.session.state_timeout = STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override
@@ -246,6 +251,7 @@ public:
     config_.link.port = emulator_config_.port;
     config_.link.local_host = "127.0.0.1";
     config_.pantilt.version = version;
+    config_.session.state_timeout = STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override
@@ -370,6 +376,7 @@ public:
     config_.link.kind = transport;
     config_.link.port = emulator_->port();
     config_.digiview.acceleration = 4.0;  // as the emulator turns
+    config_.session.state_timeout = STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override

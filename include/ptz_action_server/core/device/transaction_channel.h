@@ -20,7 +20,7 @@
 namespace ptz_action_server
 {
 /// The reply deadline of an exchange of \p exchange_bytes (request and reply): \p configured if > 0, else the
-/// exchange's time on the wire plus 50 ms.
+/// exchange's time on the wire plus 100 ms.
 double replyTimeout(const LinkConfig& link, double configured, std::size_t exchange_bytes);
 
 /**
@@ -53,6 +53,8 @@ public:
   void queue(Request request);
   /// Sends now, ahead of the queue.
   void sendUrgent(Request request);
+  /// Queues \p request first in line (a request that timed out, asked again once the drain is over).
+  void retry(Request request);
   /// Drops the queued (not yet sent) requests: what a new command replaces.
   void clearQueue();
   /// Forgets everything (after a reconnect).

@@ -18,7 +18,7 @@ struct FlirSettings
   double pan_speed = 1.5;       ///< rad/s of position goals (PS); capped by the unit's upper speed (PU)
   double tilt_speed = 1.0;      ///< rad/s (TS)
   double acceleration = 3.0;    ///< rad/s^2, for goal timeouts
-  double reply_timeout = 0.0;   ///< s for one reply; 0: the exchange's wire time plus 50 ms
+  double reply_timeout = 0.0;   ///< s for one reply; 0: the exchange's wire time plus 100 ms
   double banner_timeout = 3.0;  ///< tcp: s to wait for the per-connection banner before the set-up goes out anyway
 };
 

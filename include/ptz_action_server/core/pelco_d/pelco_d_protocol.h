@@ -25,7 +25,7 @@ struct PelcoSettings
                                                  { true, { -M_PI / 2.0, M_PI / 2.0 }, 1.0, 3.0 },
                                                  { true, { 1.0, 24.0 }, 8.0, 0.0 } } };
   std::uint16_t zoom_position_max = 0xFFFF;  ///< the zoom position value at the longest focal length
-  double reply_timeout = 0.0;                ///< s for one reply; 0: the exchange's wire time plus 50 ms
+  double reply_timeout = 0.0;                ///< s for one reply; 0: the exchange's wire time plus 100 ms
 
   /// Zoom X-factor <-> the device's zoom position value.
   std::uint16_t zoomToPosition(double zoom) const;
