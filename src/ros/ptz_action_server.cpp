@@ -425,11 +425,8 @@ std::string PtzActionServer::toRequest(const PtzRelToGoal& goal, ActionKind, con
   {
     return reason;
   }
-  // The goal's pan and tilt follow the contract's convention in the axes of frame_id: clockwise pan, upward tilt.
-  const double pan = goal.pan;
-  const double tilt = goal.tilt;
-  const Eigen::Vector3d in_frame(std::cos(tilt) * std::cos(pan), -std::cos(tilt) * std::sin(pan), std::sin(tilt));
-  const Eigen::Vector3d in_base = frame_in_base.linear() * in_frame;
+  // The goal's pan and tilt follow the contract's convention in the axes of frame_id.
+  const Eigen::Vector3d in_base = frame_in_base.linear() * directionOf(goal.pan, goal.tilt);
   command.values[ZOOM] = goal.zoom;
   if (!kinematics_.aimAlong(in_base, command.values[PAN], command.values[TILT]))
   {
