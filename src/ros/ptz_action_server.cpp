@@ -8,6 +8,7 @@
 #include <tf2_eigen/tf2_eigen.h>
 
 #include "ptz_action_server/core/goal_validation.h"
+#include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/core/text.h"
 
 namespace ptz_action_server
@@ -177,27 +178,6 @@ NodeConfig NodeConfig::load(const ParamReader& params)
   return config;
 }
 
-Capabilities PtzActionServer::urdfLimits(const PtzKinematics& kinematics)
-{
-  Capabilities limits;
-  const JointModel* joints[] = { &kinematics.panJoint(), &kinematics.tiltJoint() };
-  const double contract_bound[] = { M_PI, M_PI / 2.0 };
-  for (Axis axis : { PAN, TILT })
-  {
-    const JointModel& joint = *joints[axis];
-    AxisCapability& capability = limits.axes[axis];
-    capability.range.min = std::max(joint.limits.min, -contract_bound[axis]);
-    capability.range.max = std::min(joint.limits.max, contract_bound[axis]);
-    capability.max_speed = joint.max_velocity;
-    if (capability.range.min >= capability.range.max)
-    {
-      throw ConfigError("URDF joint '" + joint.name + "' has an empty range inside the contract's limits");
-    }
-  }
-  limits.axes[ZOOM].range = AxisRange{ 1.0, 1.0 };
-  return limits;
-}
-
 PtzActionServer::PtzActionServer(const ros::NodeHandle& node_handle, const NodeConfig& config,
                                  const PtzKinematics& kinematics, std::shared_ptr<PtzBackend> backend)
   : node_handle_(node_handle)
@@ -231,29 +211,12 @@ void PtzActionServer::start()
   backend_->start();
 
   // Goals are checked against the tighter of the device's and the URDF's limits.
-  limits_ = backend_->capabilities();
-  const Capabilities urdf = urdfLimits(kinematics_);
-  for (Axis axis : { PAN, TILT })
+  const LimitIntersection intersection = intersectLimits(backend_->capabilities(), urdfLimits(kinematics_));
+  for (const std::string& warning : intersection.warnings)
   {
-    AxisCapability& device = limits_.axes[axis];
-    const AxisCapability& model = urdf.axes[axis];
-    if (device.range.min > model.range.min || device.range.max < model.range.max)
-    {
-      ROS_WARN("%s: the device's %s range [%.4f, %.4f] is narrower than the URDF's [%.4f, %.4f]; using the device's",
-               backend_->name().c_str(), axisName(axis), device.range.min, device.range.max, model.range.min,
-               model.range.max);
-    }
-    device.range.min = std::max(device.range.min, model.range.min);
-    device.range.max = std::min(device.range.max, model.range.max);
-    if (model.max_speed > 0.0)
-    {
-      device.max_speed = std::min(device.max_speed, model.max_speed);
-    }
-    if (device.range.min >= device.range.max)
-    {
-      throw ConfigError(std::string("the device's and the URDF's ") + axisName(axis) + " ranges do not overlap");
-    }
+    ROS_WARN("%s: %s", backend_->name().c_str(), warning.c_str());
   }
+  limits_ = intersection.limits;
 
   // Publishers and the 10 Hz state timer on their own queue and spinner.
   state_publisher_ = state_node_handle_.advertise<PtzState>("ptz_state", 10);

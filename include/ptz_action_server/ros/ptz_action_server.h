@@ -28,6 +28,7 @@
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/goal_monitor.h"
 #include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/ros/param_reader.h"
 
 namespace ptz_action_server
@@ -91,8 +92,11 @@ public:
     return limits_;
   }
 
-  /// Pan and tilt limits and speeds from the URDF, inside the contract's [-pi, pi] and [-pi/2, pi/2].
-  static Capabilities urdfLimits(const PtzKinematics& kinematics);
+  /// Pan and tilt limits and speeds from the URDF (the core's urdfLimits(), kept here for its callers).
+  static Capabilities urdfLimits(const PtzKinematics& kinematics)
+  {
+    return ptz_action_server::urdfLimits(kinematics);
+  }
 
 private:
   using PtzServer = actionlib::ActionServer<PtzAction>;
