@@ -63,38 +63,24 @@ const char* actionName(ActionKind kind)
   return "?";
 }
 
-/// An accepted goal of any of the three action types, seen through one interface.
-class ActiveGoal
-{
-public:
-  virtual ~ActiveGoal() = default;
-  virtual ActionKind kind() const = 0;
-  virtual const std::string& id() const = 0;
-  virtual void accept(const std::string& text) = 0;
-  virtual void reject(const std::string& text) = 0;
-  virtual void publishFeedback(const AxisValues& remaining) = 0;
-  virtual void succeed(const std::string& text) = 0;
-  virtual void abort(const std::string& text) = 0;
-  /// Ends the goal PREEMPTED (setCanceled on an active goal).
-  virtual void preempt(const std::string& text) = 0;
-};
-
 namespace
 {
+/// actionlib's goal handle of any of the three action types, seen through the supervisor's GoalHandle.
 template <class Action>
-class GoalHandleAdapter : public ActiveGoal
+class GoalHandleAdapter : public GoalHandle
 {
 public:
   using Handle = actionlib::ServerGoalHandle<Action>;
   using Result = typename Action::_action_result_type::_result_type;
   using Feedback = typename Action::_action_feedback_type::_feedback_type;
 
-  GoalHandleAdapter(const Handle& handle, ActionKind kind) : handle_(handle), kind_(kind), id_(handle.getGoalID().id)
+  GoalHandleAdapter(const Handle& handle, ActionKind kind)
+    : handle_(handle), action_(actionName(kind)), id_(handle.getGoalID().id)
   {
   }
-  ActionKind kind() const override
+  const std::string& action() const override
   {
-    return kind_;
+    return action_;
   }
   const std::string& id() const override
   {
@@ -102,12 +88,11 @@ public:
   }
   void accept(const std::string& text) override
   {
-    note_ = text;
     handle_.setAccepted(text);
   }
   void reject(const std::string& text) override
   {
-    ROS_WARN_THROTTLE(1.0, "%s goal rejected: %s", actionName(kind_), text.c_str());
+    ROS_WARN_THROTTLE(1.0, "%s goal rejected: %s", action_.c_str(), text.c_str());
     handle_.setRejected(result(false), text);
   }
   void publishFeedback(const AxisValues& remaining) override
@@ -119,27 +104,21 @@ public:
   }
   void succeed(const std::string& text) override
   {
-    ROS_DEBUG("%s goal succeeded: %s", actionName(kind_), text.c_str());
-    handle_.setSucceeded(result(true), withNote(text));
+    ROS_DEBUG("%s goal succeeded: %s", action_.c_str(), text.c_str());
+    handle_.setSucceeded(result(true), text);
   }
   void abort(const std::string& text) override
   {
-    ROS_WARN("%s goal aborted: %s", actionName(kind_), text.c_str());
-    handle_.setAborted(result(false), withNote(text));
+    ROS_WARN("%s goal aborted: %s", action_.c_str(), text.c_str());
+    handle_.setAborted(result(false), text);
   }
   void preempt(const std::string& text) override
   {
-    ROS_DEBUG("%s goal preempted: %s", actionName(kind_), text.c_str());
-    handle_.setCanceled(result(false), withNote(text));
+    ROS_DEBUG("%s goal preempted: %s", action_.c_str(), text.c_str());
+    handle_.setCanceled(result(false), text);
   }
 
 private:
-  /// The final status text keeps the clamping note of the accepted goal.
-  std::string withNote(const std::string& text) const
-  {
-    return note_.empty() ? text : text + " (" + note_ + ")";
-  }
-
   static Result result(bool success)
   {
     Result result;
@@ -148,9 +127,8 @@ private:
   }
 
   Handle handle_;
-  ActionKind kind_;
+  std::string action_;
   std::string id_;
-  std::string note_;  ///< what validation changed (clamping), empty if nothing
   Feedback feedback_;
 };
 }  // namespace
@@ -198,11 +176,9 @@ PtzActionServer::~PtzActionServer()
     state_spinner_->stop();
   }
   node_handle_.getCallbackQueue()->removeByID(reinterpret_cast<uint64_t>(this));
-  if (active_goal_)
+  if (supervisor_)
   {
-    backend_->stop();
-    active_goal_->abort("the node is shutting down");
-    finishGoal();
+    supervisor_->shutdown("the node is shutting down");
   }
 }
 
@@ -217,6 +193,8 @@ void PtzActionServer::start()
     ROS_WARN("%s: %s", backend_->name().c_str(), warning.c_str());
   }
   limits_ = intersection.limits;
+  supervisor_ = std::make_unique<GoalSupervisor>(backend_, limits_, config_.monitor, config_.clamp_goals,
+                                                 std::make_shared<SystemClock>());
 
   // Publishers and the 10 Hz state timer on their own queue and spinner.
   state_publisher_ = state_node_handle_.advertise<PtzState>("ptz_state", 10);
@@ -311,50 +289,20 @@ void PtzActionServer::start()
 template <class Action>
 void PtzActionServer::onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
 {
-  auto goal = std::make_unique<GoalHandleAdapter<Action>>(handle, kind);
-  const PtzSample sample = backend_->sample();
-  if (!sample.link_up)
-  {
-    goal->reject("the " + backend_->name() + " device link is down");
-    return;
-  }
-  Command command;
-  const std::string reason = toRequest(*handle.getGoal(), kind, sample, command);
-  if (!reason.empty())
-  {
-    goal->reject(reason);
-    return;
-  }
-  const ValidatedGoal validated = command.velocity ?
-                                      validateVelocityGoal(command.values, limits_, config_.clamp_goals) :
-                                      validatePositionGoal(command.values, limits_, config_.clamp_goals);
-  if (!validated.accepted)
-  {
-    goal->reject(validated.message);
-    return;
-  }
-  command.values = validated.values;
-  command.note = validated.message;
-  activate(std::move(goal), command);
+  const auto goal = handle.getGoal();
+  supervisor_->submit(
+      std::make_unique<GoalHandleAdapter<Action>>(handle, kind),
+      [&](const PtzSample& current, GoalCommand& command) { return toCommand(*goal, kind, current, command); });
 }
 
 template <class Action>
 void PtzActionServer::onCancel(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
 {
-  if (!active_goal_ || stopping_ || active_goal_->kind() != kind || active_goal_->id() != handle.getGoalID().id)
-  {
-    return;  // not ours, already ended, or already stopping
-  }
-  // Stop the device first; the goal ends once it rests (superviseGoal).
-  const PtzSample sample = backend_->sample();
-  backend_->stop();
-  stopping_ = true;
-  monitor_ = std::make_unique<GoalMonitor>(GoalMonitor::forStop(sample, config_.monitor, clock_.now()));
-  superviseGoal(backend_->sample());
+  supervisor_->cancel(actionName(kind), handle.getGoalID().id);
 }
 
-std::string PtzActionServer::toRequest(const PtzGoal& goal, ActionKind kind, const PtzSample& sample,
-                                       Command& command) const
+std::string PtzActionServer::toCommand(const PtzGoal& goal, ActionKind kind, const PtzSample& sample,
+                                       GoalCommand& command) const
 {
   const AxisValues values{ { goal.pan, goal.tilt, goal.zoom } };
   switch (kind)
@@ -376,7 +324,8 @@ std::string PtzActionServer::toRequest(const PtzGoal& goal, ActionKind kind, con
   }
 }
 
-std::string PtzActionServer::toRequest(const PtzRelToGoal& goal, ActionKind, const PtzSample&, Command& command) const
+std::string PtzActionServer::toCommand(const PtzRelToGoal& goal, ActionKind, const PtzSample&,
+                                       GoalCommand& command) const
 {
   std::string reason = findNonFinite({ { goal.pan, goal.tilt, goal.zoom } }, "position");
   Eigen::Isometry3d frame_in_base = identity();
@@ -398,7 +347,8 @@ std::string PtzActionServer::toRequest(const PtzRelToGoal& goal, ActionKind, con
   return {};
 }
 
-std::string PtzActionServer::toRequest(const PtzFrameGoal& goal, ActionKind, const PtzSample&, Command& command) const
+std::string PtzActionServer::toCommand(const PtzFrameGoal& goal, ActionKind, const PtzSample&,
+                                       GoalCommand& command) const
 {
   std::string reason = findNonFinite({ { 0.0, 0.0, goal.zoom } }, "position");
   Eigen::Isometry3d frame_in_base = identity();
@@ -436,98 +386,10 @@ std::string PtzActionServer::lookupFrame(const std::string& frame_id, Eigen::Iso
   return {};
 }
 
-void PtzActionServer::activate(std::unique_ptr<ActiveGoal> goal, const Command& command)
-{
-  if (active_goal_)
-  {
-    // Retarget from where the device is: no stop in between.
-    active_goal_->preempt(std::string("preempted by a new ") + actionName(goal->kind()) + " goal");
-    finishGoal();
-  }
-  goal->accept(command.note);
-  const PtzSample start = backend_->sample();
-  const bool stop_goal = command.velocity && std::all_of(command.values.begin(), command.values.end(),
-                                                         [](double value) { return value == 0.0; });
-  if (stop_goal)
-  {
-    backend_->stop();
-  }
-  else if (command.velocity)
-  {
-    backend_->moveAtVelocity(command.values);
-  }
-  else
-  {
-    backend_->goTo(command.values);
-  }
-  monitor_ = std::make_unique<GoalMonitor>(
-      command.velocity ? GoalMonitor::forVelocity(command.values, start, limits_, config_.monitor, clock_.now()) :
-                         GoalMonitor::forPosition(command.values, start, limits_, config_.monitor, clock_.now()));
-  active_goal_ = std::move(goal);
-  mode_ = command.velocity ? PtzState::MODE_VELOCITY : PtzState::MODE_POSITION;
-  goal_active_ = true;
-  // A goal the device already satisfies (zero length, or a stop while at rest) ends here, not a tick later.
-  superviseGoal(backend_->sample());
-}
-
-void PtzActionServer::superviseGoal(const PtzSample& sample)
-{
-  if (!active_goal_)
-  {
-    return;
-  }
-  const GoalVerdict verdict = monitor_->update(sample, clock_.now());
-  if (verdict.phase == GoalPhase::ACTIVE)
-  {
-    if (!stopping_)
-    {
-      active_goal_->publishFeedback(verdict.remaining);
-    }
-    return;
-  }
-  if (stopping_)
-  {
-    active_goal_->preempt("cancelled: " + verdict.reason);
-  }
-  else if (verdict.phase == GoalPhase::SUCCEEDED)
-  {
-    if (verdict.stop_device)
-    {
-      backend_->stop();
-    }
-    active_goal_->succeed(verdict.reason);
-  }
-  else
-  {
-    backend_->stop();  // a failed goal must not leave the device moving
-    std::string reason = verdict.reason;
-    if (verdict.device_fault)
-    {
-      reason += ": " + backend_->lastFault();
-    }
-    else if (verdict.link_lost)
-    {
-      const std::string loss = backend_->lastLinkLoss();
-      reason += ": " + (loss.empty() ? std::string("the device stopped reporting its state") : loss);
-    }
-    active_goal_->abort(reason);
-  }
-  finishGoal();
-}
-
-void PtzActionServer::finishGoal()
-{
-  active_goal_.reset();
-  monitor_.reset();
-  stopping_ = false;
-  mode_ = PtzState::MODE_IDLE;
-  goal_active_ = false;
-}
-
 void PtzActionServer::onStateTick()
 {
   const PtzSample sample = backend_->sample();
-  state_message_.mode = mode_;
+  state_message_.mode = static_cast<int8_t>(supervisor_->mode());
   state_message_.pan = static_cast<float>(sample.position[PAN]);
   state_message_.tilt = static_cast<float>(sample.position[TILT]);
   state_message_.zoom = static_cast<float>(sample.position[ZOOM]);
@@ -555,10 +417,10 @@ void PtzActionServer::onStateTick()
   }
   diagnostics_->update();
 
-  if (goal_active_)
+  if (supervisor_->goalActive())
   {
     node_handle_.getCallbackQueue()->addCallback(
-        boost::make_shared<SampleCallback>([this](const PtzSample& handed) { superviseGoal(handed); }, sample),
+        boost::make_shared<SampleCallback>([this](const PtzSample& handed) { supervisor_->supervise(handed); }, sample),
         reinterpret_cast<uint64_t>(this));
   }
 }
@@ -595,7 +457,7 @@ void PtzActionServer::diagnoseBackend(diagnostic_updater::DiagnosticStatusWrappe
   status.add("backend", backend_->name());
   status.add("link", sample.link_up ? "up" : "down");
   status.add("state age (s)", secondsBetween(sample.stamp, clock_.now()));
-  status.add("mode", static_cast<int>(mode_.load()));
+  status.add("mode", static_cast<int>(supervisor_->mode()));
   status.add("device faults", sample.fault_count);
   std::vector<DiagnosticValue> values;
   backend_->diagnostics(values);

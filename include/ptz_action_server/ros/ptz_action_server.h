@@ -26,7 +26,7 @@
 #include "ptz_action_server/PtzRelToAction.h"
 #include "ptz_action_server/PtzState.h"
 #include "ptz_action_server/core/backend.h"
-#include "ptz_action_server/core/goal_monitor.h"
+#include "ptz_action_server/core/goal_supervisor.h"
 #include "ptz_action_server/core/kinematics.h"
 #include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/ros/param_reader.h"
@@ -61,8 +61,6 @@ enum class ActionKind
 };
 
 const char* actionName(ActionKind kind);
-
-class ActiveGoal;
 
 /**
  * \brief The ptz_action_server node around one backend.
@@ -103,31 +101,17 @@ private:
   using PtzRelToServer = actionlib::ActionServer<PtzRelToAction>;
   using PtzFrameServer = actionlib::ActionServer<PtzFrameAction>;
 
-  /// What a goal asks the device to do, after conversion and validation.
-  struct Command
-  {
-    bool velocity = false;
-    AxisValues values{};
-    std::string note;  ///< clamping note for the status text
-  };
-
   template <class Action>
   void onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   template <class Action>
   void onCancel(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
 
-  /// Converts a goal into target values; returns "" or the reason to reject it.
-  std::string toRequest(const PtzGoal& goal, ActionKind kind, const PtzSample& sample, Command& command) const;
-  std::string toRequest(const PtzRelToGoal& goal, ActionKind kind, const PtzSample& sample, Command& command) const;
-  std::string toRequest(const PtzFrameGoal& goal, ActionKind kind, const PtzSample& sample, Command& command) const;
+  /// Converts a goal into what to command (a GoalConverter); returns "" or the reason to reject it.
+  std::string toCommand(const PtzGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
+  std::string toCommand(const PtzRelToGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
+  std::string toCommand(const PtzFrameGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
   /// The transform from \p frame_id to the base frame, looked up once without waiting; "" or the reason.
   std::string lookupFrame(const std::string& frame_id, Eigen::Isometry3d& frame_in_base) const;
-
-  /// Preempts the active goal, accepts \p goal, commands the device and checks the goal at once.
-  void activate(std::unique_ptr<ActiveGoal> goal, const Command& command);
-  /// Feeds a sample to the active goal's monitor and ends the goal on a final verdict. Main thread only.
-  void superviseGoal(const PtzSample& sample);
-  void finishGoal();
 
   void onStateTick();
   void publishStaticTransforms();
@@ -142,14 +126,7 @@ private:
   SystemClock clock_;
   Capabilities limits_;
 
-  // Goal state machine: touched only on the main thread.
-  std::unique_ptr<ActiveGoal> active_goal_;
-  std::unique_ptr<GoalMonitor> monitor_;
-  bool stopping_ = false;  ///< the active goal was cancelled and waits for the device to rest
-
-  // Shared between the threads.
-  std::atomic<int8_t> mode_{ PtzState::MODE_IDLE };
-  std::atomic<bool> goal_active_{ false };  ///< lets the state thread skip handing over samples when idle
+  std::unique_ptr<GoalSupervisor> supervisor_;  ///< the goal state machine, on the main thread; built by start()
 
   // State publishing: only the state thread touches these after start().
   ros::CallbackQueue state_queue_;
