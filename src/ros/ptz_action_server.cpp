@@ -1,23 +1,18 @@
 #include "ptz_action_server/ros/ptz_action_server.h"
 
-#include <algorithm>
-#include <cmath>
+#include <functional>
 
 #include <boost/make_shared.hpp>
 #include <tf2/exceptions.h>
 #include <tf2_eigen/tf2_eigen.h>
 
 #include "ptz_action_server/core/goal_validation.h"
-#include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/core/text.h"
 
 namespace ptz_action_server
 {
 namespace
 {
-constexpr double STATE_RATE = 10.0;  ///< Hz, fixed by the contract
-constexpr double STATE_RATE_TOLERANCE = 0.02;
-constexpr int STATE_RATE_WINDOW = 10;             ///< ticks the measured rate is averaged over
 constexpr double FRAME_LOOKUP_CACHE_TIME = 10.0;  ///< s of tf history kept for frame goals
 
 Eigen::Isometry3d identity()
@@ -158,28 +153,44 @@ NodeConfig NodeConfig::load(const ParamReader& params)
 
 PtzActionServer::PtzActionServer(const ros::NodeHandle& node_handle, const NodeConfig& config,
                                  const PtzKinematics& kinematics, std::shared_ptr<PtzBackend> backend)
-  : node_handle_(node_handle)
-  , state_node_handle_(node_handle)
-  , config_(config)
-  , kinematics_(kinematics)
-  , backend_(std::move(backend))
+  : node_handle_(node_handle), config_(config), kinematics_(kinematics), backend_(std::move(backend))
 {
-  state_node_handle_.setCallbackQueue(&state_queue_);
 }
 
 PtzActionServer::~PtzActionServer()
 {
   // Stop the state thread first: it posts samples that point at this object.
-  state_timer_.stop();
-  if (state_spinner_)
-  {
-    state_spinner_->stop();
-  }
+  state_publisher_.reset();
   node_handle_.getCallbackQueue()->removeByID(reinterpret_cast<uint64_t>(this));
   if (supervisor_)
   {
     supervisor_->shutdown("the node is shutting down");
   }
+}
+
+template <class Action>
+std::unique_ptr<actionlib::ActionServer<Action>> PtzActionServer::makeServer(ActionKind kind)
+{
+  const std::string name = std::string("move_ptz/") + actionName(kind);
+  // A storm of goals from several clients must lose none: large actionlib queues, and finished goals leave the
+  // status list after status_list_timeout, since actionlib republishes the whole list on every goal transition.
+  // Parameters already set under the action's namespace win.
+  ros::NodeHandle action_handle(node_handle_, name);
+  for (const char* parameter : { "actionlib_server_sub_queue_size", "actionlib_server_pub_queue_size" })
+  {
+    if (!action_handle.hasParam(parameter))
+    {
+      action_handle.setParam(parameter, config_.action_queue_size);
+    }
+  }
+  if (!action_handle.hasParam("status_list_timeout"))
+  {
+    action_handle.setParam("status_list_timeout", config_.status_list_timeout);
+  }
+  using Server = actionlib::ActionServer<Action>;
+  return std::make_unique<Server>(
+      node_handle_, name, [this, kind](typename Server::GoalHandle handle) { onGoal<Action>(handle, kind); },
+      [this, kind](typename Server::GoalHandle handle) { onCancel<Action>(handle, kind); }, false);
 }
 
 void PtzActionServer::start()
@@ -196,83 +207,25 @@ void PtzActionServer::start()
   supervisor_ = std::make_unique<GoalSupervisor>(backend_, limits_, config_.monitor, config_.clamp_goals,
                                                  std::make_shared<SystemClock>());
 
-  // Publishers and the 10 Hz state timer on their own queue and spinner.
-  state_publisher_ = state_node_handle_.advertise<PtzState>("ptz_state", 10);
-  joint_state_publisher_ = state_node_handle_.advertise<sensor_msgs::JointState>("joint_states", 10);
-  joint_state_message_.name = { kinematics_.panJoint().name, kinematics_.tiltJoint().name };
-  joint_state_message_.position.assign(2, 0.0);
-  joint_state_message_.velocity.assign(2, 0.0);
-  if (config_.publish_tf)
-  {
-    transform_broadcaster_ = std::make_unique<tf2_ros::TransformBroadcaster>();
-    static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
-    joint_transforms_.resize(2);
-    const JointModel* joints[] = { &kinematics_.panJoint(), &kinematics_.tiltJoint() };
-    for (std::size_t index = 0; index < 2; ++index)
-    {
-      joint_transforms_[index].header.frame_id = joints[index]->parent_link;
-      joint_transforms_[index].child_frame_id = joints[index]->child_link;
-    }
-    publishStaticTransforms();
-  }
-
-  diagnostics_ = std::make_unique<diagnostic_updater::Updater>(state_node_handle_, ros::NodeHandle("~"));
-  diagnostics_->setHardwareID(backend_->name());
-  diagnostics_->add("Backend", this, &PtzActionServer::diagnoseBackend);
-  state_rate_min_ = STATE_RATE;
-  state_rate_max_ = STATE_RATE;
-  state_rate_ = std::make_unique<diagnostic_updater::FrequencyStatus>(
-      diagnostic_updater::FrequencyStatusParam(&state_rate_min_, &state_rate_max_, STATE_RATE_TOLERANCE,
-                                               STATE_RATE_WINDOW),
-      "ptz_state rate");
-  diagnostics_->add(*state_rate_);
-
-  state_timer_ = state_node_handle_.createSteadyTimer(ros::WallDuration(1.0 / STATE_RATE),
-                                                      [this](const ros::SteadyTimerEvent&) { onStateTick(); });
-  state_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &state_queue_);
-  state_spinner_->start();
+  // The 10 Hz state tick on its own thread; its samples reach the supervisor through the main queue.
+  state_publisher_ = std::make_unique<StatePublisher>(
+      node_handle_, kinematics_, backend_, *supervisor_, config_.publish_tf, [this](const PtzSample& sample) {
+        node_handle_.getCallbackQueue()->addCallback(
+            boost::make_shared<SampleCallback>([this](const PtzSample& handed) { supervisor_->supervise(handed); },
+                                               sample),
+            reinterpret_cast<uint64_t>(this));
+      });
+  state_publisher_->start();
 
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>(ros::Duration(FRAME_LOOKUP_CACHE_TIME));
   // No dedicated thread: tf2_ros polls its queue every 10 ms, which alone costs more than the idle budget.
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, node_handle_, false);
 
-  // A storm of goals from several clients must lose none: large actionlib queues, and finished goals leave the
-  // status list after status_list_timeout, since actionlib republishes the whole list on every goal transition.
-  // Parameters already set under an action's namespace win.
-  for (ActionKind kind : { ActionKind::POSITION_ABS, ActionKind::POSITION_REL, ActionKind::VELOCITY,
-                           ActionKind::POSITION_ABS_TF, ActionKind::FRAME })
-  {
-    ros::NodeHandle action_handle(node_handle_, std::string("move_ptz/") + actionName(kind));
-    for (const char* name : { "actionlib_server_sub_queue_size", "actionlib_server_pub_queue_size" })
-    {
-      if (!action_handle.hasParam(name))
-      {
-        action_handle.setParam(name, config_.action_queue_size);
-      }
-    }
-    if (!action_handle.hasParam("status_list_timeout"))
-    {
-      action_handle.setParam("status_list_timeout", config_.status_list_timeout);
-    }
-  }
-  auto make_ptz_server = [this](ActionKind kind) {
-    return std::make_unique<PtzServer>(
-        node_handle_, std::string("move_ptz/") + actionName(kind),
-        [this, kind](PtzServer::GoalHandle handle) { onGoal<PtzAction>(handle, kind); },
-        [this, kind](PtzServer::GoalHandle handle) { onCancel<PtzAction>(handle, kind); }, false);
-  };
-  position_abs_server_ = make_ptz_server(ActionKind::POSITION_ABS);
-  position_rel_server_ = make_ptz_server(ActionKind::POSITION_REL);
-  velocity_server_ = make_ptz_server(ActionKind::VELOCITY);
-  position_abs_tf_server_ = std::make_unique<PtzRelToServer>(
-      node_handle_, "move_ptz/position_abs_tf",
-      [this](PtzRelToServer::GoalHandle handle) { onGoal<PtzRelToAction>(handle, ActionKind::POSITION_ABS_TF); },
-      [this](PtzRelToServer::GoalHandle handle) { onCancel<PtzRelToAction>(handle, ActionKind::POSITION_ABS_TF); },
-      false);
-  frame_server_ = std::make_unique<PtzFrameServer>(
-      node_handle_, "move_ptz/frame",
-      [this](PtzFrameServer::GoalHandle handle) { onGoal<PtzFrameAction>(handle, ActionKind::FRAME); },
-      [this](PtzFrameServer::GoalHandle handle) { onCancel<PtzFrameAction>(handle, ActionKind::FRAME); }, false);
+  position_abs_server_ = makeServer<PtzAction>(ActionKind::POSITION_ABS);
+  position_rel_server_ = makeServer<PtzAction>(ActionKind::POSITION_REL);
+  velocity_server_ = makeServer<PtzAction>(ActionKind::VELOCITY);
+  position_abs_tf_server_ = makeServer<PtzRelToAction>(ActionKind::POSITION_ABS_TF);
+  frame_server_ = makeServer<PtzFrameAction>(ActionKind::FRAME);
   position_abs_server_->start();
   position_rel_server_->start();
   velocity_server_->start();
@@ -384,93 +337,6 @@ std::string PtzActionServer::lookupFrame(const std::string& frame_id, Eigen::Iso
     return "frame '" + frame_id + "' is unknown to tf: " + error.what();
   }
   return {};
-}
-
-void PtzActionServer::onStateTick()
-{
-  const PtzSample sample = backend_->sample();
-  state_message_.mode = static_cast<int8_t>(supervisor_->mode());
-  state_message_.pan = static_cast<float>(sample.position[PAN]);
-  state_message_.tilt = static_cast<float>(sample.position[TILT]);
-  state_message_.zoom = static_cast<float>(sample.position[ZOOM]);
-  state_publisher_.publish(state_message_);
-  state_rate_->tick();
-
-  const ros::Time stamp = toRosTime(sample.stamp);
-  joint_state_message_.header.stamp = stamp;
-  joint_state_message_.position[0] = sample.position[PAN];
-  joint_state_message_.position[1] = sample.position[TILT];
-  joint_state_message_.velocity[0] = sample.velocity[PAN];
-  joint_state_message_.velocity[1] = sample.velocity[TILT];
-  joint_state_publisher_.publish(joint_state_message_);
-
-  if (transform_broadcaster_)
-  {
-    const double values[] = { sample.position[PAN], sample.position[TILT] };
-    const JointModel* joints[] = { &kinematics_.panJoint(), &kinematics_.tiltJoint() };
-    for (std::size_t index = 0; index < 2; ++index)
-    {
-      joint_transforms_[index].header.stamp = stamp;
-      joint_transforms_[index].transform = tf2::eigenToTransform(joints[index]->transform(values[index])).transform;
-    }
-    transform_broadcaster_->sendTransform(joint_transforms_);
-  }
-  diagnostics_->update();
-
-  if (supervisor_->goalActive())
-  {
-    node_handle_.getCallbackQueue()->addCallback(
-        boost::make_shared<SampleCallback>([this](const PtzSample& handed) { supervisor_->supervise(handed); }, sample),
-        reinterpret_cast<uint64_t>(this));
-  }
-}
-
-void PtzActionServer::publishStaticTransforms()
-{
-  std::vector<geometry_msgs::TransformStamped> transforms;
-  const ros::Time now = ros::Time::now();
-  for (const JointModel& joint : kinematics_.fixedJoints())
-  {
-    geometry_msgs::TransformStamped transform = tf2::eigenToTransform(joint.transform(0.0));
-    transform.header.stamp = now;
-    transform.header.frame_id = joint.parent_link;
-    transform.child_frame_id = joint.child_link;
-    transforms.push_back(transform);
-  }
-  if (!transforms.empty())
-  {
-    static_broadcaster_->sendTransform(transforms);
-  }
-}
-
-void PtzActionServer::diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper& status)
-{
-  const PtzSample sample = backend_->sample();
-  if (sample.link_up)
-  {
-    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "link up");
-  }
-  else
-  {
-    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "link down");
-  }
-  status.add("backend", backend_->name());
-  status.add("link", sample.link_up ? "up" : "down");
-  status.add("state age (s)", secondsBetween(sample.stamp, clock_.now()));
-  status.add("mode", static_cast<int>(supervisor_->mode()));
-  status.add("device faults", sample.fault_count);
-  std::vector<DiagnosticValue> values;
-  backend_->diagnostics(values);
-  for (const DiagnosticValue& value : values)
-  {
-    status.add(value.first, value.second);
-  }
-}
-
-ros::Time PtzActionServer::toRosTime(TimePoint stamp) const
-{
-  const double age = std::max(0.0, secondsBetween(stamp, clock_.now()));
-  return ros::Time::now() - ros::Duration(age);
 }
 
 }  // namespace ptz_action_server

@@ -1,35 +1,26 @@
 /**
  * \file
- * \brief The ROS node: action servers, PtzState, joint_states, tf and diagnostics around one backend.
+ * \brief The ROS node: the five action servers around one backend, its GoalSupervisor and its StatePublisher.
  */
 #pragma once
 
-#include <atomic>
 #include <memory>
 #include <string>
-#include <vector>
 
 #include <actionlib/server/action_server.h>
-#include <diagnostic_updater/diagnostic_updater.h>
-#include <diagnostic_updater/update_functions.h>
-#include <geometry_msgs/TransformStamped.h>
-#include <ros/callback_queue.h>
 #include <ros/ros.h>
-#include <sensor_msgs/JointState.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/static_transform_broadcaster.h>
-#include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/PtzFrameAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
-#include "ptz_action_server/PtzState.h"
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/goal_supervisor.h"
 #include "ptz_action_server/core/kinematics.h"
 #include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/ros/param_reader.h"
+#include "ptz_action_server/ros/state_publisher.h"
 
 namespace ptz_action_server
 {
@@ -65,10 +56,12 @@ const char* actionName(ActionKind kind);
 /**
  * \brief The ptz_action_server node around one backend.
  *
- * Threads: the node handle's queue (the main thread) runs every action callback and the goal state machine; the
- * 10 Hz state timer runs on its own queue and spinner, publishes PtzState, joint_states, tf and diagnostics, and
- * hands each sample to the main thread for the goal's feedback and verdict. The backend is shared by both and is
- * thread-safe by contract.
+ * It converts the goals of the five actions (looking frames up in tf) and adapts actionlib's goal handles; the
+ * GoalSupervisor runs the goals, the StatePublisher the 10 Hz state tick.
+ *
+ * Threads: the node handle's queue (the main thread) runs every action callback and the supervisor; the state tick
+ * runs on its own queue and spinner and hands each sample to the main thread for the goal's feedback and verdict.
+ * The backend is shared by both and is thread-safe by contract.
  */
 class PtzActionServer
 {
@@ -101,6 +94,9 @@ private:
   using PtzRelToServer = actionlib::ActionServer<PtzRelToAction>;
   using PtzFrameServer = actionlib::ActionServer<PtzFrameAction>;
 
+  /// The action server of \p kind, not started, with the node's queue sizes and status_list_timeout.
+  template <class Action>
+  std::unique_ptr<actionlib::ActionServer<Action>> makeServer(ActionKind kind);
   template <class Action>
   void onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   template <class Action>
@@ -113,36 +109,14 @@ private:
   /// The transform from \p frame_id to the base frame, looked up once without waiting; "" or the reason.
   std::string lookupFrame(const std::string& frame_id, Eigen::Isometry3d& frame_in_base) const;
 
-  void onStateTick();
-  void publishStaticTransforms();
-  void diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper& status);
-  ros::Time toRosTime(TimePoint stamp) const;
-
-  ros::NodeHandle node_handle_;        ///< the node's namespace: actions and topics; the main callback queue
-  ros::NodeHandle state_node_handle_;  ///< same namespace on state_queue_
+  ros::NodeHandle node_handle_;  ///< the node's namespace: actions and topics; the main callback queue
   NodeConfig config_;
   PtzKinematics kinematics_;
   std::shared_ptr<PtzBackend> backend_;
-  SystemClock clock_;
   Capabilities limits_;
 
-  std::unique_ptr<GoalSupervisor> supervisor_;  ///< the goal state machine, on the main thread; built by start()
-
-  // State publishing: only the state thread touches these after start().
-  ros::CallbackQueue state_queue_;
-  std::unique_ptr<ros::AsyncSpinner> state_spinner_;
-  ros::SteadyTimer state_timer_;
-  ros::Publisher state_publisher_;
-  ros::Publisher joint_state_publisher_;
-  PtzState state_message_;
-  sensor_msgs::JointState joint_state_message_;
-  std::vector<geometry_msgs::TransformStamped> joint_transforms_;  ///< pan and tilt, reused every tick
-  std::unique_ptr<tf2_ros::TransformBroadcaster> transform_broadcaster_;
-  std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
-  std::unique_ptr<diagnostic_updater::Updater> diagnostics_;
-  double state_rate_min_ = 0.0;
-  double state_rate_max_ = 0.0;
-  std::unique_ptr<diagnostic_updater::FrequencyStatus> state_rate_;
+  std::unique_ptr<GoalSupervisor> supervisor_;       ///< the goal state machine, on the main thread; built by start()
+  std::unique_ptr<StatePublisher> state_publisher_;  ///< the 10 Hz tick, on its own thread; built by start()
 
   // Frame lookups for position_abs_tf and frame goals; the listener feeds the buffer from the main queue.
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
