@@ -48,6 +48,7 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   }
   goal->accept(note);
   const PtzSample start = backend_->sample();
+  ++goal_serial_;
   const bool stop_goal = command.velocity && std::all_of(command.values.begin(), command.values.end(),
                                                          [](double value) { return value == 0.0; });
   if (stop_goal)
@@ -69,7 +70,7 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   note_ = note;
   mode_ = command.velocity ? GoalMode::VELOCITY : GoalMode::POSITION;
   // A goal the device already satisfies (zero length, or a stop while at rest) ends here, not a tick later.
-  supervise(backend_->sample());
+  judge(backend_->sample());
 }
 
 void GoalSupervisor::cancel(const std::string& action, const std::string& id)
@@ -80,13 +81,32 @@ void GoalSupervisor::cancel(const std::string& action, const std::string& id)
   }
   // Stop the device first; the goal ends once it rests (supervise).
   const PtzSample start = backend_->sample();
+  ++goal_serial_;
   backend_->stop();
   stopping_ = true;
   monitor_ = std::make_unique<GoalMonitor>(GoalMonitor::forStop(start, config_, clock_->now()));
-  supervise(backend_->sample());
+  judge(backend_->sample());
 }
 
-void GoalSupervisor::supervise(const PtzSample& sample)
+GoalSample GoalSupervisor::sample() const
+{
+  GoalSample tagged;
+  // The serial before the sample: a sample tagged with the active goal's serial was taken after its start sample.
+  tagged.goal_serial = goal_serial_.load();
+  tagged.sample = backend_->sample();
+  return tagged;
+}
+
+void GoalSupervisor::supervise(const GoalSample& sample)
+{
+  // A sample taken for an earlier goal, or before the cancel, knows nothing of what the active monitor started from.
+  if (sample.goal_serial == goal_serial_.load())
+  {
+    judge(sample.sample);
+  }
+}
+
+void GoalSupervisor::judge(const PtzSample& sample)
 {
   if (!active_goal_)
   {

@@ -24,7 +24,7 @@ Eigen::Isometry3d identity()
 class SampleCallback : public ros::CallbackInterface
 {
 public:
-  SampleCallback(std::function<void(const PtzSample&)> handler, const PtzSample& sample)
+  SampleCallback(std::function<void(const GoalSample&)> handler, const GoalSample& sample)
     : handler_(std::move(handler)), sample_(sample)
   {
   }
@@ -35,8 +35,8 @@ public:
   }
 
 private:
-  std::function<void(const PtzSample&)> handler_;
-  PtzSample sample_;
+  std::function<void(const GoalSample&)> handler_;
+  GoalSample sample_;
 };
 }  // namespace
 
@@ -209,9 +209,9 @@ void PtzActionServer::start()
 
   // The 10 Hz state tick on its own thread; its samples reach the supervisor through the main queue.
   state_publisher_ = std::make_unique<StatePublisher>(
-      node_handle_, kinematics_, backend_, *supervisor_, config_.publish_tf, [this](const PtzSample& sample) {
+      node_handle_, kinematics_, backend_, *supervisor_, config_.publish_tf, [this](const GoalSample& sample) {
         node_handle_.getCallbackQueue()->addCallback(
-            boost::make_shared<SampleCallback>([this](const PtzSample& handed) { supervisor_->supervise(handed); },
+            boost::make_shared<SampleCallback>([this](const GoalSample& handed) { supervisor_->supervise(handed); },
                                                sample),
             reinterpret_cast<uint64_t>(this));
       });

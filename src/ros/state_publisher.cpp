@@ -80,7 +80,8 @@ void StatePublisher::start()
 
 void StatePublisher::onTick()
 {
-  const PtzSample sample = backend_->sample();
+  const GoalSample tagged = supervisor_.sample();
+  const PtzSample& sample = tagged.sample;
   state_message_.mode = static_cast<int8_t>(supervisor_.mode());
   state_message_.pan = static_cast<float>(sample.position[PAN]);
   state_message_.tilt = static_cast<float>(sample.position[TILT]);
@@ -111,7 +112,7 @@ void StatePublisher::onTick()
 
   if (supervisor_.goalActive())
   {
-    hand_over_(sample);
+    hand_over_(tagged);
   }
 }
 

@@ -32,6 +32,13 @@ struct GoalCommand
   AxisValues values{};
 };
 
+/// A backend sample and the goal it was taken for.
+struct GoalSample
+{
+  std::uint64_t goal_serial = 0;  ///< the supervisor's goal serial, read before the backend was sampled
+  PtzSample sample;
+};
+
 /// Converts a goal into \p command, given the device's \p current state; returns "" or the reason to reject it.
 using GoalConverter = std::function<std::string(const PtzSample& current, GoalCommand& command)>;
 
@@ -65,8 +72,10 @@ public:
  * A new goal preempts the active one before it is accepted, and the device is retargeted without a stop in between.
  * A cancel stops the device; the goal ends PREEMPTED once the device rests. A goal that fails stops the device.
  *
- * Threads: submit(), cancel(), supervise() and shutdown() run on one thread (the node's main thread); mode() and
- * goalActive() may be called from any thread.
+ * Threads: submit(), cancel(), supervise() and shutdown() run on one thread (the node's main thread); sample(),
+ * mode() and goalActive() may be called from any thread. Samples taken on another thread reach supervise() late: each
+ * carries the goal serial it was taken under, and a sample of an earlier goal (or from before a cancel) is ignored,
+ * so the active goal is only judged on samples taken after the one its monitor starts from.
  */
 class GoalSupervisor
 {
@@ -88,11 +97,15 @@ public:
   /// Stops the device if the goal \p id of \p action is the active one; it ends once the device rests.
   void cancel(const std::string& action, const std::string& id);
 
-  /// Judges the active goal at \p sample: feedback while it goes on, its end on a final verdict.
-  void supervise(const PtzSample& sample);
+  /// Judges the active goal at \p sample, unless it was taken for another goal: feedback while the goal goes on,
+  /// its end on a final verdict.
+  void supervise(const GoalSample& sample);
 
   /// Stops the device and aborts the active goal with \p reason.
   void shutdown(const std::string& reason);
+
+  /// The backend's latest sample, tagged with the goal it belongs to. Any thread (the state thread calls it).
+  GoalSample sample() const;
 
   /// What the active goal makes the device do. Any thread.
   GoalMode mode() const
@@ -110,6 +123,8 @@ private:
   void activate(std::unique_ptr<GoalHandle> goal, const GoalCommand& command, const std::string& note);
   /// The final status text keeps the clamping note of the accepted goal.
   std::string withNote(const std::string& text) const;
+  /// supervise() for a sample known to belong to the active goal.
+  void judge(const PtzSample& sample);
   void finish();
 
   const std::shared_ptr<PtzBackend> backend_;
@@ -125,6 +140,8 @@ private:
   bool stopping_ = false;  ///< the active goal was cancelled and waits for the device to rest
 
   std::atomic<GoalMode> mode_{ GoalMode::IDLE };
+  /// Changes with each goal, and when a cancel starts the stop, after the sample its monitor starts from.
+  std::atomic<std::uint64_t> goal_serial_{ 0 };
 };
 
 }  // namespace ptz_action_server

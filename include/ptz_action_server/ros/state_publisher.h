@@ -36,9 +36,9 @@ class StatePublisher
 {
 public:
   /// Called on the state thread with each sample taken while a goal is active.
-  using SampleHandler = std::function<void(const PtzSample&)>;
+  using SampleHandler = std::function<void(const GoalSample&)>;
 
-  /// \p supervisor must outlive the publisher; only its thread-safe mode() and goalActive() are used.
+  /// \p supervisor must outlive the publisher; only its thread-safe sample(), mode() and goalActive() are used.
   StatePublisher(const ros::NodeHandle& node_handle, const PtzKinematics& kinematics,
                  std::shared_ptr<PtzBackend> backend, const GoalSupervisor& supervisor, bool publish_tf,
                  SampleHandler hand_over);
