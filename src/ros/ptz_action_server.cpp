@@ -204,8 +204,7 @@ void PtzActionServer::start()
     ROS_WARN("%s: %s", backend_->name().c_str(), warning.c_str());
   }
   limits_ = intersection.limits;
-  supervisor_ = std::make_unique<GoalSupervisor>(backend_, limits_, config_.monitor, config_.clamp_goals,
-                                                 std::make_shared<SystemClock>());
+  supervisor_ = std::make_unique<GoalSupervisor>(backend_, limits_, config_.monitor, config_.clamp_goals);
 
   // The 10 Hz state tick on its own thread; its samples reach the supervisor through the main queue.
   state_publisher_ = std::make_unique<StatePublisher>(
