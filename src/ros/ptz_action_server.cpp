@@ -8,6 +8,7 @@
 
 #include "ptz_action_server/core/goal_validation.h"
 #include "ptz_action_server/core/text.h"
+#include "ptz_action_server/ros/state_publisher.h"
 
 namespace ptz_action_server
 {

@@ -20,7 +20,6 @@
 #include "ptz_action_server/core/kinematics.h"
 #include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/ros/param_reader.h"
-#include "ptz_action_server/ros/state_publisher.h"
 
 namespace ptz_action_server
 {
@@ -52,6 +51,8 @@ enum class ActionKind
 };
 
 const char* actionName(ActionKind kind);
+
+class StatePublisher;
 
 /**
  * \brief The ptz_action_server node around one backend.
