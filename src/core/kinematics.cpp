@@ -64,6 +64,11 @@ JointModel requireRevolute(const urdf::ModelInterface& model, const std::string&
 }
 }  // namespace
 
+Eigen::Vector3d directionOf(double pan, double tilt)
+{
+  return Eigen::Vector3d(std::cos(tilt) * std::cos(pan), -std::cos(tilt) * std::sin(pan), std::sin(tilt));
+}
+
 Eigen::Isometry3d JointModel::transform(double q) const
 {
   if (!revolute)

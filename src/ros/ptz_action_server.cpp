@@ -1,7 +1,6 @@
 #include "ptz_action_server/ros/ptz_action_server.h"
 
-#include <algorithm>
-#include <cmath>
+#include <functional>
 
 #include <boost/make_shared.hpp>
 #include <tf2/exceptions.h>
@@ -9,14 +8,12 @@
 
 #include "ptz_action_server/core/goal_validation.h"
 #include "ptz_action_server/core/text.h"
+#include "ptz_action_server/ros/state_publisher.h"
 
 namespace ptz_action_server
 {
 namespace
 {
-constexpr double STATE_RATE = 10.0;  ///< Hz, fixed by the contract
-constexpr double STATE_RATE_TOLERANCE = 0.02;
-constexpr int STATE_RATE_WINDOW = 10;             ///< ticks the measured rate is averaged over
 constexpr double FRAME_LOOKUP_CACHE_TIME = 10.0;  ///< s of tf history kept for frame goals
 
 Eigen::Isometry3d identity()
@@ -28,7 +25,7 @@ Eigen::Isometry3d identity()
 class SampleCallback : public ros::CallbackInterface
 {
 public:
-  SampleCallback(std::function<void(const PtzSample&)> handler, const PtzSample& sample)
+  SampleCallback(std::function<void(const GoalSample&)> handler, const GoalSample& sample)
     : handler_(std::move(handler)), sample_(sample)
   {
   }
@@ -39,8 +36,8 @@ public:
   }
 
 private:
-  std::function<void(const PtzSample&)> handler_;
-  PtzSample sample_;
+  std::function<void(const GoalSample&)> handler_;
+  GoalSample sample_;
 };
 }  // namespace
 
@@ -62,38 +59,24 @@ const char* actionName(ActionKind kind)
   return "?";
 }
 
-/// An accepted goal of any of the three action types, seen through one interface.
-class ActiveGoal
-{
-public:
-  virtual ~ActiveGoal() = default;
-  virtual ActionKind kind() const = 0;
-  virtual const std::string& id() const = 0;
-  virtual void accept(const std::string& text) = 0;
-  virtual void reject(const std::string& text) = 0;
-  virtual void publishFeedback(const AxisValues& remaining) = 0;
-  virtual void succeed(const std::string& text) = 0;
-  virtual void abort(const std::string& text) = 0;
-  /// Ends the goal PREEMPTED (setCanceled on an active goal).
-  virtual void preempt(const std::string& text) = 0;
-};
-
 namespace
 {
+/// actionlib's goal handle of any of the three action types, seen through the supervisor's GoalHandle.
 template <class Action>
-class GoalHandleAdapter : public ActiveGoal
+class GoalHandleAdapter : public GoalHandle
 {
 public:
   using Handle = actionlib::ServerGoalHandle<Action>;
   using Result = typename Action::_action_result_type::_result_type;
   using Feedback = typename Action::_action_feedback_type::_feedback_type;
 
-  GoalHandleAdapter(const Handle& handle, ActionKind kind) : handle_(handle), kind_(kind), id_(handle.getGoalID().id)
+  GoalHandleAdapter(const Handle& handle, ActionKind kind)
+    : handle_(handle), action_(actionName(kind)), id_(handle.getGoalID().id)
   {
   }
-  ActionKind kind() const override
+  const std::string& action() const override
   {
-    return kind_;
+    return action_;
   }
   const std::string& id() const override
   {
@@ -101,12 +84,11 @@ public:
   }
   void accept(const std::string& text) override
   {
-    note_ = text;
     handle_.setAccepted(text);
   }
   void reject(const std::string& text) override
   {
-    ROS_WARN_THROTTLE(1.0, "%s goal rejected: %s", actionName(kind_), text.c_str());
+    ROS_WARN_THROTTLE(1.0, "%s goal rejected: %s", action_.c_str(), text.c_str());
     handle_.setRejected(result(false), text);
   }
   void publishFeedback(const AxisValues& remaining) override
@@ -118,27 +100,21 @@ public:
   }
   void succeed(const std::string& text) override
   {
-    ROS_DEBUG("%s goal succeeded: %s", actionName(kind_), text.c_str());
-    handle_.setSucceeded(result(true), withNote(text));
+    ROS_DEBUG("%s goal succeeded: %s", action_.c_str(), text.c_str());
+    handle_.setSucceeded(result(true), text);
   }
   void abort(const std::string& text) override
   {
-    ROS_WARN("%s goal aborted: %s", actionName(kind_), text.c_str());
-    handle_.setAborted(result(false), withNote(text));
+    ROS_WARN("%s goal aborted: %s", action_.c_str(), text.c_str());
+    handle_.setAborted(result(false), text);
   }
   void preempt(const std::string& text) override
   {
-    ROS_DEBUG("%s goal preempted: %s", actionName(kind_), text.c_str());
-    handle_.setCanceled(result(false), withNote(text));
+    ROS_DEBUG("%s goal preempted: %s", action_.c_str(), text.c_str());
+    handle_.setCanceled(result(false), text);
   }
 
 private:
-  /// The final status text keeps the clamping note of the accepted goal.
-  std::string withNote(const std::string& text) const
-  {
-    return note_.empty() ? text : text + " (" + note_ + ")";
-  }
-
   static Result result(bool success)
   {
     Result result;
@@ -147,9 +123,8 @@ private:
   }
 
   Handle handle_;
-  ActionKind kind_;
+  std::string action_;
   std::string id_;
-  std::string note_;  ///< what validation changed (clamping), empty if nothing
   Feedback feedback_;
 };
 }  // namespace
@@ -177,53 +152,46 @@ NodeConfig NodeConfig::load(const ParamReader& params)
   return config;
 }
 
-Capabilities PtzActionServer::urdfLimits(const PtzKinematics& kinematics)
-{
-  Capabilities limits;
-  const JointModel* joints[] = { &kinematics.panJoint(), &kinematics.tiltJoint() };
-  const double contract_bound[] = { M_PI, M_PI / 2.0 };
-  for (Axis axis : { PAN, TILT })
-  {
-    const JointModel& joint = *joints[axis];
-    AxisCapability& capability = limits.axes[axis];
-    capability.range.min = std::max(joint.limits.min, -contract_bound[axis]);
-    capability.range.max = std::min(joint.limits.max, contract_bound[axis]);
-    capability.max_speed = joint.max_velocity;
-    if (capability.range.min >= capability.range.max)
-    {
-      throw ConfigError("URDF joint '" + joint.name + "' has an empty range inside the contract's limits");
-    }
-  }
-  limits.axes[ZOOM].range = AxisRange{ 1.0, 1.0 };
-  return limits;
-}
-
 PtzActionServer::PtzActionServer(const ros::NodeHandle& node_handle, const NodeConfig& config,
                                  const PtzKinematics& kinematics, std::shared_ptr<PtzBackend> backend)
-  : node_handle_(node_handle)
-  , state_node_handle_(node_handle)
-  , config_(config)
-  , kinematics_(kinematics)
-  , backend_(std::move(backend))
+  : node_handle_(node_handle), config_(config), kinematics_(kinematics), backend_(std::move(backend))
 {
-  state_node_handle_.setCallbackQueue(&state_queue_);
 }
 
 PtzActionServer::~PtzActionServer()
 {
   // Stop the state thread first: it posts samples that point at this object.
-  state_timer_.stop();
-  if (state_spinner_)
-  {
-    state_spinner_->stop();
-  }
+  state_publisher_.reset();
   node_handle_.getCallbackQueue()->removeByID(reinterpret_cast<uint64_t>(this));
-  if (active_goal_)
+  if (supervisor_)
   {
-    backend_->stop();
-    active_goal_->abort("the node is shutting down");
-    finishGoal();
+    supervisor_->shutdown("the node is shutting down");
   }
+}
+
+template <class Action>
+std::unique_ptr<actionlib::ActionServer<Action>> PtzActionServer::makeServer(ActionKind kind)
+{
+  const std::string name = std::string("move_ptz/") + actionName(kind);
+  // A storm of goals from several clients must lose none: large actionlib queues, and finished goals leave the
+  // status list after status_list_timeout, since actionlib republishes the whole list on every goal transition.
+  // Parameters already set under the action's namespace win.
+  ros::NodeHandle action_handle(node_handle_, name);
+  for (const char* parameter : { "actionlib_server_sub_queue_size", "actionlib_server_pub_queue_size" })
+  {
+    if (!action_handle.hasParam(parameter))
+    {
+      action_handle.setParam(parameter, config_.action_queue_size);
+    }
+  }
+  if (!action_handle.hasParam("status_list_timeout"))
+  {
+    action_handle.setParam("status_list_timeout", config_.status_list_timeout);
+  }
+  using Server = actionlib::ActionServer<Action>;
+  return std::make_unique<Server>(
+      node_handle_, name, [this, kind](typename Server::GoalHandle handle) { onGoal<Action>(handle, kind); },
+      [this, kind](typename Server::GoalHandle handle) { onCancel<Action>(handle, kind); }, false);
 }
 
 void PtzActionServer::start()
@@ -231,107 +199,33 @@ void PtzActionServer::start()
   backend_->start();
 
   // Goals are checked against the tighter of the device's and the URDF's limits.
-  limits_ = backend_->capabilities();
-  const Capabilities urdf = urdfLimits(kinematics_);
-  for (Axis axis : { PAN, TILT })
+  const LimitIntersection intersection = intersectLimits(backend_->capabilities(), urdfLimits(kinematics_));
+  for (const std::string& warning : intersection.warnings)
   {
-    AxisCapability& device = limits_.axes[axis];
-    const AxisCapability& model = urdf.axes[axis];
-    if (device.range.min > model.range.min || device.range.max < model.range.max)
-    {
-      ROS_WARN("%s: the device's %s range [%.4f, %.4f] is narrower than the URDF's [%.4f, %.4f]; using the device's",
-               backend_->name().c_str(), axisName(axis), device.range.min, device.range.max, model.range.min,
-               model.range.max);
-    }
-    device.range.min = std::max(device.range.min, model.range.min);
-    device.range.max = std::min(device.range.max, model.range.max);
-    if (model.max_speed > 0.0)
-    {
-      device.max_speed = std::min(device.max_speed, model.max_speed);
-    }
-    if (device.range.min >= device.range.max)
-    {
-      throw ConfigError(std::string("the device's and the URDF's ") + axisName(axis) + " ranges do not overlap");
-    }
+    ROS_WARN("%s: %s", backend_->name().c_str(), warning.c_str());
   }
+  limits_ = intersection.limits;
+  supervisor_ = std::make_unique<GoalSupervisor>(backend_, limits_, config_.monitor, config_.clamp_goals);
 
-  // Publishers and the 10 Hz state timer on their own queue and spinner.
-  state_publisher_ = state_node_handle_.advertise<PtzState>("ptz_state", 10);
-  joint_state_publisher_ = state_node_handle_.advertise<sensor_msgs::JointState>("joint_states", 10);
-  joint_state_message_.name = { kinematics_.panJoint().name, kinematics_.tiltJoint().name };
-  joint_state_message_.position.assign(2, 0.0);
-  joint_state_message_.velocity.assign(2, 0.0);
-  if (config_.publish_tf)
-  {
-    transform_broadcaster_ = std::make_unique<tf2_ros::TransformBroadcaster>();
-    static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
-    joint_transforms_.resize(2);
-    const JointModel* joints[] = { &kinematics_.panJoint(), &kinematics_.tiltJoint() };
-    for (std::size_t index = 0; index < 2; ++index)
-    {
-      joint_transforms_[index].header.frame_id = joints[index]->parent_link;
-      joint_transforms_[index].child_frame_id = joints[index]->child_link;
-    }
-    publishStaticTransforms();
-  }
-
-  diagnostics_ = std::make_unique<diagnostic_updater::Updater>(state_node_handle_, ros::NodeHandle("~"));
-  diagnostics_->setHardwareID(backend_->name());
-  diagnostics_->add("Backend", this, &PtzActionServer::diagnoseBackend);
-  state_rate_min_ = STATE_RATE;
-  state_rate_max_ = STATE_RATE;
-  state_rate_ = std::make_unique<diagnostic_updater::FrequencyStatus>(
-      diagnostic_updater::FrequencyStatusParam(&state_rate_min_, &state_rate_max_, STATE_RATE_TOLERANCE,
-                                               STATE_RATE_WINDOW),
-      "ptz_state rate");
-  diagnostics_->add(*state_rate_);
-
-  state_timer_ = state_node_handle_.createSteadyTimer(ros::WallDuration(1.0 / STATE_RATE),
-                                                      [this](const ros::SteadyTimerEvent&) { onStateTick(); });
-  state_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &state_queue_);
-  state_spinner_->start();
+  // The 10 Hz state tick on its own thread; its samples reach the supervisor through the main queue.
+  state_publisher_ = std::make_unique<StatePublisher>(
+      node_handle_, kinematics_, backend_, *supervisor_, config_.publish_tf, [this](const GoalSample& sample) {
+        node_handle_.getCallbackQueue()->addCallback(
+            boost::make_shared<SampleCallback>([this](const GoalSample& handed) { supervisor_->supervise(handed); },
+                                               sample),
+            reinterpret_cast<uint64_t>(this));
+      });
+  state_publisher_->start();
 
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>(ros::Duration(FRAME_LOOKUP_CACHE_TIME));
   // No dedicated thread: tf2_ros polls its queue every 10 ms, which alone costs more than the idle budget.
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, node_handle_, false);
 
-  // A storm of goals from several clients must lose none: large actionlib queues, and finished goals leave the
-  // status list after status_list_timeout, since actionlib republishes the whole list on every goal transition.
-  // Parameters already set under an action's namespace win.
-  for (ActionKind kind : { ActionKind::POSITION_ABS, ActionKind::POSITION_REL, ActionKind::VELOCITY,
-                           ActionKind::POSITION_ABS_TF, ActionKind::FRAME })
-  {
-    ros::NodeHandle action_handle(node_handle_, std::string("move_ptz/") + actionName(kind));
-    for (const char* name : { "actionlib_server_sub_queue_size", "actionlib_server_pub_queue_size" })
-    {
-      if (!action_handle.hasParam(name))
-      {
-        action_handle.setParam(name, config_.action_queue_size);
-      }
-    }
-    if (!action_handle.hasParam("status_list_timeout"))
-    {
-      action_handle.setParam("status_list_timeout", config_.status_list_timeout);
-    }
-  }
-  auto make_ptz_server = [this](ActionKind kind) {
-    return std::make_unique<PtzServer>(
-        node_handle_, std::string("move_ptz/") + actionName(kind),
-        [this, kind](PtzServer::GoalHandle handle) { onGoal<PtzAction>(handle, kind); },
-        [this, kind](PtzServer::GoalHandle handle) { onCancel<PtzAction>(handle, kind); }, false);
-  };
-  position_abs_server_ = make_ptz_server(ActionKind::POSITION_ABS);
-  position_rel_server_ = make_ptz_server(ActionKind::POSITION_REL);
-  velocity_server_ = make_ptz_server(ActionKind::VELOCITY);
-  position_abs_tf_server_ = std::make_unique<PtzRelToServer>(
-      node_handle_, "move_ptz/position_abs_tf",
-      [this](PtzRelToServer::GoalHandle handle) { onGoal<PtzRelToAction>(handle, ActionKind::POSITION_ABS_TF); },
-      [this](PtzRelToServer::GoalHandle handle) { onCancel<PtzRelToAction>(handle, ActionKind::POSITION_ABS_TF); },
-      false);
-  frame_server_ = std::make_unique<PtzFrameServer>(
-      node_handle_, "move_ptz/frame",
-      [this](PtzFrameServer::GoalHandle handle) { onGoal<PtzFrameAction>(handle, ActionKind::FRAME); },
-      [this](PtzFrameServer::GoalHandle handle) { onCancel<PtzFrameAction>(handle, ActionKind::FRAME); }, false);
+  position_abs_server_ = makeServer<PtzAction>(ActionKind::POSITION_ABS);
+  position_rel_server_ = makeServer<PtzAction>(ActionKind::POSITION_REL);
+  velocity_server_ = makeServer<PtzAction>(ActionKind::VELOCITY);
+  position_abs_tf_server_ = makeServer<PtzRelToAction>(ActionKind::POSITION_ABS_TF);
+  frame_server_ = makeServer<PtzFrameAction>(ActionKind::FRAME);
   position_abs_server_->start();
   position_rel_server_->start();
   velocity_server_->start();
@@ -348,50 +242,20 @@ void PtzActionServer::start()
 template <class Action>
 void PtzActionServer::onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
 {
-  auto goal = std::make_unique<GoalHandleAdapter<Action>>(handle, kind);
-  const PtzSample sample = backend_->sample();
-  if (!sample.link_up)
-  {
-    goal->reject("the " + backend_->name() + " device link is down");
-    return;
-  }
-  Command command;
-  const std::string reason = toRequest(*handle.getGoal(), kind, sample, command);
-  if (!reason.empty())
-  {
-    goal->reject(reason);
-    return;
-  }
-  const ValidatedGoal validated = command.velocity ?
-                                      validateVelocityGoal(command.values, limits_, config_.clamp_goals) :
-                                      validatePositionGoal(command.values, limits_, config_.clamp_goals);
-  if (!validated.accepted)
-  {
-    goal->reject(validated.message);
-    return;
-  }
-  command.values = validated.values;
-  command.note = validated.message;
-  activate(std::move(goal), command);
+  const auto goal = handle.getGoal();
+  supervisor_->submit(
+      std::make_unique<GoalHandleAdapter<Action>>(handle, kind),
+      [&](const PtzSample& current, GoalCommand& command) { return toCommand(*goal, kind, current, command); });
 }
 
 template <class Action>
 void PtzActionServer::onCancel(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
 {
-  if (!active_goal_ || stopping_ || active_goal_->kind() != kind || active_goal_->id() != handle.getGoalID().id)
-  {
-    return;  // not ours, already ended, or already stopping
-  }
-  // Stop the device first; the goal ends once it rests (superviseGoal).
-  const PtzSample sample = backend_->sample();
-  backend_->stop();
-  stopping_ = true;
-  monitor_ = std::make_unique<GoalMonitor>(GoalMonitor::forStop(sample, config_.monitor, clock_.now()));
-  superviseGoal(backend_->sample());
+  supervisor_->cancel(actionName(kind), handle.getGoalID().id);
 }
 
-std::string PtzActionServer::toRequest(const PtzGoal& goal, ActionKind kind, const PtzSample& sample,
-                                       Command& command) const
+std::string PtzActionServer::toCommand(const PtzGoal& goal, ActionKind kind, const PtzSample& sample,
+                                       GoalCommand& command) const
 {
   const AxisValues values{ { goal.pan, goal.tilt, goal.zoom } };
   switch (kind)
@@ -413,7 +277,8 @@ std::string PtzActionServer::toRequest(const PtzGoal& goal, ActionKind kind, con
   }
 }
 
-std::string PtzActionServer::toRequest(const PtzRelToGoal& goal, ActionKind, const PtzSample&, Command& command) const
+std::string PtzActionServer::toCommand(const PtzRelToGoal& goal, ActionKind, const PtzSample&,
+                                       GoalCommand& command) const
 {
   std::string reason = findNonFinite({ { goal.pan, goal.tilt, goal.zoom } }, "position");
   Eigen::Isometry3d frame_in_base = identity();
@@ -425,11 +290,8 @@ std::string PtzActionServer::toRequest(const PtzRelToGoal& goal, ActionKind, con
   {
     return reason;
   }
-  // The goal's pan and tilt follow the contract's convention in the axes of frame_id: clockwise pan, upward tilt.
-  const double pan = goal.pan;
-  const double tilt = goal.tilt;
-  const Eigen::Vector3d in_frame(std::cos(tilt) * std::cos(pan), -std::cos(tilt) * std::sin(pan), std::sin(tilt));
-  const Eigen::Vector3d in_base = frame_in_base.linear() * in_frame;
+  // The goal's pan and tilt follow the contract's convention in the axes of frame_id.
+  const Eigen::Vector3d in_base = frame_in_base.linear() * directionOf(goal.pan, goal.tilt);
   command.values[ZOOM] = goal.zoom;
   if (!kinematics_.aimAlong(in_base, command.values[PAN], command.values[TILT]))
   {
@@ -438,7 +300,8 @@ std::string PtzActionServer::toRequest(const PtzRelToGoal& goal, ActionKind, con
   return {};
 }
 
-std::string PtzActionServer::toRequest(const PtzFrameGoal& goal, ActionKind, const PtzSample&, Command& command) const
+std::string PtzActionServer::toCommand(const PtzFrameGoal& goal, ActionKind, const PtzSample&,
+                                       GoalCommand& command) const
 {
   std::string reason = findNonFinite({ { 0.0, 0.0, goal.zoom } }, "position");
   Eigen::Isometry3d frame_in_base = identity();
@@ -474,181 +337,6 @@ std::string PtzActionServer::lookupFrame(const std::string& frame_id, Eigen::Iso
     return "frame '" + frame_id + "' is unknown to tf: " + error.what();
   }
   return {};
-}
-
-void PtzActionServer::activate(std::unique_ptr<ActiveGoal> goal, const Command& command)
-{
-  if (active_goal_)
-  {
-    // Retarget from where the device is: no stop in between.
-    active_goal_->preempt(std::string("preempted by a new ") + actionName(goal->kind()) + " goal");
-    finishGoal();
-  }
-  goal->accept(command.note);
-  const PtzSample start = backend_->sample();
-  const bool stop_goal = command.velocity && std::all_of(command.values.begin(), command.values.end(),
-                                                         [](double value) { return value == 0.0; });
-  if (stop_goal)
-  {
-    backend_->stop();
-  }
-  else if (command.velocity)
-  {
-    backend_->moveAtVelocity(command.values);
-  }
-  else
-  {
-    backend_->goTo(command.values);
-  }
-  monitor_ = std::make_unique<GoalMonitor>(
-      command.velocity ? GoalMonitor::forVelocity(command.values, start, limits_, config_.monitor, clock_.now()) :
-                         GoalMonitor::forPosition(command.values, start, limits_, config_.monitor, clock_.now()));
-  active_goal_ = std::move(goal);
-  mode_ = command.velocity ? PtzState::MODE_VELOCITY : PtzState::MODE_POSITION;
-  goal_active_ = true;
-  // A goal the device already satisfies (zero length, or a stop while at rest) ends here, not a tick later.
-  superviseGoal(backend_->sample());
-}
-
-void PtzActionServer::superviseGoal(const PtzSample& sample)
-{
-  if (!active_goal_)
-  {
-    return;
-  }
-  const GoalVerdict verdict = monitor_->update(sample, clock_.now());
-  if (verdict.phase == GoalPhase::ACTIVE)
-  {
-    if (!stopping_)
-    {
-      active_goal_->publishFeedback(verdict.remaining);
-    }
-    return;
-  }
-  if (stopping_)
-  {
-    active_goal_->preempt("cancelled: " + verdict.reason);
-  }
-  else if (verdict.phase == GoalPhase::SUCCEEDED)
-  {
-    if (verdict.stop_device)
-    {
-      backend_->stop();
-    }
-    active_goal_->succeed(verdict.reason);
-  }
-  else
-  {
-    backend_->stop();  // a failed goal must not leave the device moving
-    std::string reason = verdict.reason;
-    if (verdict.device_fault)
-    {
-      reason += ": " + backend_->lastFault();
-    }
-    else if (verdict.link_lost)
-    {
-      const std::string loss = backend_->lastLinkLoss();
-      reason += ": " + (loss.empty() ? std::string("the device stopped reporting its state") : loss);
-    }
-    active_goal_->abort(reason);
-  }
-  finishGoal();
-}
-
-void PtzActionServer::finishGoal()
-{
-  active_goal_.reset();
-  monitor_.reset();
-  stopping_ = false;
-  mode_ = PtzState::MODE_IDLE;
-  goal_active_ = false;
-}
-
-void PtzActionServer::onStateTick()
-{
-  const PtzSample sample = backend_->sample();
-  state_message_.mode = mode_;
-  state_message_.pan = static_cast<float>(sample.position[PAN]);
-  state_message_.tilt = static_cast<float>(sample.position[TILT]);
-  state_message_.zoom = static_cast<float>(sample.position[ZOOM]);
-  state_publisher_.publish(state_message_);
-  state_rate_->tick();
-
-  const ros::Time stamp = toRosTime(sample.stamp);
-  joint_state_message_.header.stamp = stamp;
-  joint_state_message_.position[0] = sample.position[PAN];
-  joint_state_message_.position[1] = sample.position[TILT];
-  joint_state_message_.velocity[0] = sample.velocity[PAN];
-  joint_state_message_.velocity[1] = sample.velocity[TILT];
-  joint_state_publisher_.publish(joint_state_message_);
-
-  if (transform_broadcaster_)
-  {
-    const double values[] = { sample.position[PAN], sample.position[TILT] };
-    const JointModel* joints[] = { &kinematics_.panJoint(), &kinematics_.tiltJoint() };
-    for (std::size_t index = 0; index < 2; ++index)
-    {
-      joint_transforms_[index].header.stamp = stamp;
-      joint_transforms_[index].transform = tf2::eigenToTransform(joints[index]->transform(values[index])).transform;
-    }
-    transform_broadcaster_->sendTransform(joint_transforms_);
-  }
-  diagnostics_->update();
-
-  if (goal_active_)
-  {
-    node_handle_.getCallbackQueue()->addCallback(
-        boost::make_shared<SampleCallback>([this](const PtzSample& handed) { superviseGoal(handed); }, sample),
-        reinterpret_cast<uint64_t>(this));
-  }
-}
-
-void PtzActionServer::publishStaticTransforms()
-{
-  std::vector<geometry_msgs::TransformStamped> transforms;
-  const ros::Time now = ros::Time::now();
-  for (const JointModel& joint : kinematics_.fixedJoints())
-  {
-    geometry_msgs::TransformStamped transform = tf2::eigenToTransform(joint.transform(0.0));
-    transform.header.stamp = now;
-    transform.header.frame_id = joint.parent_link;
-    transform.child_frame_id = joint.child_link;
-    transforms.push_back(transform);
-  }
-  if (!transforms.empty())
-  {
-    static_broadcaster_->sendTransform(transforms);
-  }
-}
-
-void PtzActionServer::diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper& status)
-{
-  const PtzSample sample = backend_->sample();
-  if (sample.link_up)
-  {
-    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "link up");
-  }
-  else
-  {
-    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "link down");
-  }
-  status.add("backend", backend_->name());
-  status.add("link", sample.link_up ? "up" : "down");
-  status.add("state age (s)", secondsBetween(sample.stamp, clock_.now()));
-  status.add("mode", static_cast<int>(mode_.load()));
-  status.add("device faults", sample.fault_count);
-  std::vector<DiagnosticValue> values;
-  backend_->diagnostics(values);
-  for (const DiagnosticValue& value : values)
-  {
-    status.add(value.first, value.second);
-  }
-}
-
-ros::Time PtzActionServer::toRosTime(TimePoint stamp) const
-{
-  const double age = std::max(0.0, secondsBetween(stamp, clock_.now()));
-  return ros::Time::now() - ros::Duration(age);
 }
 
 }  // namespace ptz_action_server

@@ -147,3 +147,32 @@ TEST(Kinematics, ErrorsNameWhatIsWrong)
   EXPECT_EQ(message("<robot", minimalNames()), "the URDF could not be parsed (see the urdfdom message above)");
   EXPECT_EQ(message("", minimalNames()), "the URDF is empty");
 }
+
+TEST(Kinematics, DirectionOfFollowsTheContractSigns)
+{
+  EXPECT_TRUE(directionOf(0.0, 0.0).isApprox(Eigen::Vector3d::UnitX(), 1e-12));
+  // Positive pan looks to the right (-y), positive tilt up (+z).
+  EXPECT_TRUE(directionOf(0.5, 0.0).isApprox(Eigen::Vector3d(std::cos(0.5), -std::sin(0.5), 0.0), 1e-12));
+  EXPECT_TRUE(directionOf(0.0, 0.3).isApprox(Eigen::Vector3d(std::cos(0.3), 0.0, std::sin(0.3)), 1e-12));
+  EXPECT_TRUE(directionOf(-M_PI / 2, 0.0).isApprox(Eigen::Vector3d::UnitY(), 1e-12));
+  EXPECT_TRUE(directionOf(1.0, M_PI / 2).isApprox(Eigen::Vector3d::UnitZ(), 1e-12));
+}
+
+TEST(Kinematics, DirectionOfIsTheShippedCamerasOpticalAxisAndAimAlongInvertsIt)
+{
+  const PtzKinematics kinematics = PtzKinematics::fromUrdf(readShippedUrdf());
+  for (double pan : { -2.5, -0.7, 0.0, 0.4, 3.0 })
+  {
+    for (double tilt : { -1.3, -0.2, 0.0, 0.6 })
+    {
+      const Eigen::Vector3d direction = directionOf(pan, tilt);
+      EXPECT_NEAR(direction.norm(), 1.0, 1e-12);
+      EXPECT_TRUE(direction.isApprox(opticalAxis(kinematics, pan, tilt), 1e-9)) << pan << ", " << tilt;
+      double solved_pan = 0.0;
+      double solved_tilt = 0.0;
+      ASSERT_TRUE(kinematics.aimAlong(direction, solved_pan, solved_tilt));
+      EXPECT_NEAR(solved_pan, pan, 1e-7);
+      EXPECT_NEAR(solved_tilt, tilt, 1e-7);
+    }
+  }
+}

@@ -32,6 +32,14 @@ struct JointModel
   Eigen::Isometry3d transform(double q) const;
 };
 
+/**
+ * \brief Unit vector of the direction \p pan, \p tilt (rad) in the contract's convention, in the axes they are
+ * measured in: pan 0, tilt 0 is +x, positive pan turns clockwise seen from above (towards -y), positive tilt up (+z).
+ *
+ * PtzKinematics::aimAlong() takes it back to the camera's own pan and tilt, once rotated into the base frame.
+ */
+Eigen::Vector3d directionOf(double pan, double tilt);
+
 /// Names the node looks for in the URDF.
 struct KinematicsNames
 {

@@ -1,33 +1,24 @@
 /**
  * \file
- * \brief The ROS node: action servers, PtzState, joint_states, tf and diagnostics around one backend.
+ * \brief The ROS node: the five action servers around one backend, its GoalSupervisor and its StatePublisher.
  */
 #pragma once
 
-#include <atomic>
 #include <memory>
 #include <string>
-#include <vector>
 
 #include <actionlib/server/action_server.h>
-#include <diagnostic_updater/diagnostic_updater.h>
-#include <diagnostic_updater/update_functions.h>
-#include <geometry_msgs/TransformStamped.h>
-#include <ros/callback_queue.h>
 #include <ros/ros.h>
-#include <sensor_msgs/JointState.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/static_transform_broadcaster.h>
-#include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/PtzFrameAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
-#include "ptz_action_server/PtzState.h"
 #include "ptz_action_server/core/backend.h"
-#include "ptz_action_server/core/goal_monitor.h"
+#include "ptz_action_server/core/goal_supervisor.h"
 #include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/ros/param_reader.h"
 
 namespace ptz_action_server
@@ -61,15 +52,17 @@ enum class ActionKind
 
 const char* actionName(ActionKind kind);
 
-class ActiveGoal;
+class StatePublisher;
 
 /**
  * \brief The ptz_action_server node around one backend.
  *
- * Threads: the node handle's queue (the main thread) runs every action callback and the goal state machine; the
- * 10 Hz state timer runs on its own queue and spinner, publishes PtzState, joint_states, tf and diagnostics, and
- * hands each sample to the main thread for the goal's feedback and verdict. The backend is shared by both and is
- * thread-safe by contract.
+ * It converts the goals of the five actions (looking frames up in tf) and adapts actionlib's goal handles; the
+ * GoalSupervisor runs the goals, the StatePublisher the 10 Hz state tick.
+ *
+ * Threads: the node handle's queue (the main thread) runs every action callback and the supervisor; the state tick
+ * runs on its own queue and spinner and hands each sample to the main thread for the goal's feedback and verdict.
+ * The backend is shared by both and is thread-safe by contract.
  */
 class PtzActionServer
 {
@@ -91,77 +84,40 @@ public:
     return limits_;
   }
 
-  /// Pan and tilt limits and speeds from the URDF, inside the contract's [-pi, pi] and [-pi/2, pi/2].
-  static Capabilities urdfLimits(const PtzKinematics& kinematics);
+  /// Pan and tilt limits and speeds from the URDF (the core's urdfLimits(), kept here for its callers).
+  static Capabilities urdfLimits(const PtzKinematics& kinematics)
+  {
+    return ptz_action_server::urdfLimits(kinematics);
+  }
 
 private:
   using PtzServer = actionlib::ActionServer<PtzAction>;
   using PtzRelToServer = actionlib::ActionServer<PtzRelToAction>;
   using PtzFrameServer = actionlib::ActionServer<PtzFrameAction>;
 
-  /// What a goal asks the device to do, after conversion and validation.
-  struct Command
-  {
-    bool velocity = false;
-    AxisValues values{};
-    std::string note;  ///< clamping note for the status text
-  };
-
+  /// The action server of \p kind, not started, with the node's queue sizes and status_list_timeout.
+  template <class Action>
+  std::unique_ptr<actionlib::ActionServer<Action>> makeServer(ActionKind kind);
   template <class Action>
   void onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   template <class Action>
   void onCancel(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
 
-  /// Converts a goal into target values; returns "" or the reason to reject it.
-  std::string toRequest(const PtzGoal& goal, ActionKind kind, const PtzSample& sample, Command& command) const;
-  std::string toRequest(const PtzRelToGoal& goal, ActionKind kind, const PtzSample& sample, Command& command) const;
-  std::string toRequest(const PtzFrameGoal& goal, ActionKind kind, const PtzSample& sample, Command& command) const;
+  /// Converts a goal into what to command (a GoalConverter); returns "" or the reason to reject it.
+  std::string toCommand(const PtzGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
+  std::string toCommand(const PtzRelToGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
+  std::string toCommand(const PtzFrameGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
   /// The transform from \p frame_id to the base frame, looked up once without waiting; "" or the reason.
   std::string lookupFrame(const std::string& frame_id, Eigen::Isometry3d& frame_in_base) const;
 
-  /// Preempts the active goal, accepts \p goal, commands the device and checks the goal at once.
-  void activate(std::unique_ptr<ActiveGoal> goal, const Command& command);
-  /// Feeds a sample to the active goal's monitor and ends the goal on a final verdict. Main thread only.
-  void superviseGoal(const PtzSample& sample);
-  void finishGoal();
-
-  void onStateTick();
-  void publishStaticTransforms();
-  void diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper& status);
-  ros::Time toRosTime(TimePoint stamp) const;
-
-  ros::NodeHandle node_handle_;        ///< the node's namespace: actions and topics; the main callback queue
-  ros::NodeHandle state_node_handle_;  ///< same namespace on state_queue_
+  ros::NodeHandle node_handle_;  ///< the node's namespace: actions and topics; the main callback queue
   NodeConfig config_;
   PtzKinematics kinematics_;
   std::shared_ptr<PtzBackend> backend_;
-  SystemClock clock_;
   Capabilities limits_;
 
-  // Goal state machine: touched only on the main thread.
-  std::unique_ptr<ActiveGoal> active_goal_;
-  std::unique_ptr<GoalMonitor> monitor_;
-  bool stopping_ = false;  ///< the active goal was cancelled and waits for the device to rest
-
-  // Shared between the threads.
-  std::atomic<int8_t> mode_{ PtzState::MODE_IDLE };
-  std::atomic<bool> goal_active_{ false };  ///< lets the state thread skip handing over samples when idle
-
-  // State publishing: only the state thread touches these after start().
-  ros::CallbackQueue state_queue_;
-  std::unique_ptr<ros::AsyncSpinner> state_spinner_;
-  ros::SteadyTimer state_timer_;
-  ros::Publisher state_publisher_;
-  ros::Publisher joint_state_publisher_;
-  PtzState state_message_;
-  sensor_msgs::JointState joint_state_message_;
-  std::vector<geometry_msgs::TransformStamped> joint_transforms_;  ///< pan and tilt, reused every tick
-  std::unique_ptr<tf2_ros::TransformBroadcaster> transform_broadcaster_;
-  std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
-  std::unique_ptr<diagnostic_updater::Updater> diagnostics_;
-  double state_rate_min_ = 0.0;
-  double state_rate_max_ = 0.0;
-  std::unique_ptr<diagnostic_updater::FrequencyStatus> state_rate_;
+  std::unique_ptr<GoalSupervisor> supervisor_;       ///< the goal state machine, on the main thread; built by start()
+  std::unique_ptr<StatePublisher> state_publisher_;  ///< the 10 Hz tick, on its own thread; built by start()
 
   // Frame lookups for position_abs_tf and frame goals; the listener feeds the buffer from the main queue.
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;

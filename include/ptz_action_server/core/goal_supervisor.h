@@ -1,0 +1,147 @@
+/**
+ * \file
+ * \brief The goal state machine of the node, without ROS: one active goal, preemption, cancel then stop, and the
+ * verdicts of its GoalMonitor turned into the goal's end.
+ */
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "ptz_action_server/core/backend.h"
+#include "ptz_action_server/core/goal_monitor.h"
+#include "ptz_action_server/core/types.h"
+
+namespace ptz_action_server
+{
+/// What the goals make the device do; the values are those of PtzState's MODE_* constants.
+enum class GoalMode : std::int8_t
+{
+  IDLE = 0,
+  POSITION = 1,
+  VELOCITY = 2,
+};
+
+/// What a goal asks the device to do, once converted from its action.
+struct GoalCommand
+{
+  bool velocity = false;  ///< values are velocities (rad/s, X/s); else positions (rad, X)
+  AxisValues values{};
+};
+
+/// A backend sample and the goal it was taken for.
+struct GoalSample
+{
+  std::uint64_t goal_serial = 0;  ///< the supervisor's goal serial, read before the backend was sampled
+  PtzSample sample;
+};
+
+/// Converts a goal into \p command, given the device's \p current state; returns "" or the reason to reject it.
+using GoalConverter = std::function<std::string(const PtzSample& current, GoalCommand& command)>;
+
+/**
+ * \brief A goal of any action, as the supervisor sees it. The ROS layer adapts actionlib's goal handle to it.
+ *
+ * Only the supervisor's thread calls it. Every goal ends with exactly one of reject, succeed, abort or preempt.
+ */
+class GoalHandle
+{
+public:
+  virtual ~GoalHandle() = default;
+  /// Name of the goal's action ("position_abs"), for the status texts and to match cancels.
+  virtual const std::string& action() const = 0;
+  /// The goal's id, unique among the goals of its action.
+  virtual const std::string& id() const = 0;
+  /// Accepts the goal; \p text is the clamping note, or empty.
+  virtual void accept(const std::string& text) = 0;
+  virtual void reject(const std::string& text) = 0;
+  /// \p remaining is goal minus current, per axis, in the goal's units.
+  virtual void publishFeedback(const AxisValues& remaining) = 0;
+  virtual void succeed(const std::string& text) = 0;
+  virtual void abort(const std::string& text) = 0;
+  /// Ends the goal PREEMPTED: replaced by a new goal, or cancelled.
+  virtual void preempt(const std::string& text) = 0;
+};
+
+/**
+ * \brief Runs the goals of every action against one backend: at most one is active.
+ *
+ * A new goal preempts the active one before it is accepted, and the device is retargeted without a stop in between.
+ * A cancel stops the device; the goal ends PREEMPTED once the device rests. A goal that fails stops the device.
+ *
+ * Threads: submit(), cancel(), supervise() and shutdown() run on one thread (the node's main thread); sample(),
+ * mode() and goalActive() may be called from any thread. Samples taken on another thread reach supervise() late: each
+ * carries the goal serial it was taken under, and a sample of an earlier goal (or from before a cancel) is ignored,
+ * so the active goal is only judged on samples taken after the one its monitor starts from.
+ */
+class GoalSupervisor
+{
+public:
+  /// \p limits are what goals are checked against; \p clamp_goals clamps out-of-range goals instead of rejecting.
+  GoalSupervisor(std::shared_ptr<PtzBackend> backend, const Capabilities& limits, const GoalMonitorConfig& config,
+                 bool clamp_goals, std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
+
+  GoalSupervisor(const GoalSupervisor&) = delete;
+  GoalSupervisor& operator=(const GoalSupervisor&) = delete;
+
+  /**
+   * \brief Rejects \p goal while the link is down, or when \p convert or the limits refuse it; otherwise preempts the
+   * active goal, accepts \p goal, commands the device and judges the goal at once on a fresh sample (a goal the
+   * device already satisfies ends here).
+   */
+  void submit(std::unique_ptr<GoalHandle> goal, const GoalConverter& convert);
+
+  /// Stops the device if the goal \p id of \p action is the active one; it ends once the device rests.
+  void cancel(const std::string& action, const std::string& id);
+
+  /// Judges the active goal at \p sample, unless it was taken for another goal: feedback while the goal goes on,
+  /// its end on a final verdict.
+  void supervise(const GoalSample& sample);
+
+  /// Stops the device and aborts the active goal with \p reason.
+  void shutdown(const std::string& reason);
+
+  /// The backend's latest sample, tagged with the goal it belongs to. Any thread (the state thread calls it).
+  GoalSample sample() const;
+
+  /// What the active goal makes the device do. Any thread.
+  GoalMode mode() const
+  {
+    return mode_.load();
+  }
+
+  /// True while a goal is active (also while a cancelled one waits for the device to rest). Any thread.
+  bool goalActive() const
+  {
+    return mode_.load() != GoalMode::IDLE;
+  }
+
+private:
+  void activate(std::unique_ptr<GoalHandle> goal, const GoalCommand& command, const std::string& note);
+  /// The final status text keeps the clamping note of the accepted goal.
+  std::string withNote(const std::string& text) const;
+  /// supervise() for a sample known to belong to the active goal.
+  void judge(const PtzSample& sample);
+  void finish();
+
+  const std::shared_ptr<PtzBackend> backend_;
+  const Capabilities limits_;
+  const GoalMonitorConfig config_;
+  const bool clamp_goals_;
+  const std::shared_ptr<const Clock> clock_;
+
+  // Touched only on the supervisor's thread.
+  std::unique_ptr<GoalHandle> active_goal_;
+  std::string note_;  ///< what validation changed in the active goal (clamping), empty if nothing
+  std::unique_ptr<GoalMonitor> monitor_;
+  bool stopping_ = false;  ///< the active goal was cancelled and waits for the device to rest
+
+  std::atomic<GoalMode> mode_{ GoalMode::IDLE };
+  /// Changes with each goal, and when a cancel starts the stop, after the sample its monitor starts from.
+  std::atomic<std::uint64_t> goal_serial_{ 0 };
+};
+
+}  // namespace ptz_action_server

@@ -1,0 +1,85 @@
+/**
+ * \file
+ * \brief The node's fixed 10 Hz state tick: PtzState, joint_states, tf and diagnostics, on their own thread.
+ */
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <diagnostic_updater/update_functions.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+#include <tf2_ros/static_transform_broadcaster.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/core/backend.h"
+#include "ptz_action_server/core/goal_supervisor.h"
+#include "ptz_action_server/core/kinematics.h"
+
+namespace ptz_action_server
+{
+/**
+ * \brief Publishes the device's state from a 10 Hz steady timer, whatever the backend does, and hands the samples on.
+ *
+ * Each tick runs on the publisher's own callback queue and spinner thread: it takes one backend sample, publishes
+ * PtzState (with the supervisor's mode), joint_states and the pan and tilt transforms, updates the diagnostics
+ * (backend status, measured ptz_state rate), and while a goal is active passes the sample to the handler. The
+ * messages are built once in start() and reused, so a tick allocates nothing of its own.
+ */
+class StatePublisher
+{
+public:
+  /// Called on the state thread with each sample taken while a goal is active.
+  using SampleHandler = std::function<void(const GoalSample&)>;
+
+  /// \p supervisor must outlive the publisher; only its thread-safe sample(), mode() and goalActive() are used.
+  StatePublisher(const ros::NodeHandle& node_handle, const PtzKinematics& kinematics,
+                 std::shared_ptr<PtzBackend> backend, const GoalSupervisor& supervisor, bool publish_tf,
+                 SampleHandler hand_over);
+  /// Stops the timer and its spinner: once it returns, the handler is not called any more.
+  ~StatePublisher();
+
+  StatePublisher(const StatePublisher&) = delete;
+  StatePublisher& operator=(const StatePublisher&) = delete;
+
+  /// Advertises the topics, publishes the static transforms once (with tf on), then starts the timer and spinner.
+  void start();
+
+private:
+  void onTick();
+  void publishStaticTransforms();
+  void diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper& status);
+  ros::Time toRosTime(TimePoint stamp) const;
+
+  ros::CallbackQueue queue_;     ///< declared first: everything below registers on it
+  ros::NodeHandle node_handle_;  ///< the node's namespace, on queue_
+  PtzKinematics kinematics_;
+  std::shared_ptr<PtzBackend> backend_;
+  const GoalSupervisor& supervisor_;
+  const bool publish_tf_;
+  const SampleHandler hand_over_;
+  SystemClock clock_;
+
+  // Only the state thread touches these after start().
+  ros::Publisher state_publisher_;
+  ros::Publisher joint_state_publisher_;
+  PtzState state_message_;
+  sensor_msgs::JointState joint_state_message_;
+  std::vector<geometry_msgs::TransformStamped> joint_transforms_;  ///< pan and tilt, reused every tick
+  std::unique_ptr<tf2_ros::TransformBroadcaster> transform_broadcaster_;
+  std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
+  std::unique_ptr<diagnostic_updater::Updater> diagnostics_;
+  double state_rate_min_ = 0.0;
+  double state_rate_max_ = 0.0;
+  std::unique_ptr<diagnostic_updater::FrequencyStatus> state_rate_;
+  ros::SteadyTimer timer_;
+  std::unique_ptr<ros::AsyncSpinner> spinner_;
+};
+
+}  // namespace ptz_action_server

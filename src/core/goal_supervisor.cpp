@@ -1,0 +1,178 @@
+#include "ptz_action_server/core/goal_supervisor.h"
+
+#include <algorithm>
+
+#include "ptz_action_server/core/goal_validation.h"
+
+namespace ptz_action_server
+{
+GoalSupervisor::GoalSupervisor(std::shared_ptr<PtzBackend> backend, const Capabilities& limits,
+                               const GoalMonitorConfig& config, bool clamp_goals, std::shared_ptr<const Clock> clock)
+  : backend_(std::move(backend)), limits_(limits), config_(config), clamp_goals_(clamp_goals), clock_(std::move(clock))
+{
+}
+
+void GoalSupervisor::submit(std::unique_ptr<GoalHandle> goal, const GoalConverter& convert)
+{
+  const PtzSample current = backend_->sample();
+  if (!current.link_up)
+  {
+    goal->reject("the " + backend_->name() + " device link is down");
+    return;
+  }
+  GoalCommand command;
+  const std::string reason = convert(current, command);
+  if (!reason.empty())
+  {
+    goal->reject(reason);
+    return;
+  }
+  const ValidatedGoal validated = command.velocity ? validateVelocityGoal(command.values, limits_, clamp_goals_) :
+                                                     validatePositionGoal(command.values, limits_, clamp_goals_);
+  if (!validated.accepted)
+  {
+    goal->reject(validated.message);
+    return;
+  }
+  command.values = validated.values;
+  activate(std::move(goal), command, validated.message);
+}
+
+void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalCommand& command, const std::string& note)
+{
+  if (active_goal_)
+  {
+    // Retarget from where the device is: no stop in between.
+    active_goal_->preempt(withNote("preempted by a new " + goal->action() + " goal"));
+    finish();
+  }
+  goal->accept(note);
+  const PtzSample start = backend_->sample();
+  ++goal_serial_;
+  const bool stop_goal = command.velocity && std::all_of(command.values.begin(), command.values.end(),
+                                                         [](double value) { return value == 0.0; });
+  if (stop_goal)
+  {
+    backend_->stop();
+  }
+  else if (command.velocity)
+  {
+    backend_->moveAtVelocity(command.values);
+  }
+  else
+  {
+    backend_->goTo(command.values);
+  }
+  monitor_ = std::make_unique<GoalMonitor>(
+      command.velocity ? GoalMonitor::forVelocity(command.values, start, limits_, config_, clock_->now()) :
+                         GoalMonitor::forPosition(command.values, start, limits_, config_, clock_->now()));
+  active_goal_ = std::move(goal);
+  note_ = note;
+  mode_ = command.velocity ? GoalMode::VELOCITY : GoalMode::POSITION;
+  // A goal the device already satisfies (zero length, or a stop while at rest) ends here, not a tick later.
+  judge(backend_->sample());
+}
+
+void GoalSupervisor::cancel(const std::string& action, const std::string& id)
+{
+  if (!active_goal_ || stopping_ || active_goal_->action() != action || active_goal_->id() != id)
+  {
+    return;  // not ours, already ended, or already stopping
+  }
+  // Stop the device first; the goal ends once it rests (supervise).
+  const PtzSample start = backend_->sample();
+  ++goal_serial_;
+  backend_->stop();
+  stopping_ = true;
+  monitor_ = std::make_unique<GoalMonitor>(GoalMonitor::forStop(start, config_, clock_->now()));
+  judge(backend_->sample());
+}
+
+GoalSample GoalSupervisor::sample() const
+{
+  GoalSample tagged;
+  // The serial before the sample: a sample tagged with the active goal's serial was taken after its start sample.
+  tagged.goal_serial = goal_serial_.load();
+  tagged.sample = backend_->sample();
+  return tagged;
+}
+
+void GoalSupervisor::supervise(const GoalSample& sample)
+{
+  // A sample taken for an earlier goal, or before the cancel, knows nothing of what the active monitor started from.
+  if (sample.goal_serial == goal_serial_.load())
+  {
+    judge(sample.sample);
+  }
+}
+
+void GoalSupervisor::judge(const PtzSample& sample)
+{
+  if (!active_goal_)
+  {
+    return;
+  }
+  const GoalVerdict verdict = monitor_->update(sample, clock_->now());
+  if (verdict.phase == GoalPhase::ACTIVE)
+  {
+    if (!stopping_)
+    {
+      active_goal_->publishFeedback(verdict.remaining);
+    }
+    return;
+  }
+  if (stopping_)
+  {
+    active_goal_->preempt(withNote("cancelled: " + verdict.reason));
+  }
+  else if (verdict.phase == GoalPhase::SUCCEEDED)
+  {
+    if (verdict.stop_device)
+    {
+      backend_->stop();
+    }
+    active_goal_->succeed(withNote(verdict.reason));
+  }
+  else
+  {
+    backend_->stop();  // a failed goal must not leave the device moving
+    std::string reason = verdict.reason;
+    if (verdict.device_fault)
+    {
+      reason += ": " + backend_->lastFault();
+    }
+    else if (verdict.link_lost)
+    {
+      const std::string loss = backend_->lastLinkLoss();
+      reason += ": " + (loss.empty() ? std::string("the device stopped reporting its state") : loss);
+    }
+    active_goal_->abort(withNote(reason));
+  }
+  finish();
+}
+
+void GoalSupervisor::shutdown(const std::string& reason)
+{
+  if (active_goal_)
+  {
+    backend_->stop();
+    active_goal_->abort(withNote(reason));
+    finish();
+  }
+}
+
+std::string GoalSupervisor::withNote(const std::string& text) const
+{
+  return note_.empty() ? text : text + " (" + note_ + ")";
+}
+
+void GoalSupervisor::finish()
+{
+  active_goal_.reset();
+  note_.clear();
+  monitor_.reset();
+  stopping_ = false;
+  mode_ = GoalMode::IDLE;
+}
+
+}  // namespace ptz_action_server

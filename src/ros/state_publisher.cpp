@@ -1,0 +1,167 @@
+#include "ptz_action_server/ros/state_publisher.h"
+
+#include <algorithm>
+
+#include <tf2_eigen/tf2_eigen.h>
+
+namespace ptz_action_server
+{
+namespace
+{
+constexpr double STATE_RATE = 10.0;  ///< Hz, fixed by the contract
+constexpr double STATE_RATE_TOLERANCE = 0.02;
+constexpr int STATE_RATE_WINDOW = 10;  ///< ticks the measured rate is averaged over
+
+static_assert(static_cast<int>(GoalMode::IDLE) == PtzState::MODE_IDLE &&
+                  static_cast<int>(GoalMode::POSITION) == PtzState::MODE_POSITION &&
+                  static_cast<int>(GoalMode::VELOCITY) == PtzState::MODE_VELOCITY,
+              "GoalMode must keep PtzState's mode values");
+}  // namespace
+
+StatePublisher::StatePublisher(const ros::NodeHandle& node_handle, const PtzKinematics& kinematics,
+                               std::shared_ptr<PtzBackend> backend, const GoalSupervisor& supervisor, bool publish_tf,
+                               SampleHandler hand_over)
+  : node_handle_(node_handle)
+  , kinematics_(kinematics)
+  , backend_(std::move(backend))
+  , supervisor_(supervisor)
+  , publish_tf_(publish_tf)
+  , hand_over_(std::move(hand_over))
+{
+  node_handle_.setCallbackQueue(&queue_);
+}
+
+StatePublisher::~StatePublisher()
+{
+  timer_.stop();
+  if (spinner_)
+  {
+    spinner_->stop();
+  }
+}
+
+void StatePublisher::start()
+{
+  state_publisher_ = node_handle_.advertise<PtzState>("ptz_state", 10);
+  joint_state_publisher_ = node_handle_.advertise<sensor_msgs::JointState>("joint_states", 10);
+  joint_state_message_.name = { kinematics_.panJoint().name, kinematics_.tiltJoint().name };
+  joint_state_message_.position.assign(2, 0.0);
+  joint_state_message_.velocity.assign(2, 0.0);
+  if (publish_tf_)
+  {
+    transform_broadcaster_ = std::make_unique<tf2_ros::TransformBroadcaster>();
+    static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
+    joint_transforms_.resize(2);
+    const JointModel* joints[] = { &kinematics_.panJoint(), &kinematics_.tiltJoint() };
+    for (std::size_t index = 0; index < 2; ++index)
+    {
+      joint_transforms_[index].header.frame_id = joints[index]->parent_link;
+      joint_transforms_[index].child_frame_id = joints[index]->child_link;
+    }
+    publishStaticTransforms();
+  }
+
+  diagnostics_ = std::make_unique<diagnostic_updater::Updater>(node_handle_, ros::NodeHandle("~"));
+  diagnostics_->setHardwareID(backend_->name());
+  diagnostics_->add("Backend", this, &StatePublisher::diagnoseBackend);
+  state_rate_min_ = STATE_RATE;
+  state_rate_max_ = STATE_RATE;
+  state_rate_ = std::make_unique<diagnostic_updater::FrequencyStatus>(
+      diagnostic_updater::FrequencyStatusParam(&state_rate_min_, &state_rate_max_, STATE_RATE_TOLERANCE,
+                                               STATE_RATE_WINDOW),
+      "ptz_state rate");
+  diagnostics_->add(*state_rate_);
+
+  timer_ = node_handle_.createSteadyTimer(ros::WallDuration(1.0 / STATE_RATE),
+                                          [this](const ros::SteadyTimerEvent&) { onTick(); });
+  spinner_ = std::make_unique<ros::AsyncSpinner>(1, &queue_);
+  spinner_->start();
+}
+
+void StatePublisher::onTick()
+{
+  const GoalSample tagged = supervisor_.sample();
+  const PtzSample& sample = tagged.sample;
+  state_message_.mode = static_cast<int8_t>(supervisor_.mode());
+  state_message_.pan = static_cast<float>(sample.position[PAN]);
+  state_message_.tilt = static_cast<float>(sample.position[TILT]);
+  state_message_.zoom = static_cast<float>(sample.position[ZOOM]);
+  state_publisher_.publish(state_message_);
+  state_rate_->tick();
+
+  const ros::Time stamp = toRosTime(sample.stamp);
+  joint_state_message_.header.stamp = stamp;
+  joint_state_message_.position[0] = sample.position[PAN];
+  joint_state_message_.position[1] = sample.position[TILT];
+  joint_state_message_.velocity[0] = sample.velocity[PAN];
+  joint_state_message_.velocity[1] = sample.velocity[TILT];
+  joint_state_publisher_.publish(joint_state_message_);
+
+  if (transform_broadcaster_)
+  {
+    const double values[] = { sample.position[PAN], sample.position[TILT] };
+    const JointModel* joints[] = { &kinematics_.panJoint(), &kinematics_.tiltJoint() };
+    for (std::size_t index = 0; index < 2; ++index)
+    {
+      joint_transforms_[index].header.stamp = stamp;
+      joint_transforms_[index].transform = tf2::eigenToTransform(joints[index]->transform(values[index])).transform;
+    }
+    transform_broadcaster_->sendTransform(joint_transforms_);
+  }
+  diagnostics_->update();
+
+  if (supervisor_.goalActive())
+  {
+    hand_over_(tagged);
+  }
+}
+
+void StatePublisher::publishStaticTransforms()
+{
+  std::vector<geometry_msgs::TransformStamped> transforms;
+  const ros::Time now = ros::Time::now();
+  for (const JointModel& joint : kinematics_.fixedJoints())
+  {
+    geometry_msgs::TransformStamped transform = tf2::eigenToTransform(joint.transform(0.0));
+    transform.header.stamp = now;
+    transform.header.frame_id = joint.parent_link;
+    transform.child_frame_id = joint.child_link;
+    transforms.push_back(transform);
+  }
+  if (!transforms.empty())
+  {
+    static_broadcaster_->sendTransform(transforms);
+  }
+}
+
+void StatePublisher::diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper& status)
+{
+  const PtzSample sample = backend_->sample();
+  if (sample.link_up)
+  {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "link up");
+  }
+  else
+  {
+    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "link down");
+  }
+  status.add("backend", backend_->name());
+  status.add("link", sample.link_up ? "up" : "down");
+  status.add("state age (s)", secondsBetween(sample.stamp, clock_.now()));
+  status.add("mode", static_cast<int>(supervisor_.mode()));
+  status.add("device faults", sample.fault_count);
+  std::vector<DiagnosticValue> values;
+  backend_->diagnostics(values);
+  for (const DiagnosticValue& value : values)
+  {
+    status.add(value.first, value.second);
+  }
+}
+
+ros::Time StatePublisher::toRosTime(TimePoint stamp) const
+{
+  const double age = std::max(0.0, secondsBetween(stamp, clock_.now()));
+  return ros::Time::now() - ros::Duration(age);
+}
+
+}  // namespace ptz_action_server

@@ -1,0 +1,227 @@
+#include "goal_supervisor_fixture.h"
+
+using namespace ptz_action_server;
+using namespace goal_supervisor_test;
+
+TEST_F(GoalSupervisorTest, AGoalTheDeviceAlreadySatisfiesSucceedsAtOnce)
+{
+  backend_->at({ 0.5, 0.0, 1.0 }, false);
+  const auto goal = submit(positionGoal(0.5, 0.0, 1.0));
+  EXPECT_TRUE(goal->accepted);
+  EXPECT_EQ(goal->end, "SUCCEEDED: reached pan 0.5000 rad, tilt 0.0000 rad, zoom 1.00 X");
+  EXPECT_EQ(backend_->commands, std::vector<std::string>{ "goTo 0.50 0.00 1.00" });
+  EXPECT_FALSE(supervisor_.goalActive());
+  EXPECT_EQ(supervisor_.mode(), GoalMode::IDLE);
+}
+
+TEST_F(GoalSupervisorTest, APositionGoalGivesFeedbackUntilTheDeviceRestsInsideTheTolerance)
+{
+  const auto goal = submit(positionGoal(1.0, -0.2, 1.0));
+  ASSERT_TRUE(goal->accepted);
+  EXPECT_TRUE(goal->end.empty());
+  EXPECT_TRUE(supervisor_.goalActive());
+  EXPECT_EQ(supervisor_.mode(), GoalMode::POSITION);
+
+  backend_->at({ 0.4, -0.1, 1.0 }, true);
+  tick();
+  ASSERT_FALSE(goal->feedback.empty());
+  EXPECT_NEAR(goal->feedback.back()[PAN], 0.6, 1e-9);  // goal minus current, signed
+  EXPECT_NEAR(goal->feedback.back()[TILT], -0.1, 1e-9);
+  backend_->at({ 1.0, -0.2, 1.0 }, true);
+  tick();
+  EXPECT_TRUE(goal->end.empty()) << "inside the tolerance but still moving";
+  backend_->at({ 1.0, -0.2, 1.0 }, false);
+  tick();
+  EXPECT_EQ(goal->end, "SUCCEEDED: reached pan 1.0000 rad, tilt -0.2000 rad, zoom 1.00 X");
+  EXPECT_EQ(goal->ends, 1);
+  EXPECT_EQ(supervisor_.mode(), GoalMode::IDLE);
+  tick();
+  EXPECT_EQ(goal->ends, 1);
+}
+
+TEST_F(GoalSupervisorTest, GoalsAreRejectedWhileTheLinkIsDownAndNothingMoves)
+{
+  backend_->state.link_up = false;
+  bool converted = false;
+  const auto goal = submit([&](const PtzSample&, GoalCommand&) {
+    converted = true;
+    return std::string();
+  });
+  EXPECT_EQ(goal->end, "REJECTED: the fake device link is down");
+  EXPECT_FALSE(goal->accepted);
+  EXPECT_FALSE(converted);
+  EXPECT_TRUE(backend_->commands.empty());
+}
+
+TEST_F(GoalSupervisorTest, RefusedGoalsAreRejectedAndLeaveTheActiveGoalAlone)
+{
+  const auto active = submit(positionGoal(1.0, 0.0, 1.0), "active");
+  const auto refused = submit([](const PtzSample&, GoalCommand&) { return std::string("pan position is NaN"); });
+  EXPECT_EQ(refused->end, "REJECTED: pan position is NaN");
+  EXPECT_EQ(submit(positionGoal(0.0, 2.0, 1.0))->end.find("REJECTED: tilt 2.0000 rad is outside the limits"), 0u);
+  EXPECT_EQ(submit(velocityGoal(50.0, 0.0, 0.0))->end.find("REJECTED: pan velocity 50.0000 rad/s exceeds"), 0u);
+  EXPECT_TRUE(active->end.empty());
+  EXPECT_TRUE(supervisor_.goalActive());
+  EXPECT_EQ(backend_->commands, std::vector<std::string>{ "goTo 1.00 0.00 1.00" });
+}
+
+TEST_F(GoalSupervisorTest, TheConverterSeesTheCurrentState)
+{
+  backend_->at({ 0.3, 0.1, 2.0 }, false);
+  const auto goal = submit([](const PtzSample& current, GoalCommand& command) {
+    command.values = { current.position[PAN] + 0.2, current.position[TILT], current.position[ZOOM] };
+    return std::string();
+  });
+  EXPECT_TRUE(goal->accepted);
+  EXPECT_EQ(backend_->commands, std::vector<std::string>{ "goTo 0.50 0.10 2.00" });
+}
+
+TEST_F(ClampingGoalSupervisorTest, ClampedGoalsSayWhatWasClampedInEveryText)
+{
+  const auto goal = submit(positionGoal(4.0, 0.0, 1.0));
+  ASSERT_TRUE(goal->accepted);
+  EXPECT_EQ(goal->accept_text, "clamped pan 4.0000 -> 3.1416 rad");
+  EXPECT_EQ(backend_->commands, std::vector<std::string>{ "goTo 3.14 0.00 1.00" });
+  backend_->at({ M_PI, 0.0, 1.0 }, false);
+  tick();
+  EXPECT_EQ(goal->end, "SUCCEEDED: reached pan 3.1416 rad, tilt 0.0000 rad, zoom 1.00 X (clamped pan 4.0000 -> "
+                       "3.1416 rad)");
+  EXPECT_EQ(submit(positionGoal(NAN, 0.0, 1.0))->end, "REJECTED: pan position is NaN");
+}
+
+TEST_F(GoalSupervisorTest, ANewGoalPreemptsTheActiveOneWithoutAStopInBetween)
+{
+  const auto first = submit(positionGoal(1.0, 0.0, 1.0), "first");
+  backend_->at({ 0.5, 0.0, 1.0 }, true);
+  tick();
+  const auto second = submit(positionGoal(-1.0, 0.0, 1.0), "second", "position_rel");
+  EXPECT_EQ(first->end, "PREEMPTED: preempted by a new position_rel goal");
+  EXPECT_TRUE(second->accepted);
+  EXPECT_TRUE(second->end.empty());
+  EXPECT_EQ(backend_->commands, (std::vector<std::string>{ "goTo 1.00 0.00 1.00", "goTo -1.00 0.00 1.00" }));
+  // The cancel of the preempted goal no longer stops anything.
+  supervisor_.cancel("position_abs", "first");
+  EXPECT_EQ(backend_->commands.size(), 2u);
+  EXPECT_TRUE(supervisor_.goalActive());
+}
+
+TEST_F(GoalSupervisorTest, ACancelStopsTheDeviceAndTheGoalEndsOnceItRests)
+{
+  const auto goal = submit(positionGoal(1.5, 0.0, 1.0));
+  backend_->at({ 0.6, 0.0, 1.0 }, true);
+  tick();
+  const std::size_t feedback = goal->feedback.size();
+  supervisor_.cancel("position_abs", "another goal");
+  supervisor_.cancel("velocity", "goal");
+  EXPECT_EQ(backend_->commands.size(), 1u) << "a cancel of another goal stopped the device";
+
+  supervisor_.cancel("position_abs", "goal");
+  EXPECT_EQ(backend_->commands.back(), "stop");
+  backend_->at({ 0.8, 0.0, 1.0 }, true);
+  tick();
+  EXPECT_TRUE(goal->end.empty()) << "ended while the device still moves";
+  EXPECT_EQ(goal->feedback.size(), feedback) << "feedback while stopping";
+  supervisor_.cancel("position_abs", "goal");
+  EXPECT_EQ(backend_->commands.size(), 2u) << "a second cancel stopped again";
+  EXPECT_EQ(supervisor_.mode(), GoalMode::POSITION);
+
+  backend_->at({ 0.85, 0.0, 1.0 }, false);
+  tick();
+  EXPECT_EQ(goal->end, "PREEMPTED: cancelled: stopped at pan 0.8500 rad, tilt 0.0000 rad, zoom 1.00 X");
+  EXPECT_EQ(supervisor_.mode(), GoalMode::IDLE);
+}
+
+TEST_F(GoalSupervisorTest, ACancelledGoalEndsAfterTheStopTimeoutIfTheDeviceKeepsMoving)
+{
+  const auto goal = submit(velocityGoal(0.5, 0.0, 0.0), "goal", "velocity");
+  backend_->at({ 0.2, 0.0, 1.0 }, true);
+  tick();
+  supervisor_.cancel("velocity", "goal");
+  for (int ticks = 0; ticks < 45; ++ticks)
+  {
+    tick();  // 4.5 s of the 5 s stop_timeout
+  }
+  EXPECT_TRUE(goal->end.empty()) << goal->end;
+  for (int ticks = 0; ticks < 10 && goal->end.empty(); ++ticks)
+  {
+    tick();
+  }
+  EXPECT_EQ(goal->end, "PREEMPTED: cancelled: still moving 5.00 s after the stop command");
+}
+
+TEST_F(GoalSupervisorTest, ALostLinkAbortsTheGoalWithTheBackendsReasonAndStopsTheDevice)
+{
+  const auto goal = submit(positionGoal(1.0, 0.0, 1.0));
+  backend_->state.link_up = false;
+  backend_->last_link_loss = "connection to 127.0.0.1:5500 closed";
+  tick();
+  EXPECT_EQ(goal->end, "ABORTED: link lost: connection to 127.0.0.1:5500 closed");
+  EXPECT_EQ(backend_->commands.back(), "stop");
+  EXPECT_FALSE(supervisor_.goalActive());
+}
+
+TEST_F(GoalSupervisorTest, ALinkLossThatHealedStillAbortsWithTheDefaultReason)
+{
+  const auto goal = submit(positionGoal(1.0, 0.0, 1.0));
+  ++backend_->state.link_losses;  // lost and back between two samples; the backend names no reason
+  tick();
+  EXPECT_EQ(goal->end, "ABORTED: link lost: the device stopped reporting its state");
+}
+
+TEST_F(GoalSupervisorTest, ADeviceFaultAbortsTheGoalWithTheFaultText)
+{
+  const auto goal = submit(positionGoal(1.0, 0.0, 1.0));
+  ++backend_->state.fault_count;
+  backend_->last_fault = "the device refused the position";
+  tick();
+  EXPECT_EQ(goal->end, "ABORTED: device fault: the device refused the position");
+  EXPECT_EQ(backend_->commands.back(), "stop");
+}
+
+TEST_F(GoalSupervisorTest, AStalledAxisAbortsTheGoal)
+{
+  const auto goal = submit(positionGoal(0.0, 0.4, 1.0));
+  for (int ticks = 0; ticks < 30 && goal->end.empty(); ++ticks)
+  {
+    tick();  // the device never moves
+  }
+  EXPECT_EQ(goal->end, "ABORTED: stalled: tilt made no progress for 1.00 s (remaining 0.4000 rad)");
+  EXPECT_EQ(backend_->commands.back(), "stop");
+}
+
+TEST_F(GoalSupervisorTest, VelocityGoalsMoveUntilAnAllZeroGoalOrALimit)
+{
+  const auto moving = submit(velocityGoal(-0.4, 0.0, 0.0), "moving", "velocity");
+  EXPECT_EQ(supervisor_.mode(), GoalMode::VELOCITY);
+  backend_->at({ -0.3, 0.0, 1.0 }, true);
+  backend_->state.velocity = { -0.4, 0.0, 0.0 };
+  tick();
+  ASSERT_FALSE(moving->feedback.empty());
+  EXPECT_NEAR(moving->feedback.back()[PAN], 0.0, 1e-9);  // goal minus current velocity
+
+  const auto stopper = submit(velocityGoal(0.0, 0.0, 0.0), "stopper", "velocity");
+  EXPECT_EQ(moving->end, "PREEMPTED: preempted by a new velocity goal");
+  EXPECT_EQ(backend_->commands.back(), "stop");
+  backend_->at({ -0.35, 0.0, 1.0 }, false);
+  backend_->state.velocity = {};
+  tick();
+  EXPECT_EQ(stopper->end, "SUCCEEDED: stopped at pan -0.3500 rad, tilt 0.0000 rad, zoom 1.00 X");
+
+  const auto up = submit(velocityGoal(0.0, 1.0, 0.0), "up", "velocity");
+  EXPECT_EQ(backend_->commands.back(), "moveAtVelocity 0.00 1.00 0.00");
+  backend_->at({ -0.35, M_PI / 2, 1.0 }, true);
+  tick();
+  EXPECT_EQ(up->end, "SUCCEEDED: tilt reached its upper limit 1.5708 rad");
+  EXPECT_EQ(backend_->commands.back(), "stop");
+}
+
+TEST_F(GoalSupervisorTest, ShutdownAbortsTheActiveGoalAndStopsTheDevice)
+{
+  supervisor_.shutdown("the node is shutting down");
+  EXPECT_TRUE(backend_->commands.empty()) << "stopped without a goal";
+  const auto goal = submit(positionGoal(1.0, 0.0, 1.0));
+  supervisor_.shutdown("the node is shutting down");
+  EXPECT_EQ(goal->end, "ABORTED: the node is shutting down");
+  EXPECT_EQ(backend_->commands.back(), "stop");
+  EXPECT_FALSE(supervisor_.goalActive());
+}

@@ -1,0 +1,65 @@
+#include "goal_supervisor_fixture.h"
+
+using namespace ptz_action_server;
+using namespace goal_supervisor_test;
+
+// The race between the threads: the state thread samples the device while one goal is active, and before that sample
+// reaches the main thread a new goal is accepted there. The stale sample tells of trouble the new goal started after
+// (a link down, a link loss, a fault) and must not end it; the new goal's own samples still judge it.
+TEST_F(GoalSupervisorTest, AStaleSampleWithTheLinkDownDoesNotAbortTheNextGoal)
+{
+  const auto first = submit(positionGoal(1.0, 0.0, 1.0), "first");
+  backend_->state.link_up = false;
+  ++backend_->state.link_losses;
+  const GoalSample stale = supervisor_.sample();  // the state thread samples while the link is down
+  backend_->state.link_up = true;                 // and the link is back when the next goal arrives
+  const auto second = acceptSecondGoalThenDeliver(stale);
+  EXPECT_EQ(first->end, "PREEMPTED: preempted by a new position_abs goal");
+  EXPECT_TRUE(second->end.empty()) << "the first goal's sample ended the second: " << second->end;
+  expectJudgedByItsOwnSamples(second);
+}
+
+TEST_F(GoalSupervisorTest, AStaleSampleFromBeforeALinkLossDoesNotAbortTheNextGoal)
+{
+  submit(positionGoal(1.0, 0.0, 1.0), "first");
+  const GoalSample stale = supervisor_.sample();
+  ++backend_->state.link_losses;  // the link breaks and heals after the state thread sampled
+  const auto second = acceptSecondGoalThenDeliver(stale);
+  EXPECT_TRUE(second->end.empty()) << "the first goal's sample ended the second: " << second->end;
+  expectJudgedByItsOwnSamples(second);
+}
+
+TEST_F(GoalSupervisorTest, AStaleSampleFromBeforeAFaultDoesNotAbortTheNextGoal)
+{
+  submit(positionGoal(1.0, 0.0, 1.0), "first");
+  const GoalSample stale = supervisor_.sample();
+  ++backend_->state.fault_count;  // the device refuses the first goal after the state thread sampled
+  backend_->last_fault = "the first goal was refused";
+  const auto second = acceptSecondGoalThenDeliver(stale);
+  EXPECT_TRUE(second->end.empty()) << "the first goal's sample ended the second: " << second->end;
+  expectJudgedByItsOwnSamples(second);
+}
+
+// The same race with a cancel: a sample taken before the stop command (the device not yet under way) must not end
+// the cancelled goal as if the device had come to rest.
+TEST_F(GoalSupervisorTest, ASampleTakenBeforeACancelDoesNotEndTheStop)
+{
+  const auto goal = submit(positionGoal(1.0, 0.0, 1.0));
+  const GoalSample before_cancel = supervisor_.sample();  // at rest: the device has not started yet
+  backend_->at({ 0.1, 0.0, 1.0 }, true);
+  supervisor_.cancel("position_abs", "goal");
+  supervisor_.supervise(before_cancel);
+  EXPECT_TRUE(goal->end.empty()) << goal->end;
+  backend_->at({ 0.15, 0.0, 1.0 }, false);
+  tick();
+  EXPECT_EQ(goal->end, "PREEMPTED: cancelled: stopped at pan 0.1500 rad, tilt 0.0000 rad, zoom 1.00 X");
+}
+
+TEST_F(GoalSupervisorTest, TheActiveGoalsOwnSamplesStillEndIt)
+{
+  const auto goal = submit(positionGoal(1.0, 0.0, 1.0));
+  backend_->state.link_up = false;
+  const GoalSample sample = supervisor_.sample();
+  supervisor_.supervise(sample);
+  EXPECT_EQ(goal->end, "ABORTED: link lost: the device stopped reporting its state");
+}

@@ -1,0 +1,114 @@
+/**
+ * \file
+ * \brief rostest client, goals that must not succeed: rejections, a stalled axis, a lost link; and clamping
+ * (ClampTest runs only in clamp.test, where the node has clamp_goals:=true).
+ */
+#include "node_test.h"
+
+TEST_F(NodeTest, InvalidGoalsAreRejectedAndNothingMoves)
+{
+  ASSERT_EQ(moveTo(0.2, 0.1, 2.0), State::SUCCEEDED);
+  ASSERT_TRUE(observer_->waitTicks(1));
+  const PtzState before = observer_->latest();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  struct Case
+  {
+    PtzClient* client;
+    PtzGoal goal;
+    const char* reason;
+  };
+  const std::vector<Case> cases = {
+    { absolute_, makePtzGoal(nan, 0.0, 1.0), "pan position is NaN" },
+    { absolute_, makePtzGoal(0.0, 0.0, inf), "zoom position is +Inf" },
+    { absolute_, makePtzGoal(0.0, 2.0, 1.0), "tilt 2.0000 rad is outside the limits" },
+    { absolute_, makePtzGoal(-4.0, 0.0, 1.0), "pan -4.0000 rad is outside the limits" },
+    { relative_, makePtzGoal(0.0, nan, 0.0), "tilt offset is NaN" },
+    { relative_, makePtzGoal(3.5, 0.0, 0.0), "is outside the limits" },
+    { velocity_, makePtzGoal(0.0, -inf, 0.0), "tilt velocity is -Inf" },
+    { velocity_, makePtzGoal(50.0, 0.0, 0.0), "exceeds the maximum speed" },
+  };
+  for (const Case& item : cases)
+  {
+    item.client->sendGoal(item.goal);
+    ASSERT_TRUE(item.client->waitForResult(ros::Duration(5.0)));
+    EXPECT_EQ(item.client->getState(), State::REJECTED) << item.reason;
+    EXPECT_NE(item.client->getState().getText().find(item.reason), std::string::npos)
+        << "'" << item.client->getState().getText() << "' should say '" << item.reason << "'";
+    EXPECT_FALSE(item.client->getResult()->success);
+  }
+  ASSERT_TRUE(observer_->waitTicks(3));
+  const PtzState after = observer_->latest();
+  EXPECT_EQ(after.pan, before.pan);
+  EXPECT_EQ(after.tilt, before.tilt);
+  EXPECT_EQ(after.zoom, before.zoom);
+  EXPECT_EQ(after.mode, PtzState::MODE_IDLE);
+}
+
+TEST_F(NodeTest, StalledAxisAbortsWithoutSuccess)
+{
+  if (!simBackend())
+  {
+    GTEST_SKIP() << "fault hooks belong to the sim backend";
+  }
+  ASSERT_EQ(moveTo(0.0, 0.0, 1.0), State::SUCCEEDED);
+  ptz_action_server::SetSimFaults::Request faults;
+  faults.stall_tilt = true;
+  ASSERT_TRUE(setFaults(faults));
+  absolute_->sendGoal(makePtzGoal(0.3, 0.4, 1.0));
+  ASSERT_TRUE(absolute_->waitForResult(ros::Duration(GOAL_WAIT)));
+  EXPECT_EQ(absolute_->getState(), State::ABORTED);
+  EXPECT_NE(absolute_->getState().getText().find("stalled: tilt"), std::string::npos)
+      << absolute_->getState().getText();
+  ASSERT_TRUE(absolute_->getResult());
+  EXPECT_FALSE(absolute_->getResult()->success);
+  ASSERT_TRUE(setFaults(ptz_action_server::SetSimFaults::Request()));
+  EXPECT_EQ(moveTo(0.0, 0.4, 1.0), State::SUCCEEDED);
+}
+
+TEST_F(NodeTest, LostLinkAbortsAndTheNodeRecovers)
+{
+  if (!simBackend())
+  {
+    GTEST_SKIP() << "fault hooks belong to the sim backend";
+  }
+  ASSERT_EQ(moveTo(0.0, 0.0, 1.0), State::SUCCEEDED);
+  absolute_->sendGoal(makePtzGoal(2.0, 0.0, 1.0));
+  ASSERT_TRUE(observer_->waitFor([](const PtzState& state) { return state.pan > 0.2; }, 5.0));
+  ptz_action_server::SetSimFaults::Request dropout;
+  dropout.dropout = true;
+  ASSERT_TRUE(setFaults(dropout));
+  ASSERT_TRUE(absolute_->waitForResult(ros::Duration(GOAL_WAIT)));
+  EXPECT_EQ(absolute_->getState(), State::ABORTED);
+  EXPECT_NE(absolute_->getState().getText().find("link lost"), std::string::npos) << absolute_->getState().getText();
+  // PtzState keeps coming while the link is down, and new goals are refused with the reason.
+  EXPECT_TRUE(observer_->waitTicks(5));
+  EXPECT_EQ(moveTo(0.5, 0.0, 1.0), State::REJECTED);
+  EXPECT_NE(absolute_->getState().getText().find("link is down"), std::string::npos);
+  ASSERT_TRUE(setFaults(ptz_action_server::SetSimFaults::Request()));
+  EXPECT_EQ(moveTo(-0.5, 0.0, 1.0), State::SUCCEEDED);
+  EXPECT_NEAR(observer_->latest().pan, -0.5, TOLERANCE);
+}
+
+/// Runs only in clamp.test, where the node has clamp_goals:=true.
+class ClampTest : public NodeTest
+{
+};
+
+TEST_F(ClampTest, OutOfRangeGoalsAreClampedAndSaySo)
+{
+  absolute_->sendGoal(makePtzGoal(4.0, -2.0, 1.0));
+  ASSERT_TRUE(absolute_->waitForResult(ros::Duration(GOAL_WAIT)));
+  EXPECT_EQ(absolute_->getState(), State::SUCCEEDED) << absolute_->getState().getText();
+  EXPECT_NE(absolute_->getState().getText().find("clamped pan 4.0000 -> 3.1416 rad, tilt -2.0000 -> -1.5708 rad"),
+            std::string::npos)
+      << absolute_->getState().getText();
+  ASSERT_TRUE(observer_->waitTicks(1));
+  EXPECT_NEAR(observer_->latest().pan, M_PI, TOLERANCE);
+  EXPECT_NEAR(observer_->latest().tilt, -M_PI / 2, TOLERANCE);
+
+  // Clamping never makes NaN acceptable.
+  absolute_->sendGoal(makePtzGoal(std::numeric_limits<double>::quiet_NaN(), 0.0, 1.0));
+  ASSERT_TRUE(absolute_->waitForResult(ros::Duration(5.0)));
+  EXPECT_EQ(absolute_->getState(), State::REJECTED);
+}
