@@ -97,8 +97,10 @@ void StatePublisher::onTick()
   joint_state_message_.velocity[1] = sample.velocity[TILT];
   joint_state_publisher_.publish(joint_state_message_);
 
-  if (transform_broadcaster_)
+  // A state the device has not renewed (its link is down) is not sent again: tf takes no repeated stamps.
+  if (transform_broadcaster_ && sample.stamp > last_transform_stamp_)
   {
+    last_transform_stamp_ = sample.stamp;
     const double values[] = { sample.position[PAN], sample.position[TILT] };
     const JointModel* joints[] = { &kinematics_.panJoint(), &kinematics_.tiltJoint() };
     for (std::size_t index = 0; index < 2; ++index)

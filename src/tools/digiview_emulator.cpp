@@ -30,6 +30,7 @@ Options:
   --silent               start silent: read and ignore everything, send nothing
   --silent-after S       fall silent S seconds after start
 Signals: SIGUSR1 toggles silence, SIGUSR2 drops every connection; SIGINT / SIGTERM end the program.
+  --pid-file PATH        write the program's pid there (for whoever sends the signals)
 )";
 }  // namespace
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <pthread.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -112,6 +113,18 @@ inline void parseArguments(int argc, char** argv, const char* program, const std
       std::printf("%s", usage.c_str());
       std::exit(0);
     }
+    if (arg == "--pid-file" && index + 1 < argc)
+    {
+      // For whoever sends the fault signals (a test): written at once, before the device starts.
+      std::FILE* file = std::fopen(argv[++index], "w");
+      if (file == nullptr)
+      {
+        fail(program, std::string("cannot write the pid file ") + argv[index], usage.c_str());
+      }
+      std::fprintf(file, "%d\n", static_cast<int>(::getpid()));
+      std::fclose(file);
+      continue;
+    }
     const Value value = [&]() -> const char* {
       if (index + 1 >= argc)
       {
@@ -148,6 +161,7 @@ Faults:
   --unplug-after S       close the port (remove the link; stop listening) S seconds after start
   --replug-after S       the port is back (a new pseudo-terminal under the same link) S seconds after start
 Signals: SIGUSR1 toggles silence, SIGUSR2 unplugs / replugs; SIGINT / SIGTERM end the program.
+  --pid-file PATH        write the program's pid there (for whoever sends the signals)
 )";
 
 /// The usage text of a serial emulator: its own text, then the serial options with its default link.

@@ -29,6 +29,7 @@ Options:
   --silent               start silent: ignore everything, send nothing (an unplugged device)
   --silent-after S       fall silent S seconds after start
 Signals: SIGUSR1 toggles silence; SIGINT / SIGTERM end the program.
+  --pid-file PATH        write the program's pid there (for whoever sends the signals)
 )";
 }  // namespace
 

@@ -5,6 +5,10 @@
  */
 #include "node_test.h"
 
+#include <signal.h>
+
+#include <fstream>
+
 TEST_F(NodeTest, InvalidGoalsAreRejectedAndNothingMoves)
 {
   ASSERT_EQ(moveTo(0.2, 0.1, 2.0), State::SUCCEEDED);
@@ -88,6 +92,57 @@ TEST_F(NodeTest, LostLinkAbortsAndTheNodeRecovers)
   ASSERT_TRUE(setFaults(ptz_action_server::SetSimFaults::Request()));
   EXPECT_EQ(moveTo(-0.5, 0.0, 1.0), State::SUCCEEDED);
   EXPECT_NEAR(observer_->latest().pan, -0.5, TOLERANCE);
+}
+
+/**
+ * The device's link breaks while a goal runs, by the emulator's own fault signal, as a user would break it: the goal
+ * ends ABORTED with "link lost: <the link>", PtzState keeps coming, and the first goal the node takes afterwards
+ * succeeds. The .test file names the emulator's pid file and the fault: "drop" (SIGUSR2: every connection dropped,
+ * reopened at once), "unplug" (SIGUSR2: unplugged until the goal has ended, then SIGUSR2 again: replugged) or
+ * "silence" (SIGUSR1 likewise). The contract suite breaks and reopens links faster than the state timeout.
+ */
+TEST_F(NodeTest, ALinkBrokenMidGoalEndsItAsLinkLostAndTheNextGoalSucceeds)
+{
+  ros::NodeHandle private_handle("~");
+  std::string pid_file;
+  std::string fault;
+  private_handle.param<std::string>("emulator_pid_file", pid_file, "");
+  private_handle.param<std::string>("emulator_fault", fault, "");
+  if (pid_file.empty())
+  {
+    GTEST_SKIP() << "no emulator to break (the sim's own dropout is LostLinkAbortsAndTheNodeRecovers)";
+  }
+  std::ifstream file(pid_file);
+  int pid = 0;
+  ASSERT_TRUE(file >> pid) << "no pid in " << pid_file;
+  ASSERT_EQ(moveTo(-1.2, 0.0, 1.0), State::SUCCEEDED);
+  absolute_->sendGoal(makePtzGoal(1.2, 0.0, 1.0));
+  ASSERT_TRUE(observer_->waitFor([](const PtzState& state) { return state.pan > -0.8; }, GOAL_WAIT));
+  const int signal = fault == "silence" ? SIGUSR1 : SIGUSR2;
+  ASSERT_EQ(::kill(pid, signal), 0);
+  ASSERT_TRUE(absolute_->waitForResult(ros::Duration(GOAL_WAIT)));
+  EXPECT_EQ(absolute_->getState(), State::ABORTED) << absolute_->getState().getText();
+  EXPECT_EQ(absolute_->getState().getText().rfind("link lost: ", 0), 0u) << absolute_->getState().getText();
+  EXPECT_FALSE(absolute_->getResult()->success);
+  EXPECT_TRUE(observer_->waitTicks(3));  // PtzState goes on
+  if (fault != "drop")
+  {
+    ASSERT_EQ(::kill(pid, signal), 0);  // the device is back (the signal toggles the fault)
+  }
+  // The first goal the node takes once the link is back succeeds (goals are refused while it is down).
+  State state = State::REJECTED;
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(GOAL_WAIT);
+  while (state == State::REJECTED && ros::WallTime::now() < deadline)
+  {
+    state = moveTo(0.3, 0.1, 1.0);
+    if (state == State::REJECTED)
+    {
+      EXPECT_NE(absolute_->getState().getText().find("link is down"), std::string::npos);
+      observer_->waitTicks(1);
+    }
+  }
+  EXPECT_EQ(state, State::SUCCEEDED) << absolute_->getState().getText();
+  EXPECT_NEAR(observer_->latest().pan, 0.3, TOLERANCE);
 }
 
 /// Runs only in clamp.test, where the node has clamp_goals:=true.

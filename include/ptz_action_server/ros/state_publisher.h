@@ -72,6 +72,7 @@ private:
   PtzState state_message_;
   sensor_msgs::JointState joint_state_message_;
   std::vector<geometry_msgs::TransformStamped> joint_transforms_;  ///< pan and tilt, reused every tick
+  TimePoint last_transform_stamp_{};                               ///< of the state the joint tf was last sent for
   std::unique_ptr<tf2_ros::TransformBroadcaster> transform_broadcaster_;
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
   std::unique_ptr<diagnostic_updater::Updater> diagnostics_;
