@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <deque>
 #include <tuple>
 
 #include <boost/asio/post.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <boost/asio/write.hpp>
+
+#include "digiview_emulator_internal.h"
 
 namespace ptz_action_server
 {
@@ -17,17 +18,7 @@ namespace
 using boost::asio::ip::tcp;
 using boost::asio::ip::udp;
 using namespace digiview;
-
-constexpr double NARROWEST_FOV = 0.1;
-constexpr double WIDEST_FOV = 3.14;
-constexpr double ZOOM_STEP = 1.1;  ///< a relative zoom step of 1 narrows the field of view by this factor
-
-/// User views per layout mode (6 is the debug view: one).
-std::uint8_t viewsOf(std::uint8_t layout_mode)
-{
-  static const std::uint8_t VIEWS[] = { 1, 2, 2, 3, 4, 4, 1 };
-  return layout_mode < sizeof(VIEWS) ? VIEWS[layout_mode] : 1;
-}
+using namespace digiview_views;
 
 SimDeviceConfig viewModel(const DigiViewEmulatorConfig& config)
 {
@@ -42,30 +33,6 @@ SimDeviceConfig viewModel(const DigiViewEmulatorConfig& config)
   return model;
 }
 }  // namespace
-
-/// A GET_INTERVAL subscription: its request and its timer.
-struct DigiViewEmulator::Subscription
-{
-  IntervalRequest request;
-  std::unique_ptr<boost::asio::steady_timer> timer;
-};
-
-/// One client: a TCP connection, or a UDP peer. Lives on the I/O thread.
-struct DigiViewEmulator::Session
-{
-  using Key = std::tuple<int, std::string, std::uint8_t>;  ///< param, stream, camera
-  explicit Session(boost::asio::io_context& context) : socket(context)
-  {
-  }
-  tcp::socket socket;  ///< TCP only
-  bool is_udp = false;
-  udp::endpoint peer;
-  bool open = true;
-  std::array<std::uint8_t, 2048> buffer{};
-  std::size_t buffered = 0;
-  std::deque<digiview::Bytes> writes;
-  std::map<Key, Subscription> subscriptions;
-};
 
 DigiViewEmulator::DigiViewEmulator(const DigiViewEmulatorConfig& config)
   : config_(config), acceptor_(context_), udp_(context_)
@@ -146,23 +113,6 @@ std::size_t DigiViewEmulator::connections() const
   std::lock_guard<std::mutex> lock(mutex_);
   return static_cast<std::size_t>(
       std::count_if(sessions_.begin(), sessions_.end(), [](const SessionPtr& session) { return session->open; }));
-}
-
-PtzSample DigiViewEmulator::view(const std::string& stream, std::uint8_t cam_id) const
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  return models_.at(std::make_pair(stream, cam_id)).sample(SteadyClock::now());
-}
-
-std::uint8_t DigiViewEmulator::numUserViews() const
-{
-  return viewsOf(config_.layout_mode);
-}
-
-SimDeviceModel* DigiViewEmulator::model(const CameraId& camera)
-{
-  const auto found = models_.find(std::make_pair(camera.stream_name, camera.cam_id));
-  return found == models_.end() ? nullptr : &found->second;
 }
 
 void DigiViewEmulator::accept()
@@ -298,58 +248,6 @@ void DigiViewEmulator::writeNext(const SessionPtr& session)
                            });
 }
 
-bool DigiViewEmulator::current(ParamType param, const CameraId& camera, Message& message)
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (param == ParamType::SYSTEM_STATUS)
-  {
-    message = packSystemStatus(MessageType::CURRENT_PARAMETERS, SystemStatus{ 1, 0, 45.0f });
-    return true;
-  }
-  if (param == ParamType::VIDEO_OUTPUT)
-  {
-    if (std::find(config_.streams.begin(), config_.streams.end(), camera.stream_name) == config_.streams.end())
-    {
-      return false;
-    }
-    VideoOutput output;
-    output.stream_name = camera.stream_name;
-    output.layout_mode = config_.layout_mode;
-    output.num_user_views = numUserViews();
-    for (std::size_t index = 0; index < output.views.size(); ++index)
-    {
-      output.views[index] = BoundingBox{ static_cast<std::uint16_t>(960 * (index % 2)),
-                                         static_cast<std::uint16_t>(540 * (index / 2)), 960, 540 };
-    }
-    message = packVideoOutput(MessageType::CURRENT_PARAMETERS, output);
-    return true;
-  }
-  SimDeviceModel* view = model(camera);
-  if (view == nullptr)
-  {
-    return false;
-  }
-  const PtzSample state = view->sample(SteadyClock::now());
-  if (param == ParamType::CAM_TARGETING)
-  {
-    CamTargeting targeting;
-    targeting.camera = camera;
-    targeting.yaw = state.position[PAN];
-    targeting.pitch = state.position[TILT];
-    message = packTargeting(MessageType::CURRENT_PARAMETERS, targeting);
-    return true;
-  }
-  if (param == ParamType::CAM_OPTICS_AND_CONTROL)
-  {
-    CamOpticsAndControl optics;
-    optics.camera = camera;
-    optics.fov = state.position[ZOOM];
-    message = packOptics(MessageType::CURRENT_PARAMETERS, optics);
-    return true;
-  }
-  return false;
-}
-
 void DigiViewEmulator::subscribe(const SessionPtr& session, const IntervalRequest& request)
 {
   const auto key = std::make_tuple(static_cast<int>(request.param), request.camera.stream_name, request.camera.cam_id);
@@ -393,142 +291,6 @@ void DigiViewEmulator::waitSubscription(const SessionPtr& session, const Session
                                    std::chrono::milliseconds(subscription.request.interval_ms));
     waitSubscription(alive, key);
   });
-}
-
-void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* bytes, std::size_t size)
-{
-  Message message;
-  const UnpackError error = Message::unpack(bytes, size, message);
-  received_.add(ReceivedMessage{ SteadyClock::now(), error, message });
-  if (silent_)
-  {
-    return;
-  }
-  const ParamType about =
-      size > 10 && isParamType(bytes[10]) ? static_cast<ParamType>(bytes[10]) : ParamType::SYSTEM_STATUS;
-  switch (error)
-  {
-    case UnpackError::NONE:
-      break;
-    case UnpackError::BAD_CHECKSUM:
-      reply(session, packBare(MessageType::CHECKSUM_ERROR, about));
-      return;
-    case UnpackError::BAD_MESSAGE_TYPE:
-    case UnpackError::BAD_PARAM_TYPE:
-      reply(session, packBare(MessageType::UNKNOWN, about));
-      return;
-    default:
-      reply(session, packBare(MessageType::DATA_ERROR, about));
-      return;
-  }
-
-  const ParamType param = message.param_type;
-  switch (message.message_type)
-  {
-    case MessageType::QUIT:
-      if (session->is_udp)
-      {
-        session->subscriptions.clear();
-        udp_sessions_.erase(session->peer);
-      }
-      closeSession(session);
-      return;
-    case MessageType::GET_PARAMETERS: {
-      CameraId camera;
-      if (unpackCamera(message, camera) != UnpackError::NONE)
-      {
-        reply(session, packBare(MessageType::DATA_ERROR, param));
-        return;
-      }
-      Message answer;
-      if (current(param, camera, answer))
-      {
-        reply(session, answer);
-      }
-      else if (param != ParamType::VIDEO_OUTPUT && param != ParamType::CAM_TARGETING &&
-               param != ParamType::CAM_OPTICS_AND_CONTROL)
-      {
-        reply(session, packBare(MessageType::UNKNOWN, param));  // a parameter the emulator does not model
-      }
-      return;  // an unknown stream or camera: ignored, as DigiView does
-    }
-    case MessageType::GET_INTERVAL: {
-      IntervalRequest request;
-      if (unpackInterval(message, request) != UnpackError::NONE)
-      {
-        reply(session, packBare(MessageType::DATA_ERROR, param));
-        return;
-      }
-      subscribe(session, request);
-      return;
-    }
-    case MessageType::SET_PARAMETERS: {
-      if (refuse_)
-      {
-        reply(session, packBare(MessageType::FORBIDDEN, param));
-        return;
-      }
-      const TimePoint now = SteadyClock::now();
-      if (param == ParamType::CAM_TARGETING)
-      {
-        CamTargeting targeting;
-        if (unpackTargeting(message, targeting) != UnpackError::NONE)
-        {
-          reply(session, packBare(MessageType::DATA_ERROR, param));
-          return;
-        }
-        std::unique_lock<std::mutex> lock(mutex_);
-        SimDeviceModel* view = model(targeting.camera);
-        if (view == nullptr)
-        {
-          return;  // unknown view: ignored
-        }
-        if (targeting.targeting_mode == 0)
-        {
-          const PtzSample state = view->sample(now);
-          const double yaw = targeting.euler_delta ? state.position[PAN] + targeting.yaw : targeting.yaw;
-          const double pitch = targeting.euler_delta ? state.position[TILT] + targeting.pitch : targeting.pitch;
-          view->goToAxis(PAN, std::remainder(yaw, 2.0 * M_PI), now);
-          view->goToAxis(TILT, pitch, now);
-        }
-        lock.unlock();
-        reply(session, packBare(MessageType::ACKNOWLEDGEMENT, param));
-        return;
-      }
-      if (param == ParamType::CAM_OPTICS_AND_CONTROL)
-      {
-        CamOpticsAndControl optics;
-        if (unpackOptics(message, optics) != UnpackError::NONE)
-        {
-          reply(session, packBare(MessageType::DATA_ERROR, param));
-          return;
-        }
-        std::unique_lock<std::mutex> lock(mutex_);
-        SimDeviceModel* view = model(optics.camera);
-        if (view == nullptr)
-        {
-          return;
-        }
-        double fov = optics.fov;
-        if (optics.zoom != 0)
-        {
-          fov = view->sample(now).position[ZOOM] / std::pow(ZOOM_STEP, optics.zoom);
-        }
-        if (fov >= NARROWEST_FOV && fov <= WIDEST_FOV)  // outside: ignored, as DigiView does
-        {
-          view->goToAxis(ZOOM, fov, now);
-        }
-        lock.unlock();
-        reply(session, packBare(MessageType::ACKNOWLEDGEMENT, param));
-        return;
-      }
-      reply(session, packBare(MessageType::UNKNOWN, param));
-      return;
-    }
-    default:
-      reply(session, packBare(MessageType::UNKNOWN, param));
-      return;
-  }
 }
 
 }  // namespace ptz_action_server

@@ -62,7 +62,7 @@ void DigiViewProtocol::onConnected()
 
 void DigiViewProtocol::subscribe()
 {
-  heard_at_ = session_.now();
+  heard_at_ = subscribed_at_ = session_.now();
   send(packGet(ParamType::VIDEO_OUTPUT, settings_.camera()));
   send(packGet(ParamType::SYSTEM_STATUS, settings_.camera()));
   for (ParamType param : { ParamType::CAM_TARGETING, ParamType::CAM_OPTICS_AND_CONTROL })
@@ -74,7 +74,9 @@ void DigiViewProtocol::subscribe()
 
 void DigiViewProtocol::poll()
 {
-  if (secondsBetween(heard_at_, session_.now()) > RESUBSCRIBE_AFTER)
+  const TimePoint now = session_.now();
+  const bool undescribed = !described_ && secondsBetween(subscribed_at_, now) > RESUBSCRIBE_AFTER;
+  if (undescribed || secondsBetween(heard_at_, now) > RESUBSCRIBE_AFTER)
   {
     subscribe();
   }

@@ -37,8 +37,9 @@ Capabilities PanTiltProtocol::capabilities() const
 void PanTiltProtocol::onConnected()
 {
   heard_ = false;
-  sendStateRequest();
+  // The speeds first: the device answers in order, so once its first frame is here they have been taken.
   sendSpeeds();
+  sendStateRequest();
 }
 
 void PanTiltProtocol::onReceived(const std::uint8_t* data, std::size_t size)

@@ -88,7 +88,8 @@ public:
   /// 80-byte messages: cut from the stream on TCP, one per datagram on UDP.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   void onDisconnected() override;
-  /// Subscribes again after three missed states: over UDP nothing else tells that DigiView restarted.
+  /// Subscribes again after three missed states (over UDP nothing else tells that DigiView restarted), and asks
+  /// again for a stream description that did not come (a datagram may be lost).
   void poll() override;
   /// SET CAM_TARGETING (directional, absolute) and SET CAM_OPTICS_AND_CONTROL (fov = fov_wide / zoom).
   void goTo(const AxisValues& position) override;
@@ -138,6 +139,7 @@ private:
   std::size_t buffered_ = 0;
   std::deque<PendingSet> pending_sets_;  ///< oldest first
   TimePoint heard_at_{};                 ///< the last state of the view, or the last subscription
+  TimePoint subscribed_at_{};
   AxisValues reported_{ { 0.0, 0.0, 1.0 } };
   AxisValues velocity_{};
   AxisValues velocity_origin_{};

@@ -79,7 +79,7 @@ public:
   }
   /// From the settings: the PanTilt protocol cannot tell limits or speeds. No zoom.
   Capabilities capabilities() const override;
-  /// A state request (a params frame with an empty mask) and the speeds.
+  /// The speeds and a state request (a params frame with an empty mask).
   void onConnected() override;
   /// One params frame per datagram; anything else is counted under its reason and dropped.
   void onReceived(const std::uint8_t* data, std::size_t size) override;

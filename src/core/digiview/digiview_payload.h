@@ -1,0 +1,162 @@
+/**
+ * \file
+ * \brief Private to the DigiView codec: little-endian writes and reads into a message's 64-byte data field, the
+ * scales of its fixed-point fields, and the camera id most payloads start with (digiview_payloads.cpp).
+ */
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ptz_action_server/core/digiview/digiview_codec.h"
+
+namespace ptz_action_server
+{
+namespace digiview
+{
+namespace detail
+{
+// Scaled fields: angles and coordinates x 1000, offsets x 32767.
+inline constexpr double ANGLE_SCALE = 1000.0;
+inline constexpr double OFFSET_SCALE = 32767.0;
+inline constexpr std::int32_t MAX_YAW = 3142;    ///< pi, in milliradians, rounded up
+inline constexpr std::int32_t MAX_PITCH = 1571;  ///< pi / 2
+
+/// Little-endian writes and reads into the 64-byte data field, by offset.
+class Payload
+{
+public:
+  explicit Payload(std::array<std::uint8_t, DATA_SIZE>& data) : data_(data)
+  {
+  }
+  void u8(std::size_t at, std::uint8_t value)
+  {
+    data_[at] = value;
+  }
+  void u16(std::size_t at, std::uint16_t value)
+  {
+    data_[at] = static_cast<std::uint8_t>(value);
+    data_[at + 1] = static_cast<std::uint8_t>(value >> 8);
+  }
+  void u32(std::size_t at, std::uint32_t value)
+  {
+    for (std::size_t index = 0; index < 4; ++index)
+    {
+      data_[at + index] = static_cast<std::uint8_t>(value >> (8 * index));
+    }
+  }
+  void scaled32(std::size_t at, double value, double scale)
+  {
+    const double scaled = std::round(value * scale);
+    const double bounded =
+        std::clamp(std::isfinite(scaled) ? scaled : 0.0, static_cast<double>(std::numeric_limits<std::int32_t>::min()),
+                   static_cast<double>(std::numeric_limits<std::int32_t>::max()));
+    u32(at, static_cast<std::uint32_t>(static_cast<std::int32_t>(bounded)));
+  }
+  void scaled16(std::size_t at, double value)
+  {
+    const double scaled = std::clamp(std::round(value * OFFSET_SCALE), -OFFSET_SCALE, OFFSET_SCALE);
+    u16(at, static_cast<std::uint16_t>(static_cast<std::int16_t>(std::isfinite(scaled) ? scaled : 0.0)));
+  }
+  void name(std::size_t at, const std::string& text)
+  {
+    for (std::size_t index = 0; index < NAME_SIZE; ++index)
+    {
+      data_[at + index] = index < text.size() ? static_cast<std::uint8_t>(text[index]) : 0;
+    }
+  }
+  void box(std::size_t at, const BoundingBox& box)
+  {
+    u16(at, box.x);
+    u16(at + 2, box.y);
+    u16(at + 4, box.w);
+    u16(at + 6, box.h);
+  }
+
+private:
+  std::array<std::uint8_t, DATA_SIZE>& data_;
+};
+
+class Reader
+{
+public:
+  explicit Reader(const std::array<std::uint8_t, DATA_SIZE>& data) : data_(data)
+  {
+  }
+  std::uint8_t u8(std::size_t at) const
+  {
+    return data_[at];
+  }
+  std::uint16_t u16(std::size_t at) const
+  {
+    return static_cast<std::uint16_t>(data_[at] | (data_[at + 1] << 8));
+  }
+  std::uint32_t u32(std::size_t at) const
+  {
+    std::uint32_t value = 0;
+    for (std::size_t index = 0; index < 4; ++index)
+    {
+      value |= static_cast<std::uint32_t>(data_[at + index]) << (8 * index);
+    }
+    return value;
+  }
+  std::int32_t i32(std::size_t at) const
+  {
+    return static_cast<std::int32_t>(u32(at));
+  }
+  std::int16_t i16(std::size_t at) const
+  {
+    return static_cast<std::int16_t>(u16(at));
+  }
+  /// The NUL-padded name; false if it holds a non-printable character before the first NUL.
+  bool name(std::size_t at, std::string& text) const
+  {
+    text.clear();
+    for (std::size_t index = 0; index < NAME_SIZE && data_[at + index] != 0; ++index)
+    {
+      const std::uint8_t character = data_[at + index];
+      if (character < 0x20 || character > 0x7E)
+      {
+        return false;
+      }
+      text.push_back(static_cast<char>(character));
+    }
+    return true;
+  }
+  BoundingBox box(std::size_t at) const
+  {
+    return BoundingBox{ u16(at), u16(at + 2), u16(at + 4), u16(at + 6) };
+  }
+
+private:
+  const std::array<std::uint8_t, DATA_SIZE>& data_;
+};
+
+inline bool within(std::int64_t value, std::int64_t min, std::int64_t max)
+{
+  return value >= min && value <= max;
+}
+
+inline Message withPayload(MessageType type, ParamType param)
+{
+  Message message;
+  message.message_type = type;
+  message.param_type = param;
+  return message;
+}
+
+inline void writeCamera(Payload& payload, const CameraId& camera)
+{
+  payload.name(0, camera.stream_name);
+  payload.u8(8, camera.cam_id);
+}
+
+inline bool readCamera(const Reader& reader, CameraId& camera)
+{
+  camera.cam_id = reader.u8(8);
+  return reader.name(0, camera.stream_name) && camera.cam_id <= 3;
+}
+}  // namespace detail
+}  // namespace digiview
+}  // namespace ptz_action_server

@@ -1,0 +1,32 @@
+/**
+ * \file
+ * \brief Private to the device fixtures: what the line fixtures (line_device_fixtures.cpp: FLIR, Pelco-D) and the
+ * network ones (network_device_fixtures.cpp: PanTilt, DigiView) share, and their lists, which allDeviceFixtures()
+ * (device_fixtures.cpp) joins.
+ */
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "device_fixtures.h"
+
+namespace ptz_action_server
+{
+/// \p bytes as upper-case hex pairs, each followed by a space.
+std::string hex(const std::vector<std::uint8_t>& bytes);
+
+/// \p commands without the state polls.
+std::vector<DeviceCommand> withoutQueries(const std::vector<DeviceCommand>& commands);
+
+/// FLIR (serial, TCP) and Pelco-D (serial in both tilt encodings, TCP).
+std::vector<FixtureMaker> lineDeviceFixtures();
+
+/// PanTilt over UDP (both wire formats) and DigiView (TCP, UDP).
+std::vector<FixtureMaker> networkDeviceFixtures();
+
+/// s without a state before a link is lost: generous, a busy test machine may starve the I/O threads for a while
+/// (the deadline cases read it back).
+constexpr double TEST_STATE_TIMEOUT = 1.0;
+
+}  // namespace ptz_action_server

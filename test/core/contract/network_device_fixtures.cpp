@@ -1,0 +1,301 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "device_fixtures_internal.h"
+#include "ptz_action_server/core/digiview/digiview_protocol.h"
+#include "ptz_action_server/core/pantilt/pantilt_protocol.h"
+#include "ptz_action_server/core/units.h"
+#include "ptz_action_server/emulators/digiview_emulator.h"
+#include "ptz_action_server/emulators/pantilt_emulator.h"
+
+namespace ptz_action_server
+{
+namespace
+{
+using Kind = DeviceCommand::Kind;
+
+// ---------------------------------------------------------------- PanTilt over UDP
+
+class PanTiltFixture : public DeviceFixture
+{
+public:
+  explicit PanTiltFixture(cr::pantilt::WireVersion version)
+  {
+    emulator_config_.version = version;
+    emulator_config_.state_period = 0.05;
+    emulator_ = std::make_unique<PanTiltEmulator>(emulator_config_);
+    emulator_config_.port = emulator_->endpoint().port();  // a restart takes the same port
+    config_.link.port = emulator_config_.port;
+    config_.link.local_host = "127.0.0.1";
+    config_.pantilt.version = version;
+    config_.session.state_timeout = TEST_STATE_TIMEOUT;
+  }
+
+  std::unique_ptr<DeviceBackend> makeBackend() override
+  {
+    return makePanTiltBackend(config_);
+  }
+  std::vector<DeviceCommand> commands() const override
+  {
+    using namespace cr::pantilt;
+    std::vector<DeviceCommand> commands;
+    for (const ReceivedDatagram& datagram : emulator_->received().items())
+    {
+      PanTiltParam param{};
+      PanTiltCommand command{};
+      float value = 0.0f;
+      Kind kind = Kind::OTHER;
+      const int decoded = datagram.bytes.empty() || datagram.bytes[0] == PARAMS_HEADER ?
+                              -1 :
+                              PanTilt::decodeCommand(datagram.bytes.data(), static_cast<int>(datagram.bytes.size()),
+                                                     param, command, value, emulator_config_.version);
+      if (decoded < 0)
+      {
+        kind = Kind::QUERY;  // a state request (or garbage)
+      }
+      else if (decoded == 0 && command == PanTiltCommand::STOP)
+      {
+        kind = Kind::STOP;
+      }
+      else if (decoded == 0 && command == PanTiltCommand::GO_TO_PAN_TILT_ANGLE)
+      {
+        kind = Kind::MOVE;
+      }
+      commands.push_back(DeviceCommand{ datagram.at, kind, hex(datagram.bytes) });
+    }
+    return commands;
+  }
+  void clearCommands() override
+  {
+    emulator_->received().clear();
+  }
+  PtzSample deviceState() const override
+  {
+    return emulator_->panTilt().sample();
+  }
+  void setSilent(bool silent) override
+  {
+    emulator_->setSilent(silent);
+  }
+  void breakLink() override
+  {
+    emulator_.reset();  // the device controller is gone
+  }
+  void restoreLink() override
+  {
+    if (!emulator_)
+    {
+      emulator_ = std::make_unique<PanTiltEmulator>(emulator_config_);
+    }
+  }
+  bool breaksAtOnce() const override
+  {
+    return false;
+  }
+  std::string linkLossWords() const override
+  {
+    return "no state from a PanTilt device controller";
+  }
+  void expectGoalCommands(const std::vector<DeviceCommand>& commands, const AxisValues& target) const override
+  {
+    using namespace cr::pantilt;
+    const WireVersion version = emulator_config_.version;
+    auto set = [version](PanTiltParam id, double value) {
+      std::vector<std::uint8_t> frame(SET_PARAM_SIZE);
+      int size = 0;
+      PanTilt::encodeSetParamCommand(frame.data(), size, id, static_cast<float>(value), version);
+      return hex(frame);
+    };
+    auto command = [version](PanTiltCommand id, double arg1 = 0.0, double arg2 = 0.0) {
+      std::vector<std::uint8_t> frame(COMMAND_SIZE_V1_1);
+      int size = 0;
+      PanTilt::encodeCommand(frame.data(), size, id, version, static_cast<float>(arg1), static_cast<float>(arg2));
+      frame.resize(static_cast<std::size_t>(size));
+      return hex(frame);
+    };
+    std::vector<std::string> expected = { set(PanTiltParam::PAN_MOTOR_SPEED, 100.0),
+                                          set(PanTiltParam::TILT_MOTOR_SPEED, 100.0) };
+    if (version == WireVersion::V1_0)
+    {
+      expected.push_back(set(PanTiltParam::PAN_ANGLE, toDegrees(target[PAN])));
+      expected.push_back(set(PanTiltParam::TILT_ANGLE, toDegrees(target[TILT])));
+      expected.push_back(command(PanTiltCommand::GO_TO_PAN_TILT_ANGLE));
+    }
+    else
+    {
+      expected.push_back(
+          command(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, toDegrees(target[PAN]), toDegrees(target[TILT])));
+    }
+    std::vector<std::string> texts;
+    for (const DeviceCommand& sent : withoutQueries(commands))
+    {
+      texts.push_back(sent.text);
+    }
+    EXPECT_EQ(texts, expected);
+  }
+
+private:
+  PanTiltEmulatorConfig emulator_config_;
+  std::unique_ptr<PanTiltEmulator> emulator_;
+  PanTiltConfig config_;
+};
+
+// ---------------------------------------------------------------- DigiView: TCP and UDP
+
+class DigiViewFixture : public DeviceFixture
+{
+public:
+  explicit DigiViewFixture(LinkKind transport)
+  {
+    emulator_config_.transport = transport;
+    emulator_ = std::make_unique<DigiViewEmulator>(emulator_config_);
+    emulator_config_.port = emulator_->port();
+    config_.link.kind = transport;
+    config_.link.port = emulator_->port();
+    config_.digiview.acceleration = 4.0;  // as the emulator turns
+    config_.session.state_timeout = TEST_STATE_TIMEOUT;
+  }
+
+  std::unique_ptr<DeviceBackend> makeBackend() override
+  {
+    return makeDigiViewBackend(config_);
+  }
+  std::vector<DeviceCommand> commands() const override
+  {
+    using namespace digiview;
+    std::vector<DeviceCommand> commands;
+    for (const ReceivedMessage& item : emulator_->received().items())
+    {
+      const Message& message = item.message;
+      Kind kind = Kind::OTHER;
+      std::string text = std::string(toString(message.message_type)) + " " + toString(message.param_type);
+      if (message.message_type == MessageType::GET_PARAMETERS || message.message_type == MessageType::GET_INTERVAL)
+      {
+        kind = Kind::QUERY;
+      }
+      else if (message.message_type == MessageType::SET_PARAMETERS && message.param_type == ParamType::CAM_TARGETING)
+      {
+        kind = Kind::MOVE;
+        CamTargeting targeting;
+        if (unpackTargeting(message, targeting) == UnpackError::NONE)
+        {
+          text += " yaw " + std::to_string(targeting.yaw) + " pitch " + std::to_string(targeting.pitch);
+          commands.push_back(DeviceCommand{ item.at, kind, text, true, targeting.yaw });
+          continue;
+        }
+      }
+      commands.push_back(DeviceCommand{ item.at, kind, text });
+    }
+    return commands;
+  }
+  void clearCommands() override
+  {
+    emulator_->received().clear();
+  }
+  PtzSample deviceState() const override
+  {
+    PtzSample view = emulator_->view("main", 0);
+    view.position[ZOOM] = config_.digiview.fov_wide / view.position[ZOOM];  // the model's zoom slot is the fov
+    return view;
+  }
+  void setSilent(bool silent) override
+  {
+    emulator_->setSilent(silent);
+  }
+  void breakLink() override
+  {
+    if (config_.link.kind == LinkKind::TCP)
+    {
+      emulator_->dropConnections();
+    }
+    else
+    {
+      emulator_.reset();
+    }
+  }
+  void restoreLink() override
+  {
+    if (!emulator_)
+    {
+      emulator_ = std::make_unique<DigiViewEmulator>(emulator_config_);
+    }
+  }
+  bool breaksAtOnce() const override
+  {
+    return config_.link.kind == LinkKind::TCP;
+  }
+  std::string linkLossWords() const override
+  {
+    return config_.link.kind == LinkKind::TCP ? "connection to 127.0.0.1" : "no state from DigiView";
+  }
+  std::string prepareRefusal(AxisValues& goal) override
+  {
+    emulator_->setRefuse(true);
+    goal = AxisValues{ { 0.3, 0.0, 1.0 } };
+    return ": FORBIDDEN (the sender does not have permission to perform the requested action)";
+  }
+  AxisValues goal(double pan, double tilt) const override
+  {
+    return AxisValues{ { pan, tilt, 2.0 } };
+  }
+  void expectGoalCommands(const std::vector<DeviceCommand>& commands, const AxisValues& target) const override
+  {
+    using namespace digiview;
+    std::size_t targetings = 0;
+    std::size_t optics_seen = 0;
+    for (const ReceivedMessage& item : emulator_->received().items())
+    {
+      if (item.message.message_type != MessageType::SET_PARAMETERS)
+      {
+        continue;
+      }
+      if (item.message.param_type == ParamType::CAM_TARGETING)
+      {
+        CamTargeting targeting;
+        ASSERT_EQ(unpackTargeting(item.message, targeting), UnpackError::NONE);
+        EXPECT_EQ(targeting.camera.stream_name, "main");
+        EXPECT_EQ(targeting.targeting_mode, 0);  // directional
+        EXPECT_FALSE(targeting.euler_delta);
+        EXPECT_NEAR(targeting.yaw, target[PAN], 1e-3);     // clockwise, as the contract's pan
+        EXPECT_NEAR(targeting.pitch, target[TILT], 1e-3);  // up positive, as the contract's tilt
+        ++targetings;
+      }
+      else if (item.message.param_type == ParamType::CAM_OPTICS_AND_CONTROL)
+      {
+        CamOpticsAndControl optics;
+        ASSERT_EQ(unpackOptics(item.message, optics), UnpackError::NONE);
+        EXPECT_NEAR(optics.fov, config_.digiview.fov_wide / target[ZOOM], 1e-3);
+        ++optics_seen;
+      }
+    }
+    EXPECT_EQ(targetings, 1u) << describe(commands);
+    EXPECT_EQ(optics_seen, 1u) << describe(commands);
+  }
+  /// A hold aims the view where it is: a SET CAM_TARGETING elsewhere than the goal's.
+  std::size_t holds(const std::vector<DeviceCommand>& commands, const AxisValues& target) const override
+  {
+    return static_cast<std::size_t>(std::count_if(commands.begin(), commands.end(), [&](const DeviceCommand& command) {
+      return command.kind == Kind::MOVE && command.aims && std::abs(command.pan - target[PAN]) > 1e-3;
+    }));
+  }
+
+private:
+  DigiViewEmulatorConfig emulator_config_;
+  std::unique_ptr<DigiViewEmulator> emulator_;
+  DigiViewConfig config_;
+};
+}  // namespace
+
+std::vector<FixtureMaker> networkDeviceFixtures()
+{
+  return {
+    { "PanTiltUdpV1_0", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireVersion::V1_0); } },
+    { "PanTiltUdpV1_1", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireVersion::V1_1); } },
+    { "DigiViewTcp", [] { return std::make_unique<DigiViewFixture>(LinkKind::TCP); } },
+    { "DigiViewUdp", [] { return std::make_unique<DigiViewFixture>(LinkKind::UDP); } },
+  };
+}
+
+}  // namespace ptz_action_server
