@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#include "ptz_action_server/core/byte_order.h"
 #include "ptz_action_server/core/digiview/digiview_codec.h"
 
 namespace ptz_action_server
@@ -36,15 +37,11 @@ public:
   }
   void u16(std::size_t at, std::uint16_t value)
   {
-    data_[at] = static_cast<std::uint8_t>(value);
-    data_[at + 1] = static_cast<std::uint8_t>(value >> 8);
+    putLittleEndian(&data_[at], value);
   }
   void u32(std::size_t at, std::uint32_t value)
   {
-    for (std::size_t index = 0; index < 4; ++index)
-    {
-      data_[at + index] = static_cast<std::uint8_t>(value >> (8 * index));
-    }
+    putLittleEndian(&data_[at], value);
   }
   void scaled32(std::size_t at, double value, double scale)
   {
@@ -90,16 +87,11 @@ public:
   }
   std::uint16_t u16(std::size_t at) const
   {
-    return static_cast<std::uint16_t>(data_[at] | (data_[at + 1] << 8));
+    return getLittleEndian<std::uint16_t>(&data_[at]);
   }
   std::uint32_t u32(std::size_t at) const
   {
-    std::uint32_t value = 0;
-    for (std::size_t index = 0; index < 4; ++index)
-    {
-      value |= static_cast<std::uint32_t>(data_[at + index]) << (8 * index);
-    }
-    return value;
+    return getLittleEndian<std::uint32_t>(&data_[at]);
   }
   std::int32_t i32(std::size_t at) const
   {

@@ -109,9 +109,7 @@ Message packSystemStatus(MessageType type, const SystemStatus& status)
   Payload payload(message.data);
   payload.u8(0, status.status);
   payload.u8(1, status.error);
-  std::uint32_t bits = 0;
-  std::memcpy(&bits, &status.jetson_temp, sizeof(bits));
-  payload.u32(2, bits);
+  payload.u32(2, floatBits(status.jetson_temp));
   return message;
 }
 
@@ -123,9 +121,7 @@ UnpackError unpackSystemStatus(const Message& message, SystemStatus& status)
     return UnpackError::BAD_DATA;
   }
   const Reader reader(message.data);
-  const std::uint32_t bits = reader.u32(2);
-  float temperature = 0.0f;
-  std::memcpy(&temperature, &bits, sizeof(temperature));
+  const float temperature = floatFromBits(reader.u32(2));
   if (reader.u8(0) > 3 || reader.u8(1) != 0 || !(temperature >= 0.0f && temperature <= 105.0f))
   {
     return UnpackError::BAD_DATA;

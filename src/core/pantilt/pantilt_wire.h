@@ -6,8 +6,8 @@
 #pragma once
 
 #include <cstdint>
-#include <cstring>
 
+#include "ptz_action_server/core/byte_order.h"
 #include "ptz_action_server/core/pantilt/pantilt_codec.h"
 
 namespace cr
@@ -25,36 +25,22 @@ inline std::uint8_t minorVersion(WireVersion version)
 
 inline void writeInt32(std::uint8_t* out, std::int32_t value)
 {
-  const auto bits = static_cast<std::uint32_t>(value);
-  for (int index = 0; index < 4; ++index)
-  {
-    out[index] = static_cast<std::uint8_t>(bits >> (8 * index));
-  }
+  ptz_action_server::putLittleEndian(out, static_cast<std::uint32_t>(value));
 }
 
 inline void writeFloat(std::uint8_t* out, float value)
 {
-  std::uint32_t bits = 0;
-  std::memcpy(&bits, &value, sizeof(bits));
-  writeInt32(out, static_cast<std::int32_t>(bits));
+  ptz_action_server::putLittleEndian(out, ptz_action_server::floatBits(value));
 }
 
 inline std::int32_t readInt32(const std::uint8_t* in)
 {
-  std::uint32_t bits = 0;
-  for (int index = 0; index < 4; ++index)
-  {
-    bits |= static_cast<std::uint32_t>(in[index]) << (8 * index);
-  }
-  return static_cast<std::int32_t>(bits);
+  return static_cast<std::int32_t>(ptz_action_server::getLittleEndian<std::uint32_t>(in));
 }
 
 inline float readFloat(const std::uint8_t* in)
 {
-  const auto bits = static_cast<std::uint32_t>(readInt32(in));
-  float value = 0.0f;
-  std::memcpy(&value, &bits, sizeof(value));
-  return value;
+  return ptz_action_server::floatFromBits(ptz_action_server::getLittleEndian<std::uint32_t>(in));
 }
 
 inline void writeHeader(std::uint8_t* data, std::uint8_t type, WireVersion version)
