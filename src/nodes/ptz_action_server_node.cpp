@@ -5,30 +5,10 @@
 #include <memory>
 #include <string>
 
-#include <pluginlib/class_loader.hpp>
 #include <ros/ros.h>
 
-#include "ptz_action_server/ros/backend_plugin.h"
+#include "ptz_action_server/ros/backend_loader.h"
 #include "ptz_action_server/ros/ptz_action_server.h"
-
-namespace
-{
-/// "sim" -> "ptz_action_server/sim"; a name with a package prefix is used as it is.
-std::string pluginName(const std::string& backend)
-{
-  return backend.find('/') == std::string::npos ? "ptz_action_server/" + backend : backend;
-}
-
-std::string knownBackends(pluginlib::ClassLoader<ptz_action_server::BackendPlugin>& loader)
-{
-  std::string names;
-  for (const std::string& name : loader.getDeclaredClasses())
-  {
-    names += (names.empty() ? "" : ", ") + name;
-  }
-  return names.empty() ? "(none)" : names;
-}
-}  // namespace
 
 int main(int argc, char** argv)
 {
@@ -37,9 +17,8 @@ int main(int argc, char** argv)
   ros::NodeHandle private_handle("~");
   using namespace ptz_action_server;
 
-  // The loader must outlive the plugin and the backend: their code lives in the plugin library.
-  pluginlib::ClassLoader<BackendPlugin> loader("ptz_action_server", "ptz_action_server::BackendPlugin");
-  boost::shared_ptr<BackendPlugin> plugin;
+  // The loader must outlive the backend: its code lives in the plugin library.
+  BackendLoader loader;
   std::shared_ptr<PtzBackend> backend;
   std::unique_ptr<PtzActionServer> server;
   try
@@ -54,24 +33,7 @@ int main(int argc, char** argv)
                         " is not set: load the URDF first (the launch file does)");
     }
     const PtzKinematics kinematics = PtzKinematics::fromUrdf(urdf, config.names);
-
-    const std::string name = pluginName(config.backend);
-    if (!loader.isClassAvailable(name))
-    {
-      throw ConfigError("unknown backend '" + config.backend + "'; known backends: " + knownBackends(loader));
-    }
-    try
-    {
-      plugin = loader.createInstance(name);
-    }
-    catch (const pluginlib::PluginlibException& error)
-    {
-      throw ConfigError("backend '" + name + "' could not be loaded: " + error.what());
-    }
-    BackendContext context;
-    context.urdf_limits = PtzActionServer::urdfLimits(kinematics);
-    const std::string backend_namespace = name.substr(name.find('/') + 1);
-    backend = plugin->create(params.child(backend_namespace), context);
+    backend = loader.load(config.backend, params, kinematics);
 
     server = std::make_unique<PtzActionServer>(node_handle, config, kinematics, backend);
     server->start();
@@ -90,6 +52,5 @@ int main(int argc, char** argv)
   ros::spin();
   server.reset();
   backend.reset();
-  plugin.reset();
   return 0;
 }

@@ -1,0 +1,162 @@
+#include "device_table.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace ptz_bench
+{
+namespace
+{
+using PortKind = ptz_action_server::DevicePortConfig::Kind;
+
+BenchParam value(const std::string& name, const XmlRpc::XmlRpcValue& value)
+{
+  return BenchParam{ name, value, BenchParam::Source::VALUE };
+}
+
+BenchParam emulatorPort(const std::string& name)
+{
+  return BenchParam{ name, XmlRpc::XmlRpcValue(), BenchParam::Source::EMULATOR_PORT };
+}
+
+BenchParam emulatorLink(const std::string& name)
+{
+  return BenchParam{ name, XmlRpc::XmlRpcValue(), BenchParam::Source::EMULATOR_LINK };
+}
+
+/// ~serial/... for \p protocol on the emulator's pseudo-terminal at \p baud, or over TCP (\p baud 0).
+std::vector<BenchParam> serialParams(const char* protocol, unsigned baud)
+{
+  if (baud == 0)
+  {
+    return { value("serial/protocol", protocol), value("serial/transport", "tcp"), value("serial/host", "127.0.0.1"),
+             emulatorPort("serial/tcp_port") };
+  }
+  return { value("serial/protocol", protocol), value("serial/transport", "serial"), emulatorLink("serial/port"),
+           value("serial/baud", static_cast<int>(baud)) };
+}
+
+DeviceRow serialRow(const char* protocol, unsigned baud)
+{
+  const PortKind kind = baud == 0 ? PortKind::TCP : PortKind::PTY;
+  DeviceRow row;
+  row.name = std::string(protocol) + (baud == 0 ? "_tcp" : "_serial_" + std::to_string(baud));
+  row.plugin = "serial";
+  row.params = serialParams(protocol, baud);
+  row.emulator = std::string(protocol) == "flir" ? flirEmulator(kind, baud) : pelcoEmulator(kind, baud);
+  row.goals = baud == 0 ? 1000 : 300;
+  return row;
+}
+
+/// A parameter's value as --list shows it: the emulator's, or YAML-like (strings that read as numbers quoted).
+std::string show(const BenchParam& param)
+{
+  switch (param.source)
+  {
+    case BenchParam::Source::EMULATOR_PORT:
+      return "(the emulator's port)";
+    case BenchParam::Source::EMULATOR_LINK:
+      return "(the emulator's pty link)";
+    case BenchParam::Source::VALUE:
+      break;
+  }
+  XmlRpc::XmlRpcValue copy = param.value;
+  if (copy.getType() == XmlRpc::XmlRpcValue::TypeString)
+  {
+    const std::string text = copy;
+    char* end = nullptr;
+    std::strtod(text.c_str(), &end);
+    return end != text.c_str() && *end == '\0' ? "\"" + text + "\"" : text;
+  }
+  if (copy.getType() == XmlRpc::XmlRpcValue::TypeInt)
+  {
+    return std::to_string(static_cast<int>(copy));
+  }
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", static_cast<double>(copy));
+  return text;
+}
+}  // namespace
+
+const std::vector<DeviceRow>& deviceTable()
+{
+  static const std::vector<DeviceRow> rows = [] {
+    std::vector<DeviceRow> table;
+    DeviceRow sim;
+    sim.name = "sim";
+    sim.plugin = "sim";
+    table.push_back(sim);
+
+    DeviceRow pantilt;
+    pantilt.name = "pantilt_udp";
+    pantilt.plugin = "pantilt_udp";
+    pantilt.params = { value("pantilt_udp/device_host", "127.0.0.1"), emulatorPort("pantilt_udp/device_port"),
+                       value("pantilt_udp/local_host", "127.0.0.1"), value("pantilt_udp/wire_version", "1.0") };
+    pantilt.emulator = panTiltEmulator();
+    table.push_back(pantilt);
+
+    DeviceRow digiview;
+    digiview.name = "digiview_tcp";
+    digiview.plugin = "digiview";
+    digiview.params = { value("digiview/transport", "tcp"), value("digiview/host", "127.0.0.1"),
+                        emulatorPort("digiview/port"), value("digiview/acceleration", 4.0) };
+    digiview.emulator = digiViewEmulator();
+    table.push_back(digiview);
+
+    for (const char* protocol : { "flir", "pelco_d" })
+    {
+      for (unsigned baud : { 9600u, 115200u, 0u })
+      {
+        table.push_back(serialRow(protocol, baud));
+      }
+    }
+    return table;
+  }();
+  return rows;
+}
+
+const DeviceRow* findDevice(const std::string& name)
+{
+  for (const DeviceRow& row : deviceTable())
+  {
+    if (row.name == name)
+    {
+      return &row;
+    }
+  }
+  return nullptr;
+}
+
+std::string deviceNames()
+{
+  std::string names;
+  for (const DeviceRow& row : deviceTable())
+  {
+    names += (names.empty() ? "" : ", ") + row.name;
+  }
+  return names;
+}
+
+void printDeviceTable()
+{
+  std::printf("| device | plugin | emulator | parameters under ~ | goal commands | stop | goals |\n"
+              "|---|---|---|---|---|---|---|\n");
+  for (const DeviceRow& row : deviceTable())
+  {
+    std::string params = "backend: " + row.plugin;
+    for (const BenchParam& param : row.params)
+    {
+      params += ", " + param.name + ": " + show(param);
+    }
+    const EmulatorSpec& emulator = row.emulator;
+    const bool emulated = static_cast<bool>(emulator.start);
+    std::printf("| %s | %s | %s | %s | %s | %s | %s |\n", row.name.c_str(), row.plugin.c_str(),
+                emulated ? emulator.summary.c_str() : "none (the backend is the simulation)", params.c_str(),
+                emulated ? emulator.goal_items.c_str() : "the backend's goTo / moveAtVelocity / stop calls",
+                emulated ? emulator.stop_items.c_str() : "the backend's stop() call",
+                emulated ? std::to_string(row.goals).c_str() : "-");
+  }
+  std::fflush(stdout);
+}
+
+}  // namespace ptz_bench

@@ -1,0 +1,94 @@
+/**
+ * \file
+ * \brief The devices ptz_bench measures, one row each: the plugin, its emulator, the parameters the node gets, and
+ * which of what the emulator receives count as goal commands and as the stop.
+ */
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <xmlrpcpp/XmlRpcValue.h>
+
+#include "ptz_action_server/core/types.h"
+#include "ptz_action_server/emulators/device_port.h"
+
+namespace ptz_bench
+{
+/// A command as it reached an emulator: when its last byte arrived, and its own time on the wire (s).
+struct Arrival
+{
+  ptz_action_server::TimePoint at;
+  double wire = 0.0;
+};
+
+/// An emulator running in the bench's process, as the device figures see it. Thread-safe.
+class EmulatedDevice
+{
+public:
+  virtual ~EmulatedDevice() = default;
+  /// Where the backend finds it: the UDP or TCP port (0 on a pseudo-terminal) ...
+  virtual std::uint16_t port() const = 0;
+  /// ... or the pseudo-terminal's link ("" on a socket).
+  virtual std::string link() const = 0;
+  /// Goal commands received so far, oldest first (polls, state requests and stops left out).
+  virtual std::vector<Arrival> goalCommands() const = 0;
+  /// Stop commands received so far, oldest first.
+  virtual std::vector<Arrival> stopCommands() const = 0;
+};
+
+/// How a row's emulator starts, and what the figures count of what it receives.
+struct EmulatorSpec
+{
+  std::string summary;        ///< what runs, for --list
+  std::string goal_items;     ///< which received items count as goal commands, and their wire time, for --list
+  std::string stop_items;     ///< which one is the stop, for --list
+  std::string goal_target;    ///< the target column of "goal -> first command"
+  std::string stop_target;    ///< the target column of "cancel -> stop"
+  double goal_pause = 0.002;  ///< s between goals, for a goal's remaining commands to go out before the next
+  /// Starts the emulator; \p row names its pseudo-terminal link, if it has one.
+  std::function<std::unique_ptr<EmulatedDevice>(const std::string& row)> start;
+};
+
+EmulatorSpec panTiltEmulator();
+EmulatorSpec digiViewEmulator();
+EmulatorSpec flirEmulator(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud);
+EmulatorSpec pelcoEmulator(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud);
+
+/// A parameter a row sets under the node's private namespace before the node starts.
+struct BenchParam
+{
+  enum class Source
+  {
+    VALUE,          ///< value as it is
+    EMULATOR_PORT,  ///< the running emulator's port (an int)
+    EMULATOR_LINK,  ///< the running emulator's pseudo-terminal link (a string)
+  };
+  std::string name;  ///< relative to the private namespace: "serial/protocol"
+  XmlRpc::XmlRpcValue value;
+  Source source = Source::VALUE;
+};
+
+/// One device ptz_bench measures.
+struct DeviceRow
+{
+  std::string name;                ///< --device NAME
+  std::string plugin;              ///< the node's ~backend
+  std::vector<BenchParam> params;  ///< under ~ (besides ~backend)
+  EmulatorSpec emulator;           ///< no start function: no emulator (the sim backend)
+  int goals = 1000;                ///< goals for "goal -> first command", unless --goals says otherwise
+};
+
+/// Every row, in the order bench/run runs them.
+const std::vector<DeviceRow>& deviceTable();
+/// The row called \p name, or nullptr.
+const DeviceRow* findDevice(const std::string& name);
+/// The names, comma-separated, for messages.
+std::string deviceNames();
+/// Prints the table as markdown (--list).
+void printDeviceTable();
+
+}  // namespace ptz_bench

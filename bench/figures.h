@@ -1,0 +1,28 @@
+/**
+ * \file
+ * \brief The figures ptz_bench measures: the sim backend's, and every emulated device's.
+ */
+#pragma once
+
+#include "bench_common.h"
+#include "bench_processes.h"
+#include "device_table.h"
+
+namespace ptz_bench
+{
+/**
+ * \brief Sim row: idle CPU, reach time against the closed-form minimum, zero-length goal -> result, goal -> first
+ * backend command, cancel -> backend stop(), then ptz_state (as the observer process sees it), goals and CPU under a
+ * storm of goals, and the node's peak RSS. Prints a table; returns 0, or 1 if the node did not come up.
+ */
+int runSimFigures(const BenchOptions& options, SharedCounters* counters, BenchProcesses& processes);
+
+/**
+ * \brief Device rows: goal -> first goal command at the emulator and cancel -> stop command at the emulator (their
+ * own wire time subtracted), and the ptz_state rate while a goal runs. Prints a table; returns 0, or 1 if the node
+ * did not come up.
+ */
+int runDeviceFigures(const DeviceRow& row, const EmulatedDevice& device, const BenchOptions& options,
+                     BenchProcesses& processes);
+
+}  // namespace ptz_bench

@@ -1,0 +1,267 @@
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <actionlib/client/action_client.h>
+#include <actionlib/client/simple_action_client.h>
+#include <ros/ros.h>
+
+#include "figures.h"
+#include "ptz_action_server/PtzAction.h"
+#include "ptz_action_server/core/motion_profile.h"
+#include "ptz_action_server/core/text.h"
+#include "ptz_action_server/ros/ptz_goal.h"
+
+namespace ptz_bench
+{
+namespace
+{
+using namespace ptz_action_server;
+using PtzClient = actionlib::SimpleActionClient<PtzAction>;
+
+struct CpuSample
+{
+  double cpu_seconds;
+  double wall_seconds;
+};
+
+/// CPU time of every thread of \p pid (from schedstat, in ns resolution) and the wall clock.
+CpuSample cpuOf(pid_t pid)
+{
+  double cpu_seconds = 0.0;
+  const std::string tasks = "/proc/" + std::to_string(pid) + "/task";
+  for (const auto& task : std::filesystem::directory_iterator(tasks))
+  {
+    std::ifstream file(task.path() / "schedstat");
+    double nanoseconds = 0.0;
+    if (file >> nanoseconds)
+    {
+      cpu_seconds += nanoseconds * 1e-9;
+    }
+  }
+  return { cpu_seconds, secondsBetween(TimePoint(), SteadyClock::now()) };
+}
+
+double cpuPercent(const CpuSample& from, const CpuSample& to)
+{
+  return 100.0 * (to.cpu_seconds - from.cpu_seconds) / (to.wall_seconds - from.wall_seconds);
+}
+
+long peakRssKilobytes(pid_t pid)
+{
+  std::ifstream file("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(file, line))
+  {
+    if (line.rfind("VmHWM:", 0) == 0)
+    {
+      return std::stol(line.substr(6));
+    }
+  }
+  return -1;
+}
+
+/// Waits up to \p timeout s for \p counter to pass \p before.
+bool waitForCount(const std::atomic<std::uint64_t>& counter, std::uint64_t before, double timeout)
+{
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(timeout);
+  while (counter <= before && ros::WallTime::now() < deadline)
+  {
+    std::this_thread::sleep_for(std::chrono::microseconds(100));
+  }
+  return counter > before;
+}
+
+/// Reach time of a 2 rad pan goal against the trapezoid's closed-form minimum.
+Row reachFigure(PtzClient& client)
+{
+  client.sendGoal(makePtzGoal(-1.0, 0.0, 1.0));
+  client.waitForResult(ros::Duration(10.0));
+  const double minimum = TrapezoidProfile::minimumDuration(2.0, AxisMotionLimits{ 1.5, 3.0, 0.0 });
+  std::vector<double> ratios;
+  for (int run = 0; run < 6; ++run)
+  {
+    const double target = run % 2 == 0 ? 1.0 : -1.0;
+    const ros::WallTime sent = ros::WallTime::now();
+    client.sendGoal(makePtzGoal(target, 0.0, 1.0));
+    client.waitForResult(ros::Duration(10.0));
+    ratios.push_back((ros::WallTime::now() - sent).toSec() / minimum);
+  }
+  return { "2 rad goal: reach time / closed-form minimum",
+           formatText("%.3f mean, %.3f max (minimum %.3f s)",
+                      std::accumulate(ratios.begin(), ratios.end(), 0.0) / ratios.size(),
+                      *std::max_element(ratios.begin(), ratios.end()), minimum),
+           "<= 1.10" };
+}
+
+/// Zero-length goals: goal -> result, and goal -> first backend command.
+void zeroGoalFigures(PtzClient& client, SharedCounters* counters, int zero_goals, std::vector<Row>& rows)
+{
+  std::vector<double> result_ms;
+  std::vector<double> command_ms;
+  int zero_failed = 0;
+  for (int index = 0; index < zero_goals; ++index)
+  {
+    const std::uint64_t commands_before = counters->commands;
+    const std::int64_t sent_ns = monotonicNanoseconds();
+    client.sendGoal(makePtzGoal(-1.0, 0.0, 1.0));
+    client.waitForResult(ros::Duration(5.0));
+    const std::int64_t done_ns = monotonicNanoseconds();
+    if (client.getState() != actionlib::SimpleClientGoalState::SUCCEEDED)
+    {
+      ++zero_failed;
+      continue;
+    }
+    result_ms.push_back((done_ns - sent_ns) / 1e6);
+    if (counters->commands > commands_before)
+    {
+      command_ms.push_back((counters->last_command_ns - sent_ns) / 1e6);
+    }
+  }
+  rows.push_back(
+      { "zero-length goal -> result",
+        formatText("%s (%d goals, %d not succeeded)", percentiles(result_ms).c_str(), zero_goals, zero_failed),
+        "p99 <= 5 ms" });
+  rows.push_back({ "goal -> first backend command", percentiles(command_ms), "" });
+}
+
+/// Cancel -> the backend's stop(), over \p cancels goals each cancelled 0 to 90 ms after its first command (and
+/// after the client saw it accepted).
+Row cancelFigure(PtzClient& client, SharedCounters* counters, int cancels)
+{
+  std::vector<double> stop_ms;
+  for (int index = 0; index < cancels; ++index)
+  {
+    const std::uint64_t commands_before = counters->commands;
+    client.sendGoal(makePtzGoal(index % 2 == 0 ? 0.6 : -0.6, 0.0, 1.0));
+    waitForCount(counters->commands, commands_before, 1.0);
+    // A cancel the client sends before it has seen the goal accepted may end the goal LOST (actionlib).
+    const ros::WallTime accepted_deadline = ros::WallTime::now() + ros::WallDuration(1.0);
+    while (client.getState() == actionlib::SimpleClientGoalState::PENDING && ros::WallTime::now() < accepted_deadline)
+    {
+      ros::WallDuration(0.0005).sleep();
+    }
+    ros::WallDuration(0.01 * (index % 10)).sleep();
+    const std::uint64_t stops_before = counters->stops;
+    const std::int64_t cancelled_ns = monotonicNanoseconds();
+    client.cancelGoal();
+    if (waitForCount(counters->stops, stops_before, 2.0))
+    {
+      stop_ms.push_back((counters->last_stop_ns - cancelled_ns) / 1e6);
+    }
+    client.waitForResult(ros::Duration(10.0));
+  }
+  return { "cancel -> backend stop()",
+           formatText("%s (%zu of %d cancels)", percentiles(stop_ms).c_str(), stop_ms.size(), cancels), "" };
+}
+
+/// The storm: 4 clients at ~50 Hz each for \p seconds, while the observer process times ptz_state arrivals.
+void stormFigures(ros::NodeHandle& node_handle, SharedCounters* counters, pid_t node, double seconds,
+                  std::vector<Row>& rows)
+{
+  std::atomic<bool> storming{ true };
+  counters->state_count = 0;
+  counters->record_states = true;
+  std::vector<std::thread> threads;
+  std::atomic<int> goals_sent{ 0 };
+  std::atomic<int> goals_done{ 0 };
+  const CpuSample storm_start = cpuOf(node);
+  const CpuSample clients_start = cpuOf(getpid());
+  for (int index = 0; index < 4; ++index)
+  {
+    threads.emplace_back([&, index]() {
+      actionlib::ActionClient<PtzAction> storm_client(node_handle, "move_ptz/position_abs");
+      storm_client.waitForActionServerToStart(ros::Duration(10.0));
+      std::vector<actionlib::ClientGoalHandle<PtzAction>> handles;
+      ros::WallRate rate(50.0);
+      int round = 0;
+      while (storming)
+      {
+        handles.push_back(storm_client.sendGoal(makePtzGoal(0.5 * std::sin(0.05 * round + index), 0.1 * index, 1.0)));
+        ++goals_sent;
+        ++round;
+        rate.sleep();
+      }
+      const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(10.0);
+      for (auto& handle : handles)
+      {
+        while (handle.getCommState() != actionlib::CommState::DONE && ros::WallTime::now() < deadline)
+        {
+          ros::WallDuration(0.01).sleep();
+        }
+        goals_done += handle.getCommState() == actionlib::CommState::DONE;
+      }
+    });
+  }
+  ros::WallDuration(seconds).sleep();
+  const CpuSample storm_end = cpuOf(node);
+  const CpuSample clients_end = cpuOf(getpid());
+  counters->record_states = false;
+  storming = false;
+  for (std::thread& thread : threads)
+  {
+    thread.join();
+  }
+  std::vector<double> intervals_ms;
+  const std::size_t arrivals = std::min<std::size_t>(counters->state_count, MAX_STATE_ARRIVALS);
+  for (std::size_t index = 1; index < arrivals; ++index)
+  {
+    intervals_ms.push_back((counters->state_arrivals_ns[index] - counters->state_arrivals_ns[index - 1]) / 1e6);
+  }
+  const double rate_hz =
+      arrivals > 1 ?
+          (arrivals - 1) / ((counters->state_arrivals_ns[arrivals - 1] - counters->state_arrivals_ns[0]) / 1e9) :
+          0.0;
+  rows.push_back({ "ptz_state rate under the storm", formatText("%.3f Hz", rate_hz), "10 Hz +- 2 %" });
+  rows.push_back({ "ptz_state interval under the storm",
+                   formatText("p50 %.1f ms, p99 %.1f ms, max %.1f ms", percentile(intervals_ms, 0.5),
+                              percentile(intervals_ms, 0.99), percentile(intervals_ms, 1.0)),
+                   "p99 <= 120 ms" });
+  rows.push_back(
+      { "storm goals (4 clients x ~50 Hz)",
+        formatText("%d sent, %d ended (%.0f goals/s)", goals_sent.load(), goals_done.load(), goals_sent / seconds),
+        "none lost" });
+  rows.push_back({ "node CPU under the storm", formatText("%.1f %%", cpuPercent(storm_start, storm_end)), "" });
+  rows.push_back(
+      { "client process CPU under the storm", formatText("%.1f %%", cpuPercent(clients_start, clients_end)), "" });
+}
+}  // namespace
+
+int runSimFigures(const BenchOptions& options, SharedCounters* counters, BenchProcesses& processes)
+{
+  ros::NodeHandle node_handle(NODE_NAMESPACE);
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  PtzClient client(node_handle, "move_ptz/position_abs", true);
+  if (!waitForNode(processes, [&client] { return client.waitForServer(ros::Duration(0.5)); }))
+  {
+    return 1;
+  }
+  const pid_t node = processes.node();
+  std::vector<Row> rows;
+
+  // Idle CPU: nothing but the 10 Hz state.
+  ros::WallDuration(1.0).sleep();
+  const CpuSample idle_start = cpuOf(node);
+  ros::WallDuration(options.idle_seconds).sleep();
+  rows.push_back({ formatText("node CPU, idle (%g s)", options.idle_seconds),
+                   formatText("%.2f %%", cpuPercent(idle_start, cpuOf(node))), "<= 1 %" });
+
+  rows.push_back(reachFigure(client));
+  zeroGoalFigures(client, counters, options.zero_goals, rows);
+  rows.push_back(cancelFigure(client, counters, options.cancels));
+  stormFigures(node_handle, counters, node, options.storm_seconds, rows);
+  rows.push_back({ "node peak RSS", formatText("%.1f MB", peakRssKilobytes(node) / 1024.0), "" });
+  printTable("sim (sim backend)", rows);
+  return 0;
+}
+
+}  // namespace ptz_bench
