@@ -16,8 +16,7 @@
 #include <ros/ros.h>
 
 #include "ptz_action_server/PtzState.h"
-#include "ptz_action_server/ros/backend_loader.h"
-#include "ptz_action_server/ros/ptz_action_server.h"
+#include "ptz_action_server/ros/ptz_node.h"
 
 namespace ptz_bench
 {
@@ -96,25 +95,14 @@ private:
 int runNode(SharedCounters* counters)
 {
   ros::init(ros::M_string{ { "__ns", NODE_NAMESPACE } }, NODE_NAME);
-  ros::NodeHandle node_handle;
-  ros::NodeHandle private_handle("~");
-  // The loader must outlive the backend: its code lives in the plugin library.
-  BackendLoader loader;
-  std::shared_ptr<PtzBackend> backend;
-  std::unique_ptr<PtzActionServer> server;
+  const ros::NodeHandle node_handle;  // held: roscpp shuts down when the last node handle goes
+  const ros::NodeHandle private_handle("~");
+  PtzNode node;
   try
   {
-    const ParamReader params(private_handle);
-    const NodeConfig config = NodeConfig::load(params);
-    std::string urdf;
-    if (!node_handle.getParam("robot_description", urdf))
-    {
-      throw ConfigError("parameter " + node_handle.resolveName("robot_description") + " is not set");
-    }
-    const PtzKinematics kinematics = PtzKinematics::fromUrdf(urdf, config.names);
-    backend = std::make_shared<RecordingBackend>(loader.load(config.backend, params, kinematics), counters);
-    server = std::make_unique<PtzActionServer>(node_handle, config, kinematics, backend);
-    server->start();
+    node.start(node_handle, private_handle, [counters](std::shared_ptr<PtzBackend> backend) {
+      return std::make_shared<RecordingBackend>(std::move(backend), counters);
+    });
   }
   catch (const std::exception& error)
   {
@@ -122,8 +110,6 @@ int runNode(SharedCounters* counters)
     return 1;
   }
   ros::spin();
-  server.reset();
-  backend.reset();
   return 0;
 }
 

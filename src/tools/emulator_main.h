@@ -139,6 +139,23 @@ inline void parseArguments(int argc, char** argv, const char* program, const std
   }
 }
 
+/// Takes \p arg if it is a fault option every emulator has (--silent, --silent-after S).
+inline bool parseFaultOption(const std::string& arg, const Value& value, const char* program, const char* usage,
+                             bool& silent, Schedule& schedule)
+{
+  if (arg == "--silent")
+  {
+    silent = true;
+    return true;
+  }
+  if (arg == "--silent-after")
+  {
+    schedule.silent_after = number(program, value(), arg, usage);
+    return true;
+  }
+  return false;
+}
+
 /// Options every serial emulator takes.
 struct SerialOptions
 {
@@ -176,6 +193,10 @@ inline std::string serialUsage(const char* own, const char* default_link)
 inline bool parseSerialOption(const std::string& arg, const Value& value, const char* program, const char* usage,
                               SerialOptions& options)
 {
+  if (parseFaultOption(arg, value, program, usage, options.silent, options.schedule))
+  {
+    return true;
+  }
   auto number = [&]() { return emulator_main::number(program, value(), arg, usage); };
   if (arg == "--link")
   {
@@ -202,14 +223,6 @@ inline bool parseSerialOption(const std::string& arg, const Value& value, const 
   else if (arg == "--host")
   {
     options.port.host = value();
-  }
-  else if (arg == "--silent")
-  {
-    options.silent = true;
-  }
-  else if (arg == "--silent-after")
-  {
-    options.schedule.silent_after = number();
   }
   else if (arg == "--garble")
   {

@@ -71,15 +71,7 @@ int main(int argc, char** argv)
         {
           delay = number();
         }
-        else if (arg == "--silent")
-        {
-          silent = true;
-        }
-        else if (arg == "--silent-after")
-        {
-          schedule.silent_after = number();
-        }
-        else
+        else if (!emulator_main::parseFaultOption(arg, value, PROGRAM, USAGE, silent, schedule))
         {
           return false;
         }

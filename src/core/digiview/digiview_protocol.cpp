@@ -348,10 +348,7 @@ void DigiViewProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 
 std::unique_ptr<DeviceBackend> makeDigiViewBackend(const DigiViewConfig& config, std::shared_ptr<const Clock> clock)
 {
-  return std::make_unique<DeviceBackend>(
-      config.link, config.session,
-      [&config](DeviceSession& session) { return std::make_unique<DigiViewProtocol>(config.digiview, session); },
-      std::move(clock));
+  return makeDeviceBackend<DigiViewProtocol>(config.link, config.session, config.digiview, std::move(clock));
 }
 
 }  // namespace ptz_action_server

@@ -257,10 +257,7 @@ void FlirProtocol::onTimeout(const TransactionChannel::Request& lost)
 
 std::unique_ptr<DeviceBackend> makeFlirBackend(const FlirConfig& config, std::shared_ptr<const Clock> clock)
 {
-  return std::make_unique<DeviceBackend>(
-      config.link, config.session,
-      [&config](DeviceSession& session) { return std::make_unique<FlirProtocol>(config.flir, session); },
-      std::move(clock));
+  return makeDeviceBackend<FlirProtocol>(config.link, config.session, config.flir, std::move(clock));
 }
 
 }  // namespace ptz_action_server

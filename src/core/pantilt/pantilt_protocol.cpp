@@ -184,10 +184,7 @@ void PanTiltProtocol::sendStateRequest()
 
 std::unique_ptr<DeviceBackend> makePanTiltBackend(const PanTiltConfig& config, std::shared_ptr<const Clock> clock)
 {
-  return std::make_unique<DeviceBackend>(
-      config.link, config.session,
-      [&config](DeviceSession& session) { return std::make_unique<PanTiltProtocol>(config.pantilt, session); },
-      std::move(clock));
+  return makeDeviceBackend<PanTiltProtocol>(config.link, config.session, config.pantilt, std::move(clock));
 }
 
 }  // namespace ptz_action_server

@@ -232,10 +232,7 @@ void PelcoProtocol::handle(const pelco::FrameParser::Event& event)
 
 std::unique_ptr<DeviceBackend> makePelcoBackend(const PelcoConfig& config, std::shared_ptr<const Clock> clock)
 {
-  return std::make_unique<DeviceBackend>(
-      config.link, config.session,
-      [&config](DeviceSession& session) { return std::make_unique<PelcoProtocol>(config.pelco, session); },
-      std::move(clock));
+  return makeDeviceBackend<PelcoProtocol>(config.link, config.session, config.pelco, std::move(clock));
 }
 
 }  // namespace ptz_action_server

@@ -78,4 +78,14 @@ private:
   std::unique_ptr<DeviceProtocol> protocol_;  ///< after session_: destroyed first, while the session's context lives
 };
 
+/// A DeviceBackend running \p Protocol (constructed from \p settings and the session) on \p link.
+template <class Protocol, class Settings>
+std::unique_ptr<DeviceBackend> makeDeviceBackend(const LinkConfig& link, const DeviceSessionConfig& session,
+                                                 const Settings& settings, std::shared_ptr<const Clock> clock)
+{
+  return std::make_unique<DeviceBackend>(
+      link, session, [&settings](DeviceSession& owner) { return std::make_unique<Protocol>(settings, owner); },
+      std::move(clock));
+}
+
 }  // namespace ptz_action_server

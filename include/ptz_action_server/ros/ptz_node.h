@@ -1,0 +1,43 @@
+/**
+ * \file
+ * \brief The node as main() builds it, and as the benchmark does: settings, URDF, backend plugin, action server.
+ */
+#pragma once
+
+#include <functional>
+#include <memory>
+
+#include <ros/node_handle.h>
+
+#include "ptz_action_server/ros/backend_loader.h"
+#include "ptz_action_server/ros/ptz_action_server.h"
+
+namespace ptz_action_server
+{
+/**
+ * \brief Owns what a running ptz_action_server is made of, in the order it must go: the server, the backend, then
+ * the plugin library the backend's code lives in.
+ */
+class PtzNode
+{
+public:
+  /// Lets a caller wrap the loaded backend (the benchmark stamps every command).
+  using BackendWrapper = std::function<std::shared_ptr<PtzBackend>(std::shared_ptr<PtzBackend>)>;
+
+  PtzNode() = default;
+  ~PtzNode();
+  PtzNode(const PtzNode&) = delete;
+  PtzNode& operator=(const PtzNode&) = delete;
+
+  /// Reads the node's parameters (\p private_handle) and the URDF (robot_description in \p node_handle's
+  /// namespace), loads and starts the backend, then the actions. Throws ConfigError or BackendError with the reason.
+  void start(const ros::NodeHandle& node_handle, const ros::NodeHandle& private_handle,
+             const BackendWrapper& wrap = BackendWrapper());
+
+private:
+  BackendLoader loader_;  ///< first: destroyed last
+  std::shared_ptr<PtzBackend> backend_;
+  std::unique_ptr<PtzActionServer> server_;
+};
+
+}  // namespace ptz_action_server
