@@ -139,6 +139,23 @@ inline void parseArguments(int argc, char** argv, const char* program, const std
   }
 }
 
+/// Takes \p arg if it says where a network emulator listens (--host HOST, --port PORT).
+inline bool parseListenOption(const std::string& arg, const Value& value, const char* program, const char* usage,
+                              std::string& host, std::uint16_t& port)
+{
+  if (arg == "--host")
+  {
+    host = value();
+    return true;
+  }
+  if (arg == "--port")
+  {
+    port = static_cast<std::uint16_t>(numberIn(program, value(), arg, 0, 65535, usage));
+    return true;
+  }
+  return false;
+}
+
 /// Takes \p arg if it is a fault option every emulator has (--silent, --silent-after S).
 inline bool parseFaultOption(const std::string& arg, const Value& value, const char* program, const char* usage,
                              bool& silent, Schedule& schedule)

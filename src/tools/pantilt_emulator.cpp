@@ -44,15 +44,11 @@ int main(int argc, char** argv)
   emulator_main::parseArguments(
       argc, argv, PROGRAM, USAGE, [&](const std::string& arg, const emulator_main::Value& value) {
         auto number = [&]() { return emulator_main::number(PROGRAM, value(), arg, USAGE); };
-        if (arg == "--host")
+        if (emulator_main::parseListenOption(arg, value, PROGRAM, USAGE, config.host, config.port))
         {
-          config.host = value();
+          return true;
         }
-        else if (arg == "--port")
-        {
-          config.port = static_cast<std::uint16_t>(emulator_main::numberIn(PROGRAM, value(), arg, 0, 65535, USAGE));
-        }
-        else if (arg == "--version")
+        if (arg == "--version")
         {
           if (!cr::pantilt::parseWireVersion(value(), config.version))
           {
