@@ -33,19 +33,20 @@ protected:
 
   void startRead() override
   {
-    stream_.async_read_some(boost::asio::buffer(buffer_),
-                            [this, connection = connection()](const boost::system::error_code& error, std::size_t size) {
-                              if (connection != this->connection())
-                              {
-                                return;  // an earlier connection's completion
-                              }
-                              if (error)
-                              {
-                                lost(readFailure(error));
-                                return;
-                              }
-                              received(buffer_.data(), size);
-                            });
+    stream_.async_read_some(
+        boost::asio::buffer(buffer_),
+        [this, connection = connection()](const boost::system::error_code& error, std::size_t size) {
+          if (connection != this->connection())
+          {
+            return;  // an earlier connection's completion
+          }
+          if (error)
+          {
+            lost(readFailure(error));
+            return;
+          }
+          received(buffer_.data(), size);
+        });
   }
 
   void startWrite(const std::vector<std::uint8_t>& bytes) override
