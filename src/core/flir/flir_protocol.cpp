@@ -179,6 +179,9 @@ void FlirProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
   addCounts(values, { { "replies", counters_.replies },
                       { "device errors", counters_.errors },
                       { "limit hits", counters_.limit_hits },
+                      { "banner lines", counters_.banner_lines },
+                      { "restarts", counters_.restarts },
+                      { "unusable replies", counters_.unusable_replies },
                       { "unexpected text lines", counters_.unexpected_text } });
   channel_.diagnostics(values);
 }
