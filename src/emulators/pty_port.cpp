@@ -160,6 +160,12 @@ void PtyPort::send(const std::uint8_t* data, std::size_t size)
     {
       return;
     }
+    if (!clientPresentLocked())
+    {
+      // Nobody listens: a line drops them, whereas the terminal would keep them for the next opener.
+      bytes_lost_ += size;
+      return;
+    }
     // Each byte reaches the client once its ten bits have crossed the line.
     const double byte_time = byteTime();
     for (std::size_t index = 0; index < size; ++index)

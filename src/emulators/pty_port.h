@@ -21,10 +21,10 @@ namespace ptz_action_server
  * \brief A pseudo-terminal whose other end behaves like a serial line at \p baud. Owns its I/O thread.
  *
  * Received bytes reach the handler when the last of them would have arrived over the wire; sent bytes leave at
- * the line's pace. As on a real line, bytes that leave while no client has the port open are lost (a pseudo-terminal
- * would keep them for the next opener), and so is what a client had not read when it closed the port. Faults:
- * silent (input ignored, nothing sent), garbled output bytes, unplug (the port closes and the link disappears) and
- * replug (a new pseudo-terminal under the same link).
+ * the line's pace. As on a real line, bytes sent or leaving while no client has the port open are lost (a
+ * pseudo-terminal would keep them for the next opener), and so is what a client had not read when it closed the port.
+ * Faults: silent (input ignored, nothing sent), garbled output bytes, unplug (the port closes and the link disappears)
+ * and replug (a new pseudo-terminal under the same link).
  */
 class PtyPort : public DevicePort
 {
@@ -41,7 +41,7 @@ public:
   {
     return 10.0 / config_.baud;
   }
-  /// Queues bytes to send, paced. Any thread.
+  /// Queues bytes to send, paced; drops them if no client has the port open. Any thread.
   void send(const std::uint8_t* data, std::size_t size) override;
   /// Closes the port and removes the link.
   void unplug() override;
