@@ -42,7 +42,8 @@ DigiViewEmulator::DigiViewEmulator(const DigiViewEmulatorConfig& config)
   {
     for (std::size_t cam = 0; cam < viewsOf(config.layout_mode).size(); ++cam)
     {
-      models_.emplace(std::make_pair(stream, static_cast<std::uint8_t>(cam)), SimDeviceModel(model, SteadyClock::now()));
+      models_.emplace(std::make_pair(stream, static_cast<std::uint8_t>(cam)),
+                      SimDeviceModel(model, SteadyClock::now()));
     }
   }
   const auto address = boost::asio::ip::make_address(config.host);

@@ -21,7 +21,6 @@ PtzSample DigiViewEmulator::view(const std::string& stream, std::uint8_t cam_id)
   return models_.at(std::make_pair(stream, cam_id)).sample(SteadyClock::now());
 }
 
-
 SimDeviceModel* DigiViewEmulator::model(const CameraId& camera)
 {
   const auto found = models_.find(std::make_pair(camera.stream_name, camera.cam_id));

@@ -1,8 +1,8 @@
 /**
  * \file
  * \brief Private to DigiViewEmulator, what its two halves share: the sessions and their subscriptions, and the
- * views' field-of-view range and their boxes in each layout. digiview_emulator.cpp is the server (connections, sessions, subscriptions),
- * digiview_emulator_answers.cpp what the emulated DigiView answers to each message.
+ * views' field-of-view range and their boxes in each layout. digiview_emulator.cpp is the server (connections,
+ * sessions, subscriptions), digiview_emulator_answers.cpp what the emulated DigiView answers to each message.
  */
 #pragma once
 

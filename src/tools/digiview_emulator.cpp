@@ -61,8 +61,8 @@ int main(int argc, char** argv)
         }
         else if (arg == "--format")
         {
-          ptz_action_server::digiview::parseFormat(emulator_main::choice(PROGRAM, value(), arg, { "0.5", "1.0" }, USAGE),
-                                                   config.wire.format);
+          ptz_action_server::digiview::parseFormat(
+              emulator_main::choice(PROGRAM, value(), arg, { "0.5", "1.0" }, USAGE), config.wire.format);
         }
         else if (arg == "--checksum")
         {

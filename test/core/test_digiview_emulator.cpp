@@ -140,8 +140,9 @@ TEST_P(DigiViewEmulatorAnswers, DescribesTheStreamAsThePublishedPackerDoes)
 {
   const Format format = GetParam();
   VideoOutput output;
-  ASSERT_EQ(unpackVideoOutput(exchange(packGet(format, digiview::ParamType::VIDEO_OUTPUT, CameraId{ "main", 0 })), output),
-            UnpackError::NONE);
+  ASSERT_EQ(
+      unpackVideoOutput(exchange(packGet(format, digiview::ParamType::VIDEO_OUTPUT, CameraId{ "main", 0 })), output),
+      UnpackError::NONE);
   EXPECT_EQ(output.layout_mode, 4);
   EXPECT_EQ(output.num_user_views, 4);
   EXPECT_EQ(last_[layout().data_offset + 15], 4);  // its own byte
@@ -151,8 +152,9 @@ TEST_P(DigiViewEmulatorAnswers, DescribesTheStreamAsThePublishedPackerDoes)
   DigiViewEmulatorConfig config;
   config.layout_mode = 3;  // two on top, one below
   start(config);
-  ASSERT_EQ(unpackVideoOutput(exchange(packGet(format, digiview::ParamType::VIDEO_OUTPUT, CameraId{ "main", 0 })), output),
-            UnpackError::NONE);
+  ASSERT_EQ(
+      unpackVideoOutput(exchange(packGet(format, digiview::ParamType::VIDEO_OUTPUT, CameraId{ "main", 0 })), output),
+      UnpackError::NONE);
   EXPECT_EQ(output.num_user_views, 3);
   EXPECT_EQ(output.views[2].w, 1920);
   SystemStatus status;

@@ -74,7 +74,7 @@ struct Golden
 
 template <class Payload>
 std::function<UnpackError(const Message&, Message&)> rereading(UnpackError (*unpack)(const Message&, Payload&),
-                                                              Message (*pack)(Format, MessageType, const Payload&))
+                                                               Message (*pack)(Format, MessageType, const Payload&))
 {
   return [unpack, pack](const Message& message, Message& again) {
     Payload payload;
@@ -111,20 +111,17 @@ const std::vector<Golden>& goldens()
       [](Format format) {
         return packOptics(format, MessageType::SET_PARAMETERS, CamOpticsAndControl{ MAIN_1, 0, 0.6, 1 });
       },
-      optics,
-      SET_CAM_OPTICS },
-    { "GET CAM_TARGETING", [](Format format) { return packGet(format, digiview::ParamType::CAM_TARGETING, MAIN_1); }, get,
-      GET_CAM_TARGETING },
+      optics, SET_CAM_OPTICS },
+    { "GET CAM_TARGETING", [](Format format) { return packGet(format, digiview::ParamType::CAM_TARGETING, MAIN_1); },
+      get, GET_CAM_TARGETING },
     { "CURRENT SYSTEM_STATUS",
       [](Format format) {
         return packSystemStatus(format, MessageType::CURRENT_PARAMETERS, SystemStatus{ 1, 0, 45.5 });
       },
-      status,
-      CURRENT_SYSTEM_STATUS },
+      status, CURRENT_SYSTEM_STATUS },
     { "CURRENT VIDEO_OUTPUT",
       [](Format format) { return packVideoOutput(format, MessageType::CURRENT_PARAMETERS, goldenVideoOutput()); },
-      output,
-      CURRENT_VIDEO_OUTPUT },
+      output, CURRENT_VIDEO_OUTPUT },
     { "SET VIDEO_OUTPUT",
       [](Format format) {
         VideoOutput output;
@@ -135,14 +132,12 @@ const std::vector<Golden>& goldens()
         output.layout_mode = 1;
         return packVideoOutput(format, MessageType::SET_PARAMETERS, output);
       },
-      output,
-      SET_VIDEO_OUTPUT },
-    { "QUIT", [](Format format) { return packBare(format, MessageType::QUIT, digiview::ParamType::SYSTEM_STATUS); }, rereadBare,
-      QUIT },
+      output, SET_VIDEO_OUTPUT },
+    { "QUIT", [](Format format) { return packBare(format, MessageType::QUIT, digiview::ParamType::SYSTEM_STATUS); },
+      rereadBare, QUIT },
     { "ACKNOWLEDGEMENT",
       [](Format format) { return packBare(format, MessageType::ACKNOWLEDGEMENT, digiview::ParamType::CAM_TARGETING); },
-      rereadBare,
-      ACKNOWLEDGEMENT },
+      rereadBare, ACKNOWLEDGEMENT },
   };
   return GOLDENS;
 }
@@ -262,11 +257,11 @@ INSTANTIATE_TEST_SUITE_P(Formats, DigiViewGoldens, ::testing::Values(Format::V0_
 TEST(DigiViewGoldenExtras, FormatSpecificFrames)
 {
   // 1.0: a GET with interval_ms @12 in the header subscribes.
-  EXPECT_EQ(toHex(packInterval(Format::V1_0, IntervalRequest{ digiview::ParamType::CAM_TARGETING, MAIN_1, 100 }).pack()),
-            GET_CAM_TARGETING_EVERY_100_MS_V1_0);
+  EXPECT_EQ(
+      toHex(packInterval(Format::V1_0, IntervalRequest{ digiview::ParamType::CAM_TARGETING, MAIN_1, 100 }).pack()),
+      GET_CAM_TARGETING_EVERY_100_MS_V1_0);
   // The first 0.5 revision's SYSTEM_STATUS had no temperature: its zeros read as 0 degrees.
-  const Bytes old_status = fromHex(
-      CURRENT_SYSTEM_STATUS_WITHOUT_TEMPERATURE_V0_5);
+  const Bytes old_status = fromHex(CURRENT_SYSTEM_STATUS_WITHOUT_TEMPERATURE_V0_5);
   EXPECT_EQ(toHex(packSystemStatus(Format::V0_5, MessageType::CURRENT_PARAMETERS, SystemStatus{ 1, 0, 0.0 }).pack()),
             toHex(old_status));
   Message message;
@@ -276,8 +271,8 @@ TEST(DigiViewGoldenExtras, FormatSpecificFrames)
   EXPECT_EQ(status.status, 1);
   EXPECT_EQ(status.jetson_temp, 0.0);
   // Truncated toward zero: fov 1.2345 -> 1234, zoom -5.
-  const Message optics =
-      packOptics(Format::V1_0, MessageType::SET_PARAMETERS, CamOpticsAndControl{ CameraId{ "main", 0 }, -5, 1.2345, 2 });
+  const Message optics = packOptics(Format::V1_0, MessageType::SET_PARAMETERS,
+                                    CamOpticsAndControl{ CameraId{ "main", 0 }, -5, 1.2345, 2 });
   EXPECT_EQ(toHex(Bytes(optics.data.begin(), optics.data.begin() + 15)), "6D61696E0000000000FBD204000002");
 }
 
@@ -291,10 +286,12 @@ TEST(DigiViewGoldenExtras, TheFormatsAreToldApartByLengthAndTheirTypeNumbers)
   EXPECT_EQ(Message::unpack(v1_0.data(), v1_0.size(), Wire{ Format::V0_5 }, message), UnpackError::BAD_SIZE);
   // Wire values: 0.5 as the seed; 1.0 has no GET_INTERVAL and every reply one lower.
   const std::vector<std::pair<MessageType, int>> v1_0_values = {
-    { MessageType::EMPTY, 0 },          { MessageType::GET_PARAMETERS, 1 }, { MessageType::SET_PARAMETERS, 2 },
-    { MessageType::CURRENT_PARAMETERS, 3 }, { MessageType::GET_INTERVAL, -1 }, { MessageType::ACKNOWLEDGEMENT, 4 },
-    { MessageType::CHECKSUM_ERROR, 5 }, { MessageType::DATA_ERROR, 6 },     { MessageType::FORBIDDEN, 7 },
-    { MessageType::UNKNOWN, 8 },        { MessageType::QUIT, 255 },
+    { MessageType::EMPTY, 0 },          { MessageType::GET_PARAMETERS, 1 },
+    { MessageType::SET_PARAMETERS, 2 }, { MessageType::CURRENT_PARAMETERS, 3 },
+    { MessageType::GET_INTERVAL, -1 },  { MessageType::ACKNOWLEDGEMENT, 4 },
+    { MessageType::CHECKSUM_ERROR, 5 }, { MessageType::DATA_ERROR, 6 },
+    { MessageType::FORBIDDEN, 7 },      { MessageType::UNKNOWN, 8 },
+    { MessageType::QUIT, 255 },
   };
   for (const auto& [type, value] : v1_0_values)
   {

@@ -138,18 +138,19 @@ TEST_P(DigiViewMessages, HeaderChecksumAndTruncatedFields)
 
 TEST_P(DigiViewMessages, WhereEachFormatPutsTheSubscriptionInterval)
 {
-  const Bytes interval = packInterval(format(), IntervalRequest{ digiview::ParamType::CAM_TARGETING, mainCamera(1), 250 }).pack();
+  const Bytes interval =
+      packInterval(format(), IntervalRequest{ digiview::ParamType::CAM_TARGETING, mainCamera(1), 250 }).pack();
   EXPECT_EQ(interval[10], 7);
   if (format() == Format::V0_5)
   {
-    EXPECT_EQ(interval[9], 4);                        // GET_INTERVAL
-    EXPECT_EQ(int32At(interval, 11 + 12), 250);       // our choice: uint32 at data[12]
+    EXPECT_EQ(interval[9], 4);                   // GET_INTERVAL
+    EXPECT_EQ(int32At(interval, 11 + 12), 250);  // our choice: uint32 at data[12]
   }
   else
   {
-    EXPECT_EQ(interval[9], 1);                  // a GET
-    EXPECT_EQ(int32At(interval, 12), 250);      // interval_ms in the header
-    EXPECT_EQ(int32At(interval, 16 + 12), 0);   // and nothing in the data
+    EXPECT_EQ(interval[9], 1);                 // a GET
+    EXPECT_EQ(int32At(interval, 12), 250);     // interval_ms in the header
+    EXPECT_EQ(int32At(interval, 16 + 12), 0);  // and nothing in the data
   }
   const Message message = unpacked(interval);
   IntervalRequest request;
@@ -296,8 +297,7 @@ TEST_P(DigiViewMessages, EveryMalformedMessageHasOneReasonAndLeavesDefinedOutput
     { "targeting mode 4", with(data + 9, 4), size, UnpackError::NONE, UnpackError::BAD_DATA },
     { "euler_delta 2", with(data + 10, 2), size, UnpackError::NONE, UnpackError::BAD_DATA },
     { "lock flags 8", with(data + 23, 8), size, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "a control character in the stream name", with(data + 1, 0x07), size, UnpackError::NONE,
-      UnpackError::BAD_DATA },
+    { "a control character in the stream name", with(data + 1, 0x07), size, UnpackError::NONE, UnpackError::BAD_DATA },
     { "yaw 3.2 rad", withInt32(11, 3200), size, UnpackError::NONE, UnpackError::BAD_DATA },
     { "pitch -1.6 rad", withInt32(15, -1600), size, UnpackError::NONE, UnpackError::BAD_DATA },
     { "latitude 91", withInt32(28, 91000), size, UnpackError::NONE, UnpackError::BAD_DATA },

@@ -97,22 +97,21 @@ public:
 private:
   void read()
   {
-    boost::asio::async_read(socket_, boost::asio::buffer(request_), [this](const boost::system::error_code& error,
-                                                                           std::size_t) {
-      if (!error)
-      {
-        answer();
-        read();
-      }
-    });
+    boost::asio::async_read(socket_, boost::asio::buffer(request_),
+                            [this](const boost::system::error_code& error, std::size_t) {
+                              if (!error)
+                              {
+                                answer();
+                                read();
+                              }
+                            });
   }
   void answer()
   {
     Message request;
     CameraId camera;
     if (Message::unpack(request_.data(), request_.size(), Wire{ format_ }, request) != UnpackError::NONE ||
-        request.message_type != MessageType::GET_PARAMETERS ||
-        unpackCamera(request, camera) != UnpackError::NONE)
+        request.message_type != MessageType::GET_PARAMETERS || unpackCamera(request, camera) != UnpackError::NONE)
     {
       return;
     }
@@ -236,10 +235,10 @@ TEST_P(DigiViewBackend, ADigiViewOfTheOtherFormatFailsAtStartSayingSo)
     DigiViewEmulator emulator(emulatorConfig(other, transport));
     auto backend = makeDigiViewBackend(backendConfig(emulator.port(), GetParam(), transport));
     const std::string text = startupError(*backend);
-    const std::string expected = formatText("DigiView speaks format %s (%zu-byte messages), but format is set to "
-                                            "\"%s\" (%zu-byte messages)",
-                                            toString(other), layoutOf(other).size, toString(GetParam()),
-                                            layoutOf(GetParam()).size);
+    const std::string expected =
+        formatText("DigiView speaks format %s (%zu-byte messages), but format is set to "
+                   "\"%s\" (%zu-byte messages)",
+                   toString(other), layoutOf(other).size, toString(GetParam()), layoutOf(GetParam()).size);
     EXPECT_NE(text.find(expected), std::string::npos) << toString(transport) << ": " << text;
   }
 }

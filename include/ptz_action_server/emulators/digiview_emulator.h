@@ -60,9 +60,9 @@ struct ReceivedMessage
  * in directional mode, absolute or delta; CAM_OPTICS_AND_CONTROL), CURRENT_PARAMETERS for GETs (SYSTEM_STATUS,
  * VIDEO_OUTPUT, CAM_TARGETING, CAM_OPTICS_AND_CONTROL), periodic CURRENT_PARAMETERS for subscriptions (0.5:
  * GET_INTERVAL, answered by its reports only; 1.0: a GET with interval_ms, answered at once too; at least 100 ms
- * subscribes, 0 cancels, a request with less is ignored), CHECKSUM_ERROR for a bad checksum, DATA_ERROR for data out of range, UNKNOWN for types it does not know or model, FORBIDDEN for SETs
- * while told to refuse, and QUIT closes the connection. Requests about an unknown stream or camera are ignored,
- * as the seed says. Owns its I/O thread.
+ * subscribes, 0 cancels, a request with less is ignored), CHECKSUM_ERROR for a bad checksum, DATA_ERROR for data out of
+ * range, UNKNOWN for types it does not know or model, FORBIDDEN for SETs while told to refuse, and QUIT closes the
+ * connection. Requests about an unknown stream or camera are ignored, as the seed says. Owns its I/O thread.
  */
 class DigiViewEmulator
 {

@@ -86,7 +86,8 @@ bool toWire(Format format, MessageType type, std::uint8_t& wire)
 bool fromWire(Format format, std::uint8_t wire, MessageType& type)
 {
   const auto last = static_cast<std::uint8_t>(MessageType::UNKNOWN);
-  if (wire == static_cast<std::uint8_t>(MessageType::QUIT) || wire < static_cast<std::uint8_t>(MessageType::GET_INTERVAL))
+  if (wire == static_cast<std::uint8_t>(MessageType::QUIT) ||
+      wire < static_cast<std::uint8_t>(MessageType::GET_INTERVAL))
   {
     type = static_cast<MessageType>(wire);
     return true;

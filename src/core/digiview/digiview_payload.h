@@ -1,7 +1,8 @@
 /**
  * \file
  * \brief Private to the DigiView codec: little-endian writes and reads into a message's 64-byte data field, the
- * scales of its fixed-point fields (truncated as the published packers do), and the camera id most payloads start with (digiview_payloads.cpp).
+ * scales of its fixed-point fields (truncated as the published packers do), and the camera id most payloads start with
+ * (digiview_payloads.cpp).
  */
 #pragma once
 

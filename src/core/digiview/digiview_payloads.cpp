@@ -162,9 +162,8 @@ Message packVideoOutput(Format format, MessageType type, const VideoOutput& outp
   payload.u8(13, output.layout_mode);
   payload.u8(14, output.detection_overlay_mode);
   // As the published helpers: a SET carries no views; otherwise num_user_views (at most 4), then that many boxes.
-  const std::size_t views = type == MessageType::SET_PARAMETERS ?
-                                0 :
-                                std::min<std::size_t>(output.num_user_views, output.views.size());
+  const std::size_t views =
+      type == MessageType::SET_PARAMETERS ? 0 : std::min<std::size_t>(output.num_user_views, output.views.size());
   payload.u8(15, static_cast<std::uint8_t>(views));
   for (std::size_t index = 0; index < views; ++index)
   {

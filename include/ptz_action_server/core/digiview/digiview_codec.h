@@ -241,7 +241,7 @@ struct VideoOutput
   std::uint8_t fps = 0;
   std::uint8_t layout_mode = 0;  ///< [0, 6]
   std::uint8_t detection_overlay_mode = 0;
-  std::uint8_t num_user_views = 1;    ///< [0, 4]: the views of the layout (a SET carries 0)
+  std::uint8_t num_user_views = 1;     ///< [0, 4]: the views of the layout (a SET carries 0)
   std::array<BoundingBox, 4> views{};  ///< the first num_user_views travel
   BoundingBox detection_overlay_box;
   std::uint16_t single_detection_size = 0;

@@ -144,8 +144,8 @@ private:
   std::atomic<std::uint8_t> system_status_{ 0 };
 
   // I/O thread only.
-  bool described_ = false;  ///< VIDEO_OUTPUT of the stream arrived on this connection
-  bool targeted_ = false;   ///< CAM_TARGETING of the view arrived on this connection
+  bool described_ = false;   ///< VIDEO_OUTPUT of the stream arrived on this connection
+  bool targeted_ = false;    ///< CAM_TARGETING of the view arrived on this connection
   bool understood_ = false;  ///< a message unpacked on this connection
   const std::size_t message_size_;
   std::array<std::uint8_t, digiview::MAX_MESSAGE_SIZE> stream_buffer_{};
