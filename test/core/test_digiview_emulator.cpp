@@ -10,6 +10,7 @@
 #include <boost/asio/write.hpp>
 
 #include "digiview_golden_frames.h"
+#include "digiview_test_formats.h"
 #include "ptz_action_server/emulators/digiview_emulator.h"
 
 using namespace ptz_action_server;
@@ -186,7 +187,5 @@ TEST_P(DigiViewEmulatorAnswers, AZeroChecksumIsTakenOnlyWhenConfiguredAndItsOwnC
   EXPECT_TRUE(received.unverified);
 }
 
-INSTANTIATE_TEST_SUITE_P(Formats, DigiViewEmulatorAnswers, ::testing::Values(Format::V0_5, Format::V1_0),
-                         [](const ::testing::TestParamInfo<Format>& info) {
-                           return info.param == Format::V1_0 ? std::string("V1_0") : std::string("V0_5");
-                         });
+INSTANTIATE_TEST_SUITE_P(Formats, DigiViewEmulatorAnswers, ::testing::ValuesIn(digiview_test::FORMATS),
+                         digiview_test::formatName);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "digiview_golden_frames.h"
+#include "digiview_test_formats.h"
 #include "ptz_action_server/core/digiview/digiview_codec.h"
 
 using namespace ptz_action_server;
@@ -249,10 +250,8 @@ TEST_P(DigiViewGoldens, AChecksumByteOfZeroIsTakenOnlyWhenTheRuleSaysSoAndIsRepo
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Formats, DigiViewGoldens, ::testing::Values(Format::V0_5, Format::V1_0),
-                         [](const ::testing::TestParamInfo<Format>& info) {
-                           return info.param == Format::V1_0 ? std::string("V1_0") : std::string("V0_5");
-                         });
+INSTANTIATE_TEST_SUITE_P(Formats, DigiViewGoldens, ::testing::ValuesIn(digiview_test::FORMATS),
+                         digiview_test::formatName);
 
 TEST(DigiViewGoldenExtras, FormatSpecificFrames)
 {

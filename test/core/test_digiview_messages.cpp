@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "digiview_test_formats.h"
 #include "ptz_action_server/core/digiview/digiview_codec.h"
 
 using namespace ptz_action_server;
@@ -134,6 +135,10 @@ TEST_P(DigiViewMessages, HeaderChecksumAndTruncatedFields)
   }
   targeting.yaw = std::nan("");
   EXPECT_EQ(int32At(packTargeting(format(), MessageType::SET_PARAMETERS, targeting).pack(), data + 11), 0);
+  // In single precision, as the published packer: -0.511f x 1000 is -510.99997, so a yaw of -511 mrad read from
+  // DigiView goes back as -510 (the fuzzer's round trips allow that one unit).
+  targeting.yaw = -0.511;
+  EXPECT_EQ(int32At(packTargeting(format(), MessageType::SET_PARAMETERS, targeting).pack(), data + 11), -510);
 }
 
 TEST_P(DigiViewMessages, WhereEachFormatPutsTheSubscriptionInterval)
@@ -332,7 +337,5 @@ TEST_P(DigiViewMessages, EveryMalformedMessageHasOneReasonAndLeavesDefinedOutput
   EXPECT_EQ(Message::unpack(nullptr, size, Wire{ format() }, none), UnpackError::BAD_SIZE);
 }
 
-INSTANTIATE_TEST_SUITE_P(Formats, DigiViewMessages, ::testing::Values(Format::V0_5, Format::V1_0),
-                         [](const ::testing::TestParamInfo<Format>& info) {
-                           return info.param == Format::V1_0 ? std::string("V1_0") : std::string("V0_5");
-                         });
+INSTANTIATE_TEST_SUITE_P(Formats, DigiViewMessages, ::testing::ValuesIn(digiview_test::FORMATS),
+                         digiview_test::formatName);

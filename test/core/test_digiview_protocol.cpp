@@ -13,6 +13,7 @@
 #include <boost/asio/write.hpp>
 
 #include "digiview_golden_frames.h"
+#include "digiview_test_formats.h"
 #include "ptz_action_server/core/digiview/digiview_protocol.h"
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/emulators/digiview_emulator.h"
@@ -268,7 +269,5 @@ TEST_P(DigiViewBackend, ADigiViewThatLeavesTheChecksumZeroIsUsedOnlyWhenTheSetti
             0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Formats, DigiViewBackend, ::testing::Values(Format::V0_5, Format::V1_0),
-                         [](const ::testing::TestParamInfo<Format>& info) {
-                           return info.param == Format::V1_0 ? std::string("V1_0") : std::string("V0_5");
-                         });
+INSTANTIATE_TEST_SUITE_P(Formats, DigiViewBackend, ::testing::ValuesIn(digiview_test::FORMATS),
+                         digiview_test::formatName);
