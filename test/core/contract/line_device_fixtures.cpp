@@ -1,5 +1,4 @@
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "device_fixtures_internal.h"
 #include "ptz_action_server/core/flir/flir_protocol.h"
@@ -13,12 +12,6 @@ namespace ptz_action_server
 namespace
 {
 using Kind = DeviceCommand::Kind;
-
-std::string uniqueLink(const char* name)
-{
-  static int counter = 0;
-  return ::testing::TempDir() + "ptz_" + name + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
-}
 
 // ---------------------------------------------------------------- units on a line: a pseudo-terminal or TCP
 
