@@ -224,7 +224,7 @@ void MavlinkGimbalEmulator::tick()
     heartbeat_at_ = now;
     Heartbeat heartbeat;
     const bool autopilot = config_.component_id == MAV_COMP_ID_AUTOPILOT1;
-    heartbeat.type = autopilot ? 2 : MAV_TYPE_GIMBAL;  // 2: a quadrotor
+    heartbeat.type = autopilot ? 2 : MAV_TYPE_GIMBAL;              // 2: a quadrotor
     heartbeat.autopilot = autopilot ? 12 : MAV_AUTOPILOT_INVALID;  // 12: PX4
     send(heartbeat);
   }
@@ -336,8 +336,9 @@ void MavlinkGimbalEmulator::handleCommand(const Frame& frame, const CommandLong&
       if (command.params[0] == static_cast<float>(message_id::GIMBAL_DEVICE_ATTITUDE_STATUS))
       {
         const float interval_us = command.params[1];
-        attitude_interval_ = interval_us < 0.0f ? 0.0 : interval_us == 0.0f ? config_.attitude_interval :
-                                                                              interval_us / 1e6;
+        attitude_interval_ = interval_us < 0.0f  ? 0.0 :
+                             interval_us == 0.0f ? config_.attitude_interval :
+                                                   interval_us / 1e6;
       }
       else
       {

@@ -29,10 +29,10 @@ struct MavlinkGimbalEmulatorConfig
   std::uint8_t component_id = mavlink::MAV_COMP_ID_AUTOPILOT1;  ///< the manager: an autopilot, as PX4 and ArduPilot
   std::uint8_t gimbal_device_id = 1;  ///< 1..6: a gimbal the autopilot drives (not itself a MAVLink component)
   double heartbeat_period = 1.0;
-  double status_period = 0.2;      ///< s between GIMBAL_MANAGER_STATUS (5 Hz, as the protocol asks)
-  double attitude_interval = 1.0;  ///< s between GIMBAL_DEVICE_ATTITUDE_STATUS until SET_MESSAGE_INTERVAL
-  double rate_timeout = 0.5;       ///< s a rate setpoint lasts unless repeated
-  double vehicle_yaw = 0.0;        ///< rad: the vehicle's heading, delta_yaw in every attitude
+  double status_period = 0.2;       ///< s between GIMBAL_MANAGER_STATUS (5 Hz, as the protocol asks)
+  double attitude_interval = 1.0;   ///< s between GIMBAL_DEVICE_ATTITUDE_STATUS until SET_MESSAGE_INTERVAL
+  double rate_timeout = 0.5;        ///< s a rate setpoint lasts unless repeated
+  double vehicle_yaw = 0.0;         ///< rad: the vehicle's heading, delta_yaw in every attitude
   bool report_earth_frame = false;  ///< attitudes with the yaw relative to North (YAW_IN_EARTH_FRAME)
   SimDeviceConfig device = defaultDevice();
 
@@ -130,7 +130,7 @@ private:
   std::atomic<bool> silent_{ false };
   std::atomic<bool> refuse_{ false };
 
-  mutable std::mutex mutex_;  ///< guards everything below up to the transports
+  mutable std::mutex mutex_;      ///< guards everything below up to the transports
   mutable SimDeviceModel model_;  ///< mutable: sampling advances it
   mavlink::FrameParser parser_;
   MavlinkGimbalEmulatorCounters counters_;

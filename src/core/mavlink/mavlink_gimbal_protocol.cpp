@@ -77,6 +77,11 @@ std::string MavlinkGimbalProtocol::managerName() const
   return " " + controllerName(manager_system_, manager_component_);
 }
 
+std::string MavlinkGimbalProtocol::heldBy() const
+{
+  return " (primary control of the gimbal is held by " + controllerName(holder_system_, holder_component_) + ")";
+}
+
 std::string MavlinkGimbalProtocol::controllerName(std::uint8_t system_id, std::uint8_t component_id) const
 {
   return std::to_string(system_id) + "/" + std::to_string(component_id);
@@ -131,6 +136,11 @@ void MavlinkGimbalProtocol::onReceived(const std::uint8_t* data, std::size_t siz
 void MavlinkGimbalProtocol::poll()
 {
   const TimePoint now = session_.now();
+  if (!startup_refusal_.empty() && due(refused_at_, settings_.resend_period))
+  {
+    session_.failStartup(startup_refusal_);  // no status came to say who holds control
+    startup_refusal_.clear();
+  }
   if (due(heartbeat_at_, settings_.heartbeat_period))
   {
     heartbeat_at_ = now;
@@ -144,8 +154,7 @@ void MavlinkGimbalProtocol::poll()
     }
     // Take control at start-up, and back when it comes free; never from another controller unasked.
     const bool control_free = holder_system_ == 0 && holder_component_ == 0;
-    if (informed_ && !in_control_ && (control_free || !ever_ready_) &&
-        due(control_asked_at_, settings_.resend_period))
+    if (informed_ && !in_control_ && (control_free || !ever_ready_) && due(control_asked_at_, settings_.resend_period))
     {
       takeControl();
     }
@@ -263,8 +272,7 @@ void MavlinkGimbalProtocol::handleHeartbeat(const Frame& frame)
 
 bool MavlinkGimbalProtocol::fromManager(const Frame& frame) const
 {
-  return manager_known_ && frame.header.system_id == manager_system_ &&
-         frame.header.component_id == manager_component_;
+  return manager_known_ && frame.header.system_id == manager_system_ && frame.header.component_id == manager_component_;
 }
 
 void MavlinkGimbalProtocol::chooseManager(std::uint8_t system_id, std::uint8_t component_id)
@@ -322,6 +330,12 @@ void MavlinkGimbalProtocol::handleStatus(const GimbalManagerStatus& status)
   session_.reportAlive();
   holder_system_ = status.primary_control_sysid;
   holder_component_ = status.primary_control_compid;
+  if (!startup_refusal_.empty())
+  {
+    session_.failStartup(startup_refusal_ + (holder_system_ != 0 || holder_component_ != 0 ? heldBy() : ""));
+    startup_refusal_.clear();
+    return;
+  }
   const bool ours = holder_system_ == settings_.system_id && holder_component_ == settings_.component_id;
   if (ours && !in_control_)
   {
@@ -369,17 +383,26 @@ void MavlinkGimbalProtocol::handleAck(const CommandAck& ack)
     return;
   }
   ++counters_.acks_refused;
-  std::string text = formatText("%s refused %s: %s", deviceName().c_str(), commandName(ack.command),
-                                toString(ack.result).c_str());
+  std::string text =
+      formatText("%s refused %s: %s", deviceName().c_str(), commandName(ack.command), toString(ack.result).c_str());
   if (ack.command == command_id::SET_MESSAGE_INTERVAL)
   {
     attitude_requested_ = true;  // the attitude comes at the manager's own rate; the state timeout judges it
     return;
   }
-  if (ack.command == command_id::DO_GIMBAL_MANAGER_CONFIGURE &&
-      (holder_system_ != 0 || holder_component_ != 0))
+  if (ack.command == command_id::DO_GIMBAL_MANAGER_CONFIGURE)
   {
-    text += " (primary control of the gimbal is held by " + controllerName(holder_system_, holder_component_) + ")";
+    if (holder_system_ != 0 || holder_component_ != 0)
+    {
+      text += heldBy();
+    }
+    else if (!ever_ready_)
+    {
+      // Who holds control comes with the manager's next status (5 Hz): say it, rather than fail without it.
+      startup_refusal_ = text;
+      refused_at_ = session_.now();
+      return;
+    }
   }
   if (!ever_ready_)
   {
@@ -425,8 +448,7 @@ void MavlinkGimbalProtocol::handleAttitude(const GimbalDeviceAttitudeStatus& att
 template <class Message>
 void MavlinkGimbalProtocol::send(const Message& message)
 {
-  const EncodedFrame frame =
-      encode(FrameHeader{ sequence_++, settings_.system_id, settings_.component_id }, message);
+  const EncodedFrame frame = encode(FrameHeader{ sequence_++, settings_.system_id, settings_.component_id }, message);
   session_.write(frame.data(), frame.size);
 }
 
@@ -462,9 +484,9 @@ void MavlinkGimbalProtocol::takeControl()
 void MavlinkGimbalProtocol::requestAttitude()
 {
   attitude_asked_at_ = session_.now();
-  sendCommand(command_id::SET_MESSAGE_INTERVAL, { static_cast<float>(message_id::GIMBAL_DEVICE_ATTITUDE_STATUS),
-                                                  static_cast<float>(settings_.attitude_interval * 1e6), 0, 0, 0, 0,
-                                                  0 });
+  sendCommand(command_id::SET_MESSAGE_INTERVAL,
+              { static_cast<float>(message_id::GIMBAL_DEVICE_ATTITUDE_STATUS),
+                static_cast<float>(settings_.attitude_interval * 1e6), 0, 0, 0, 0, 0 });
 }
 
 std::uint32_t MavlinkGimbalProtocol::setpointFlags() const

@@ -57,7 +57,8 @@ public:
           command.kind = Kind::MOVE;
           command.aims = std::isfinite(setpoint.yaw);
           command.pan = setpoint.yaw;
-          command.text = "SET_PITCHYAW pitch " + std::to_string(setpoint.pitch) + " yaw " + std::to_string(setpoint.yaw);
+          command.text =
+              "SET_PITCHYAW pitch " + std::to_string(setpoint.pitch) + " yaw " + std::to_string(setpoint.yaw);
         }
         else
         {
@@ -70,8 +71,7 @@ public:
       else if (frame.message_id == message_id::COMMAND_LONG)
       {
         const auto long_command = decode<CommandLong>(frame);
-        command.kind =
-            long_command.command == command_id::DO_GIMBAL_MANAGER_CONFIGURE ? Kind::OTHER : Kind::QUERY;
+        command.kind = long_command.command == command_id::DO_GIMBAL_MANAGER_CONFIGURE ? Kind::OTHER : Kind::QUERY;
         command.text = "COMMAND_LONG " + std::to_string(long_command.command);
       }
       else

@@ -21,16 +21,16 @@ namespace ptz_action_server
 /// What only the MAVLink gimbal protocol needs to know.
 struct MavlinkGimbalSettings
 {
-  std::uint8_t system_id = 1;       ///< ours: the vehicle's system, as a companion computer
-  std::uint8_t component_id = 191;  ///< ours: MAV_COMP_ID_ONBOARD_COMPUTER
+  std::uint8_t system_id = 1;         ///< ours: the vehicle's system, as a companion computer
+  std::uint8_t component_id = 191;    ///< ours: MAV_COMP_ID_ONBOARD_COMPUTER
   std::uint8_t target_system = 0;     ///< the gimbal manager's system; 0: the first manager heard
   std::uint8_t target_component = 0;  ///< the gimbal manager's component; 0: the first manager heard
   std::uint8_t gimbal_device_id = 0;  ///< the gimbal the manager drives; 0: the one its information names
-  bool yaw_lock = false;  ///< false: yaw relative to the vehicle (ptz_base_link); true: to North (YAW_LOCK)
-  double heartbeat_period = 1.0;    ///< s
-  double attitude_interval = 0.05;  ///< s between GIMBAL_DEVICE_ATTITUDE_STATUS, asked with SET_MESSAGE_INTERVAL
-  double rate_period = 0.1;   ///< s between the rate setpoints of a velocity goal (managers time rates out)
-  double resend_period = 1.0;  ///< s between repeats of a position setpoint, and of an unanswered request
+  bool yaw_lock = false;              ///< false: yaw relative to the vehicle (ptz_base_link); true: to North (YAW_LOCK)
+  double heartbeat_period = 1.0;      ///< s
+  double attitude_interval = 0.05;    ///< s between GIMBAL_DEVICE_ATTITUDE_STATUS, asked with SET_MESSAGE_INTERVAL
+  double rate_period = 0.1;           ///< s between the rate setpoints of a velocity goal (managers time rates out)
+  double resend_period = 1.0;         ///< s between repeats of a position setpoint, and of an unanswered request
   AxisCapability pan{ true, { -M_PI, M_PI }, 1.0, 0.0 };  ///< max_speed and acceleration: for goal timeouts
   AxisCapability tilt{ true, { -M_PI / 2.0, M_PI / 4.0 }, 1.0, 0.0 };
 };
@@ -52,12 +52,12 @@ struct MavlinkGimbalConfig
 
 struct MavlinkGimbalCounters
 {
-  Counter frames;     ///< good MAVLink 2 frames
-  Counter attitudes;  ///< GIMBAL_DEVICE_ATTITUDE_STATUS of our gimbal
-  Counter setpoints;  ///< GIMBAL_MANAGER_SET_PITCHYAW sent
-  Counter acks_refused;     ///< COMMAND_ACK results other than ACCEPTED / IN_PROGRESS
-  Counter control_lost;     ///< another controller took primary control from us
-  Counter foreign_frames;   ///< good frames from systems other than the manager's, or for another gimbal
+  Counter frames;              ///< good MAVLink 2 frames
+  Counter attitudes;           ///< GIMBAL_DEVICE_ATTITUDE_STATUS of our gimbal
+  Counter setpoints;           ///< GIMBAL_MANAGER_SET_PITCHYAW sent
+  Counter acks_refused;        ///< COMMAND_ACK results other than ACCEPTED / IN_PROGRESS
+  Counter control_lost;        ///< another controller took primary control from us
+  Counter foreign_frames;      ///< good frames from systems other than the manager's, or for another gimbal
   Counter unusable_attitudes;  ///< attitudes in the other yaw frame without a delta_yaw to convert them
   std::array<Counter, mavlink::FRAME_ERROR_COUNT> bad;  ///< dropped by the parser, by FrameError
 };
@@ -149,6 +149,8 @@ private:
   std::uint32_t setpointFlags() const;
   std::string managerName() const;
   std::string controllerName(std::uint8_t system_id, std::uint8_t component_id) const;
+  /// " (primary control of the gimbal is held by 3/190)", from the last status.
+  std::string heldBy() const;
 
   const MavlinkGimbalSettings settings_;
   DeviceSession& session_;
@@ -164,12 +166,14 @@ private:
 
   // I/O thread only.
   bool manager_known_ = false;
-  bool informed_ = false;          ///< GIMBAL_MANAGER_INFORMATION arrived
+  bool informed_ = false;            ///< GIMBAL_MANAGER_INFORMATION arrived
   bool attitude_requested_ = false;  ///< SET_MESSAGE_INTERVAL accepted
-  bool ready_ = false;             ///< ready() was said on this connection
-  bool ever_ready_ = false;        ///< the start-up is over: refusals are goal faults from now on
-  std::uint8_t holder_system_ = 0;  ///< who holds primary control, as the last status said
+  bool ready_ = false;               ///< ready() was said on this connection
+  bool ever_ready_ = false;          ///< the start-up is over: refusals are goal faults from now on
+  std::uint8_t holder_system_ = 0;   ///< who holds primary control, as the last status said
   std::uint8_t holder_component_ = 0;
+  std::string startup_refusal_;  ///< control refused at start-up, awaiting the status that names the holder
+  TimePoint refused_at_{};
   std::uint8_t sequence_ = 0;
   std::map<std::uint16_t, PendingCommand> pending_;  ///< by MAV_CMD: the last of each awaiting its ACK
   TimePoint heartbeat_at_{};
@@ -183,8 +187,7 @@ private:
 };
 
 /// A mavlink_gimbal backend: MavlinkGimbalProtocol on a DeviceSession.
-std::unique_ptr<DeviceBackend> makeMavlinkGimbalBackend(const MavlinkGimbalConfig& config,
-                                                        std::shared_ptr<const Clock> clock =
-                                                            std::make_shared<SystemClock>());
+std::unique_ptr<DeviceBackend> makeMavlinkGimbalBackend(
+    const MavlinkGimbalConfig& config, std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
 
 }  // namespace ptz_action_server
