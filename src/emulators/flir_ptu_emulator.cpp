@@ -2,16 +2,19 @@
 
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 
 #include "ptz_action_server/core/units.h"
+
+// The unit on its line: power-up, banners, echo, commands as they arrive, and what it reports on its own (limit hits,
+// the reset calibration). What it answers to each command is in flir_ptu_emulator_answers.cpp.
 
 namespace ptz_action_server
 {
 namespace
 {
 constexpr std::size_t MAX_TOKEN = 32;
+/// What this emulator prints at power-up on a serial line (the real D46 text is not published).
 const char* const BANNER = "\r\nPan-Tilt Controller v3.4.3 (ptz_action_server emulator)\r\n"
                            "(C)2010-2024 FLIR Commercial Systems, Inc., All Rights Reserved\r\nInitializing...\r\n";
 /// What an E-series unit sends on every TCP connection (published-wire-facts.md, section 3); the last line comes once
@@ -63,16 +66,28 @@ FlirPtuEmulator::~FlirPtuEmulator()
 
 void FlirPtuEmulator::powerUp()
 {
+  const TimePoint now = SteadyClock::now();
   echo_ = config_.banner;
   terse_ = !config_.banner;
   velocity_mode_ = false;
+  limits_enforced_ = true;
   token_.clear();
-  speed_ = { { std::lround(config_.pan_max_speed / resolution_rad_),
-               std::lround(config_.tilt_max_speed / resolution_rad_) } };
+  after_cr_ = false;
+  calibration_.clear();
   velocity_ = { { 0, 0 } };
+  for (Axis axis : { PAN, TILT })
+  {
+    const std::size_t index = axisIndex(axis);
+    const AxisMotionLimits& motion = model_.config().axes[axis].motion;
+    speed_[index] = std::lround(motion.max_speed / resolution_rad_);
+    model_.setCruiseSpeed(axis, motion.max_speed, now);
+    lower_speed_[index] = config_.lower_speed;
+    base_speed_[index] = config_.base_speed;
+    acceleration_[index] = std::lround(motion.acceleration / resolution_rad_);
+  }
   if (config_.banner && config_.port.kind == DevicePortConfig::Kind::PTY)
   {
-    port_->send(BANNER);
+    port_->send(BANNER);  // lost unless a client has the port open now
   }
 }
 
@@ -80,6 +95,7 @@ void FlirPtuEmulator::greet()
 {
   std::lock_guard<std::mutex> lock(mutex_);
   token_.clear();
+  after_cr_ = false;
   if (!config_.banner)
   {
     return;
@@ -94,44 +110,67 @@ void FlirPtuEmulator::greet()
 void FlirPtuEmulator::onBytes(const std::uint8_t* data, std::size_t size, TimePoint arrived_at)
 {
   const double byte_time = port_->byteTime();
-  std::string echo;
-  std::vector<std::pair<std::string, TimePoint>> commands;
+  std::lock_guard<std::mutex> lock(mutex_);
+  // Byte by byte, as the unit reads them: a command's echo and reply go out before the next command is read, and a
+  // command takes effect for the ones after it (`ED` is still echoed, the command after it is not).
+  std::string out;
+  for (std::size_t index = 0; index < size && calibration_.empty(); ++index)
   {
-    std::lock_guard<std::mutex> lock(mutex_);
-    for (std::size_t index = 0; index < size; ++index)
+    const char character = static_cast<char>(data[index]);
+    if (echo_)
     {
-      const char character = static_cast<char>(data[index]);
-      if (echo_)
-      {
-        echo.push_back(character);
-      }
-      if (isDelimiter(character))
-      {
-        if (!token_.empty())
-        {
-          // This byte crossed the line (size - 1 - index) byte times before the chunk's last one.
-          commands.emplace_back(token_, addSeconds(arrived_at, -(static_cast<double>(size - 1 - index) * byte_time)));
-          token_.clear();
-        }
-        continue;
-      }
+      echo(character, out);
+    }
+    if (!isDelimiter(character))
+    {
       if (token_.size() < MAX_TOKEN)
       {
         token_.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(character))));
       }
+      continue;
+    }
+    if (token_.empty())
+    {
+      continue;
+    }
+    // This byte crossed the line (size - 1 - index) byte times before the chunk's last one.
+    const TimePoint at = addSeconds(arrived_at, -(static_cast<double>(size - 1 - index) * byte_time));
+    const std::string command = token_;
+    token_.clear();
+    if (!out.empty())
+    {
+      port_->send(out);  // the echo goes first: R's banner follows it
+      out.clear();
+    }
+    const std::string answer = execute(command, at);
+    if (!answer.empty())
+    {
+      port_->send(answer + "\r\n");
     }
   }
-  if (!echo.empty())
+  if (!out.empty())
   {
-    port_->send(echo);
-  }
-  for (const auto& command : commands)
-  {
-    execute(command.first, command.second);
+    port_->send(out);
   }
 }
 
-void FlirPtuEmulator::execute(const std::string& command, TimePoint at)
+void FlirPtuEmulator::echo(char character, std::string& out)
+{
+  if (character == '\r' || character == '\n')
+  {
+    if (!(character == '\n' && after_cr_))
+    {
+      out += "\r\n";
+    }
+  }
+  else
+  {
+    out.push_back(character);
+  }
+  after_cr_ = character == '\r';
+}
+
+std::string FlirPtuEmulator::execute(const std::string& command, TimePoint at)
 {
   std::size_t letters_end = 0;
   while (letters_end < command.size() && std::isalpha(static_cast<unsigned char>(command[letters_end])))
@@ -150,13 +189,39 @@ void FlirPtuEmulator::execute(const std::string& command, TimePoint at)
     has_value = true;
     valid_argument = end != argument.c_str() && *end == '\0';
   }
-  std::string answer;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    answer = valid_argument ? reply(letters, has_value, value, at) : "! Illegal argument";
-  }
   received_.add(ReceivedCommand{ at, command });
-  port_->send(answer + "\r\n");
+  return valid_argument ? reply(letters, has_value, value, at) : "! Illegal argument";
+}
+
+void FlirPtuEmulator::startCalibration(TimePoint at)
+{
+  // Tilt first; each axis hits both its limits (a report each), then comes home.
+  calibration_ = { { TILT, config_.tilt_max, "!T" }, { TILT, config_.tilt_min, "!T" }, { TILT, 0, "" },
+                   { PAN, config_.pan_max, "!P" },   { PAN, config_.pan_min, "!P" },   { PAN, 0, "*\r\n" } };
+  velocity_mode_ = false;
+  velocity_ = { { 0, 0 } };
+  model_.stop(at);
+  model_.goToAxis(TILT, toRadians(TILT, config_.tilt_max), at);
+}
+
+void FlirPtuEmulator::calibrate(TimePoint now, std::string& out)
+{
+  if (calibration_.empty() || model_.sample(now).moving)
+  {
+    return;
+  }
+  const CalibrationStep step = calibration_.front();
+  if (std::abs(position(step.axis, now) - step.target) > 1)
+  {
+    return;  // not started yet (a lagging unit), or a stalled axis: the calibration never ends
+  }
+  out += step.report;
+  calibration_.pop_front();
+  if (!calibration_.empty())
+  {
+    const CalibrationStep& next = calibration_.front();
+    model_.goToAxis(next.axis, toRadians(next.axis, next.target), now);
+  }
 }
 
 long FlirPtuEmulator::position(Axis axis, TimePoint at)
@@ -170,119 +235,6 @@ double FlirPtuEmulator::toRadians(Axis axis, long position) const
   return (axis == PAN ? -position : position) * resolution_rad_;
 }
 
-std::string FlirPtuEmulator::reply(const std::string& letters, bool has_value, long value, TimePoint at)
-{
-  auto ok = [this](const char* verbose) { return terse_ ? std::string("*") : std::string("* ") + verbose; };
-  auto number = [this](const char* name, const std::string& text) {
-    return terse_ ? "* " + text : std::string("* Current ") + name + " is " + text;
-  };
-  const bool pan = !letters.empty() && letters[0] == 'P';
-  const Axis axis = pan ? PAN : TILT;
-  const std::size_t index = pan ? 0 : 1;
-  const char* axis_name = pan ? "Pan" : "Tilt";
-  const long min = pan ? config_.pan_min : config_.tilt_min;
-  const long max = pan ? config_.pan_max : config_.tilt_max;
-  const long speed_max = std::lround(model_.config().axes[axis].motion.max_speed / resolution_rad_);
-
-  if (letters == "FT" || letters == "FV")
-  {
-    terse_ = letters == "FT";
-    return ok("Terse feedback mode");
-  }
-  if (letters == "ED" || letters == "EE")
-  {
-    echo_ = letters == "EE";
-    return ok("Echoing");
-  }
-  if (letters == "CI" || letters == "CV")
-  {
-    velocity_mode_ = letters == "CV";
-    velocity_ = { { 0, 0 } };
-    return ok(velocity_mode_ ? "Velocity control mode" : "Position control mode");
-  }
-  if (letters == "H" || letters == "HP" || letters == "HT")
-  {
-    for (Axis halted : { PAN, TILT })
-    {
-      if (letters == "H" || (letters == "HP") == (halted == PAN))
-      {
-        model_.moveAxisAtVelocity(halted, 0.0, at);
-        velocity_[halted == PAN ? 0 : 1] = 0;
-      }
-    }
-    return ok("Halting");
-  }
-  if (letters == "R")
-  {
-    model_.goTo(AxisValues{ { 0.0, 0.0, 1.0 } }, at);
-    return ok("Resetting");
-  }
-  if (letters == "LE" || letters == "LD" || letters == "PA" || letters == "TA")
-  {
-    return ok("Accepted");  // soft limits and accelerations: accepted, not modelled
-  }
-  if (letters == "PR" || letters == "TR")
-  {
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.4f", config_.resolution);
-    return terse_ ? std::string("* ") + text : std::string("* ") + text + " seconds arc per position";
-  }
-  if (letters == "PN" || letters == "PX" || letters == "TN" || letters == "TX")
-  {
-    if (has_value)
-    {
-      return "! Limits are fixed";
-    }
-    return number(letters[1] == 'N' ? "minimum position" : "maximum position",
-                  std::to_string(letters[1] == 'N' ? min : max));
-  }
-  if (letters == "PU" || letters == "TU")
-  {
-    return has_value ? "! Upper speed is fixed" : number("upper speed limit", std::to_string(speed_max));
-  }
-  if (letters == "PP" || letters == "TP" || letters == "PO" || letters == "TO")
-  {
-    if (!has_value)
-    {
-      return letters[1] == 'O' ? "! Illegal Command" :
-                                 number(pan ? "Pan position" : "Tilt position", std::to_string(position(axis, at)));
-    }
-    const long target = letters[1] == 'O' ? position(axis, at) + value : value;
-    if (target < min || target > max)
-    {
-      return std::string("! Maximum allowable ") + axis_name + " position exceeded";
-    }
-    model_.goToAxis(axis, toRadians(axis, target), at);
-    return ok("Moving");
-  }
-  if (letters == "PS" || letters == "TS")
-  {
-    if (!has_value)
-    {
-      return number(pan ? "Pan speed" : "Tilt speed",
-                    std::to_string(velocity_mode_ ? velocity_[index] : speed_[index]));
-    }
-    if (std::abs(value) > speed_max || (!velocity_mode_ && value <= 0))
-    {
-      return std::string("! Maximum allowable ") + axis_name + " speed exceeded";
-    }
-    if (velocity_mode_)
-    {
-      velocity_[index] = value;
-      limit_reported_[index] = false;
-      // Pan positions count counter-clockwise: a positive pan velocity turns the camera to the left.
-      model_.moveAxisAtVelocity(axis, (pan ? -value : value) * resolution_rad_, at);
-    }
-    else
-    {
-      speed_[index] = value;
-      model_.setCruiseSpeed(axis, value * resolution_rad_, at);
-    }
-    return ok("Speed set");
-  }
-  return "! Illegal Command";
-}
-
 void FlirPtuEmulator::onTick()
 {
   std::string reports;
@@ -294,10 +246,11 @@ void FlirPtuEmulator::onTick()
       banner_pending_ = false;
       reports += TCP_BANNER_END;
     }
+    calibrate(now, reports);
     // A velocity move that runs into a limit stops there, and the unit says so.
     for (Axis axis : { PAN, TILT })
     {
-      const std::size_t index = axis == PAN ? 0 : 1;
+      const std::size_t index = axisIndex(axis);
       if (!velocity_mode_ || limit_reported_[index])
       {
         continue;

@@ -17,6 +17,9 @@ namespace ptz_action_server
 {
 namespace
 {
+/// s between looks for a client while none has the port open.
+constexpr double PRESENCE_CHECK = 0.01;
+
 void makeRaw(int fd)
 {
   termios settings{};
@@ -78,14 +81,17 @@ void PtyPort::openPort()
     return;
   }
   char name[256] = {};
-  if (::openpty(&master_, &slave_, name, nullptr, nullptr) != 0)
+  int slave = -1;
+  if (::openpty(&master_, &slave, name, nullptr, nullptr) != 0)
   {
     throw BackendError(std::string("openpty: ") + std::strerror(errno));
   }
-  makeRaw(slave_);
+  // The settings stay with the terminal while the master is open; the slave end is the client's alone, so the
+  // master sees when nobody has it open (a hang-up) and output can be lost as on a real line.
+  makeRaw(slave);
+  ::close(slave);
   ::fcntl(master_, F_SETFL, ::fcntl(master_, F_GETFL) | O_NONBLOCK);
   ::fcntl(master_, F_SETFD, FD_CLOEXEC);
-  ::fcntl(slave_, F_SETFD, FD_CLOEXEC);
   pty_path_ = name;
   if (!config_.link.empty())
   {
@@ -99,17 +105,40 @@ void PtyPort::openPort()
   }
 }
 
+bool PtyPort::clientPresentLocked() const
+{
+  if (master_ < 0)
+  {
+    return false;
+  }
+  if (!config_.tty.empty())
+  {
+    return true;
+  }
+  pollfd descriptor{ master_, POLLIN, 0 };
+  return ::poll(&descriptor, 1, 0) >= 0 && !(descriptor.revents & POLLHUP);
+}
+
+void PtyPort::discardUnreadLocked()
+{
+  if (!config_.tty.empty() || pty_path_.empty())
+  {
+    return;
+  }
+  const int slave = ::open(pty_path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (slave >= 0)
+  {
+    ::tcflush(slave, TCIFLUSH);
+    ::close(slave);
+  }
+}
+
 void PtyPort::closePort()
 {
   if (master_ >= 0)
   {
     ::close(master_);
     master_ = -1;
-  }
-  if (slave_ >= 0)
-  {
-    ::close(slave_);
-    slave_ = -1;
   }
   if (!config_.link.empty())
   {
@@ -129,6 +158,12 @@ void PtyPort::send(const std::uint8_t* data, std::size_t size)
     std::lock_guard<std::mutex> lock(mutex_);
     if (master_ < 0)
     {
+      return;
+    }
+    if (!clientPresentLocked())
+    {
+      // Nobody listens: a line drops them, whereas the terminal would keep them for the next opener.
+      bytes_lost_ += size;
       return;
     }
     // Each byte reaches the client once its ten bits have crossed the line.
@@ -177,15 +212,28 @@ void PtyPort::run()
   const double byte_time = byteTime();
   TimePoint next_tick = SteadyClock::now();  // the first tick runs at once
   std::uint8_t buffer[1024];
+  bool present = false;
   while (running_)
   {
-    // 1. Work out how long to sleep: the next paced byte out, the next input delivery, the next tick.
+    // 1. Work out how long to sleep: the next paced byte out, the next input delivery, the next tick; while no client
+    // has the port open, the next look for one (nothing tells the master when its slave is opened).
     TimePoint now = SteadyClock::now();
     TimePoint wake_at = handlers_.on_tick ? next_tick : addSeconds(now, 3600.0);
     int master = -1;
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      master = master_;
+      const bool was_present = present;
+      present = clientPresentLocked();
+      if (was_present && !present && master_ >= 0)
+      {
+        discardUnreadLocked();
+      }
+      // A master without a client polls as hung up at once: wait for a client instead of spinning on it.
+      master = present ? master_ : -1;
+      if (!present)
+      {
+        wake_at = std::min(wake_at, addSeconds(now, PRESENCE_CHECK));
+      }
       if (!output_.empty())
       {
         wake_at = std::min(wake_at, output_.front().at);
@@ -210,7 +258,7 @@ void PtyPort::run()
     }
     now = SteadyClock::now();
 
-    // 2. Bytes from the client: they "arrive" at the line's pace.
+    // 2. Bytes from the client: they "arrive" at the line's pace. (A hang-up is noticed at the next look.)
     if (ready > 0 && master >= 0 && (descriptors[1].revents & POLLIN))
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -220,11 +268,6 @@ void PtyPort::run()
         input_free_at_ = addSeconds(std::max(now, input_free_at_), size * byte_time);
         input_.push_back(Pending{ input_free_at_, std::vector<std::uint8_t>(buffer, buffer + size) });
       }
-    }
-    else if (ready > 0 && master >= 0 && (descriptors[1].revents & (POLLHUP | POLLERR)))
-    {
-      // No client holds the other end (we keep our own copy open, so this is rare): do not spin on it.
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
 
     // 3. Hand over the input whose time has come.
@@ -246,7 +289,7 @@ void PtyPort::run()
       }
     }
 
-    // 4. Send the output bytes whose time has come.
+    // 4. Send the output bytes whose time has come; with nobody at the other end, they are lost.
     {
       std::lock_guard<std::mutex> lock(mutex_);
       std::vector<std::uint8_t> chunk;
@@ -255,10 +298,14 @@ void PtyPort::run()
         chunk.push_back(output_.front().byte);
         output_.pop_front();
       }
-      garble(chunk.data(), chunk.size());
-      if (!chunk.empty() && master_ >= 0)
+      if (!chunk.empty() && clientPresentLocked())
       {
+        garble(chunk.data(), chunk.size());
         (void)!::write(master_, chunk.data(), chunk.size());
+      }
+      else
+      {
+        bytes_lost_ += chunk.size();
       }
     }
 

@@ -16,8 +16,12 @@ const char* DEFAULT_LINK = "/tmp/ptz_flir";
 const char* USAGE = R"(usage: flir_ptu_emulator [options]
 
 A FLIR (Directed Perception) D46-like pan-tilt unit on a pseudo-terminal: its ASCII protocol (terse/verbose,
-echo, position and velocity modes, resolution 185.1428"/position, pan +-3090 and tilt -907..604 positions),
-paced at the baud rate. Point the node at the link: backend:=serial with port: /tmp/ptz_flir.
+echo, position and velocity modes, resolution 185.1428"/position, pan +-3090 and tilt -907..604 positions,
+speeds 31..1671 and 31..1114 positions/s, R / RE reset calibration answered !T!T!P!P*), paced at the baud
+rate, replies ended CR LF. Like a unit at power-up it echoes and answers verbosely until FT / ED; its banner
+(at power-up, after R) reaches only a client that has the port open then, as on a real line. On TCP it
+greets every connection with the E-series banner. Point the node at the link: backend:=serial with
+port: /tmp/ptz_flir.
 
 Options:
   --no-banner            start terse, without echo and banner

@@ -3,7 +3,6 @@
 #include <string>
 #include <vector>
 
-#include "ptz_action_server/core/flir/flir_codec.h"
 #include "ptz_action_server/core/pelco_d/pelco_d_codec.h"
 
 using namespace ptz_action_server;
@@ -22,13 +21,6 @@ std::vector<pelco::FrameParser::Event> parseAll(pelco::FrameParser& parser, cons
   std::vector<pelco::FrameParser::Event> events;
   parser.feed(bytes.data(), bytes.size(), events);
   return events;
-}
-
-std::vector<flir::Reply> parseText(flir::ReplyParser& parser, const std::string& text)
-{
-  std::vector<flir::Reply> replies;
-  parser.feed(reinterpret_cast<const std::uint8_t*>(text.data()), text.size(), replies);
-  return replies;
 }
 }  // namespace
 
@@ -203,89 +195,4 @@ TEST(PelcoParser, RandomBytesNeverProduceAnInvalidFrame)
       EXPECT_EQ(pelco::checksum(event.frame), bytesOf(event.frame)[6]);
     }
   }
-}
-
-// --- FLIR replies
-
-TEST(FlirReplies, ClassifiesTerseVerboseEchoedAndUnexpectedLines)
-{
-  struct Case
-  {
-    std::string line;
-    flir::Reply::Kind kind;
-    double value;
-    std::string text;
-  };
-  using Kind = flir::Reply::Kind;
-  const std::vector<Case> cases = {
-    { "*", Kind::ACK, 0.0, "" },
-    { "* 1234", Kind::VALUE, 1234.0, "" },
-    { "*  -907", Kind::VALUE, -907.0, "" },
-    { "* 185.1428", Kind::VALUE, 185.1428, "" },
-    { "* Current Pan position is -1234", Kind::VALUE, -1234.0, "" },
-    { "* 185.1428 seconds arc per position", Kind::VALUE, 185.1428, "" },
-    { "pp * 12", Kind::VALUE, 12.0, "" },  // echoed command, then the reply
-    { "PP-557 *", Kind::ACK, 0.0, "" },
-    { "* Terse feedback mode", Kind::ACK, 0.0, "" },
-    { "! Illegal Command", Kind::ERROR, 0.0, "Illegal Command" },
-    { "! Maximum allowable Pan position exceeded", Kind::ERROR, 0.0, "Maximum allowable Pan position exceeded" },
-    { "!", Kind::ERROR, 0.0, "error" },
-    { "!P", Kind::LIMIT, 0.0, "" },
-    { "!T", Kind::LIMIT, 0.0, "" },
-    { "Pan-Tilt Controller v3.4.3 (C)2010", Kind::TEXT, 0.0, "Pan-Tilt Controller v3.4.3 (C)2010" },
-    { "Initializing...", Kind::TEXT, 0.0, "Initializing..." },
-    { "Initializing...*", Kind::TEXT, 0.0, "Initializing...*" },  // E-series on TCP: ready, but no reply
-  };
-  for (const Case& item : cases)
-  {
-    const flir::Reply reply = flir::classifyLine(item.line);
-    EXPECT_EQ(reply.kind, item.kind) << item.line;
-    EXPECT_DOUBLE_EQ(reply.value, item.value) << item.line;
-    if (item.kind == Kind::ERROR || item.kind == Kind::TEXT)
-    {
-      EXPECT_EQ(reply.text, item.text) << item.line;
-    }
-  }
-  EXPECT_EQ(flir::classifyLine("!P").axis, 'P');
-  EXPECT_EQ(flir::classifyLine("!T").axis, 'T');
-}
-
-TEST(FlirReplies, LinesSplitAtEveryOffsetAndAnyLineEnd)
-{
-  const std::string stream = "\r\nPan-Tilt Controller\r\n* 12\r\n*\n! Illegal Command\r* -3\r\n";
-  for (std::size_t split = 0; split <= stream.size(); ++split)
-  {
-    flir::ReplyParser parser;
-    std::vector<flir::Reply> replies = parseText(parser, stream.substr(0, split));
-    const std::vector<flir::Reply> rest = parseText(parser, stream.substr(split));
-    replies.insert(replies.end(), rest.begin(), rest.end());
-    ASSERT_EQ(replies.size(), 5u) << "split at " << split;
-    EXPECT_EQ(replies[0].kind, flir::Reply::Kind::TEXT);
-    EXPECT_DOUBLE_EQ(replies[1].value, 12.0);
-    EXPECT_EQ(replies[2].kind, flir::Reply::Kind::ACK);
-    EXPECT_EQ(replies[3].kind, flir::Reply::Kind::ERROR);
-    EXPECT_DOUBLE_EQ(replies[4].value, -3.0);
-  }
-}
-
-TEST(FlirReplies, BinaryJunkAndOverlongLinesNeverBreakTheParser)
-{
-  flir::ReplyParser parser;
-  std::string junk(1000, 'x');
-  junk[10] = '\0';
-  junk[20] = '\x7F';
-  junk[30] = '\x01';
-  const std::vector<flir::Reply> replies = parseText(parser, junk + "\r\n* 5\r\n");
-  ASSERT_GE(replies.size(), 2u);
-  EXPECT_EQ(replies.front().kind, flir::Reply::Kind::TEXT);
-  EXPECT_LE(replies.front().text.size(), flir::ReplyParser::MAX_LINE);
-  EXPECT_EQ(replies.back().kind, flir::Reply::Kind::VALUE);
-  EXPECT_DOUBLE_EQ(replies.back().value, 5.0);
-}
-
-TEST(FlirCommands, Text)
-{
-  EXPECT_EQ(flir::command("PP", -557), "PP-557 ");
-  EXPECT_EQ(flir::command("TS", 1114), "TS1114 ");
-  EXPECT_EQ(flir::command("H"), "H ");
 }

@@ -1,206 +1,24 @@
 /**
  * \file
- * \brief What only the FLIR and Pelco-D protocols do, against their emulators over real pseudo-terminals (the
- * backend contract suite covers what every device does).
+ * \brief What only the Pelco-D protocol does, against its emulator over real pseudo-terminals, and start-up failures
+ * of the serial backends (the backend contract suite covers what every device does; test_flir_protocol.cpp the FLIR
+ * PTU).
  */
 #include <gtest/gtest.h>
 
+#include "line_test_support.h"
 #include "wait_until.h"
-
-#include <dirent.h>
-#include <unistd.h>
-
-#include <cmath>
-#include <fstream>
 
 #include "ptz_action_server/core/flir/flir_protocol.h"
 #include "ptz_action_server/core/pelco_d/pelco_d_protocol.h"
-#include "ptz_action_server/core/units.h"
-#include "ptz_action_server/emulators/flir_ptu_emulator.h"
 #include "ptz_action_server/emulators/pelco_d_emulator.h"
 
 using namespace ptz_action_server;
 
 namespace
 {
-const double FLIR_RESOLUTION = arcSecondsToRadians(185.1428);
-constexpr double WAIT = 20.0;
-/// s without a reply before the link is down: generous, a busy test machine may starve the I/O threads.
-constexpr double STATE_TIMEOUT = 1.0;
-
-std::string uniqueLink(const char* name)
-{
-  static int counter = 0;
-  return ::testing::TempDir() + "ptz_" + name + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
-}
-
-std::size_t openDescriptors()
-{
-  std::size_t count = 0;
-  DIR* directory = ::opendir("/proc/self/fd");
-  while (directory && ::readdir(directory))
-  {
-    ++count;
-  }
-  if (directory)
-  {
-    ::closedir(directory);
-  }
-  return count;
-}
-
-long residentKilobytes()
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-  {
-    if (line.rfind("VmRSS:", 0) == 0)
-    {
-      return std::stol(line.substr(6));
-    }
-  }
-  return -1;
-}
-
-LinkConfig serialLink(const std::string& path, unsigned baud)
-{
-  LinkConfig link;
-  link.path = path;
-  link.baud = baud;
-  return link;
-}
-
-bool atRest(const PtzBackend& backend, double pan, double tilt)
-{
-  const PtzSample sample = backend.sample();
-  return !sample.moving && std::abs(sample.position[PAN] - pan) < 2e-3 && std::abs(sample.position[TILT] - tilt) < 2e-3;
-}
-
-// ---------------------------------------------------------------- FLIR
-
-class FlirTest : public ::testing::Test
-{
-protected:
-  void SetUp() override
-  {
-    startWith(9600);
-  }
-
-  void startWith(unsigned baud)
-  {
-    backend_.reset();
-    emulator_.reset();
-    FlirPtuEmulatorConfig emulator_config;
-    emulator_config.port.link = uniqueLink("flir");
-    emulator_config.port.baud = baud;
-    emulator_ = std::make_unique<FlirPtuEmulator>(emulator_config);
-    FlirConfig config;
-    config.link = serialLink(emulator_config.port.link, baud);
-    config.session.state_timeout = STATE_TIMEOUT;
-    backend_ = makeFlirBackend(config);
-    backend_->start();
-    ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT));
-  }
-
-  bool received(const std::string& command) const
-  {
-    for (const ReceivedCommand& item : emulator_->received().items())
-    {
-      if (item.text == command)
-      {
-        return true;
-      }
-    }
-    return false;
-  }
-
-  std::unique_ptr<FlirPtuEmulator> emulator_;
-  std::unique_ptr<DeviceBackend> backend_;
-};
-
-TEST_F(FlirTest, StartupReadsResolutionLimitsAndSpeedsFromTheUnit)
-{
-  // The emulator started verbose, echoing, with a banner: the backend switched it to terse without echo.
-  EXPECT_TRUE(received("FT"));
-  EXPECT_TRUE(received("ED"));
-  EXPECT_TRUE(received("CI"));
-  const Capabilities capabilities = backend_->capabilities();
-  // The unit's pan is counter-clockwise positive: PX (3090) is the contract's minimum.
-  EXPECT_NEAR(capabilities.axes[PAN].range.min, -3090 * FLIR_RESOLUTION, 1e-9);
-  EXPECT_NEAR(capabilities.axes[PAN].range.max, 3090 * FLIR_RESOLUTION, 1e-9);
-  EXPECT_NEAR(capabilities.axes[TILT].range.min, -907 * FLIR_RESOLUTION, 1e-9);
-  EXPECT_NEAR(capabilities.axes[TILT].range.max, 604 * FLIR_RESOLUTION, 1e-9);
-  EXPECT_NEAR(capabilities.axes[PAN].max_speed, 1.5, 1e-3);
-  EXPECT_FALSE(capabilities.axes[ZOOM].present);
-  EXPECT_GT(backend_->protocol<FlirProtocol>().counters().unexpected_text, 0u);  // the banner
-  EXPECT_EQ(backend_->name(), "serial/flir");
-}
-
-TEST_F(FlirTest, VelocityGoalsUseVelocityModeWithTheUnitsSign)
-{
-  emulator_->received().clear();
-  backend_->moveAtVelocity({ 0.3, 0.0, 0.0 });
-  ASSERT_TRUE(waitUntil([&] { return backend_->sample().velocity[PAN] > 0.25; }, WAIT));
-  EXPECT_TRUE(received("CV"));
-  EXPECT_TRUE(received("PS-334"));                     // clockwise 0.3 rad/s is a negative pan speed for the unit
-  EXPECT_GT(emulator_->sample().velocity[PAN], 0.25);  // and the unit turns clockwise, as the contract asked
-  backend_->stop();
-  ASSERT_TRUE(waitUntil([&] { return !backend_->sample().moving; }, WAIT));
-}
-
-TEST_F(FlirTest, GarbledRepliesAreSurvived)
-{
-  emulator_->port().setGarbleRatio(0.02);
-  backend_->goTo({ 0.3, 0.1, 1.0 });
-  ASSERT_TRUE(waitUntil([&] { return emulator_->port().bytesGarbled() > 20; }, WAIT));
-  emulator_->port().setGarbleRatio(0.0);
-  ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT));
-  backend_->goTo({ -0.3, -0.1, 1.0 });
-  EXPECT_TRUE(waitUntil([&] { return atRest(*backend_, -0.3, -0.1); }, WAIT));
-}
-
-TEST_F(FlirTest, FiftyUnplugReplugCyclesKeepDescriptorsAndMemorySteady)
-{
-  startWith(115200);
-  // One cycle first, so lazily allocated buffers exist before counting.
-  emulator_->unplug();
-  ASSERT_TRUE(waitUntil([&] { return !backend_->sample().link_up; }, WAIT));
-  emulator_->replug();
-  ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT));
-  const std::size_t descriptors = openDescriptors();
-  const long memory = residentKilobytes();
-  for (int cycle = 0; cycle < 50; ++cycle)
-  {
-    emulator_->unplug();
-    ASSERT_TRUE(waitUntil([&] { return !backend_->sample().link_up; }, WAIT)) << "cycle " << cycle;
-    emulator_->replug();
-    ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT)) << "cycle " << cycle;
-  }
-  EXPECT_EQ(openDescriptors(), descriptors);
-  EXPECT_LT(residentKilobytes() - memory, 2048) << "resident memory grew by " << residentKilobytes() - memory << " kB";
-  EXPECT_EQ(backend_->sample().link_losses, 51u);
-}
-
-TEST(FlirTcp, AnEseriesUnitIsSetUpAfterItsBannerOnEveryConnection)
-{
-  FlirPtuEmulatorConfig emulator_config;
-  emulator_config.port.kind = DevicePortConfig::Kind::TCP;
-  FlirPtuEmulator emulator(emulator_config);
-  FlirConfig config;
-  config.link.kind = LinkKind::TCP;
-  config.link.port = emulator.port().tcpPort();
-  config.session.state_timeout = STATE_TIMEOUT;
-  auto backend = makeFlirBackend(config);
-  backend->start();
-  ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
-  // The banner's `Initializing...*` is no reply: it must not have been taken for FT's.
-  const std::vector<ReceivedCommand> commands = emulator.received().items();
-  ASSERT_FALSE(commands.empty());
-  EXPECT_EQ(commands.front().text, "FT");
-  EXPECT_EQ(backend->protocol<FlirProtocol>().counters().errors, 0u);
-  EXPECT_NEAR(backend->capabilities().axes[PAN].range.max, 3090 * FLIR_RESOLUTION, 1e-9);
-}
+constexpr double WAIT = LINE_TEST_WAIT;
+constexpr double STATE_TIMEOUT = LINE_TEST_STATE_TIMEOUT;
 
 // ---------------------------------------------------------------- Pelco-D
 

@@ -68,7 +68,8 @@ public:
   }
   /// Seconds one byte takes on the wire (0 on TCP).
   virtual double byteTime() const = 0;
-  /// Queues bytes for the client (paced on a pseudo-terminal). Any thread.
+  /// Queues bytes for the client (paced on a pseudo-terminal; lost if no client has the port open when they are sent
+  /// or leave, as on a real line). Any thread.
   virtual void send(const std::uint8_t* data, std::size_t size) = 0;
   void send(const std::string& text)
   {
@@ -91,6 +92,11 @@ public:
   std::uint64_t bytesGarbled() const
   {
     return bytes_garbled_;
+  }
+  /// pty: bytes sent while no client had the port open (or leaving after it closed it).
+  virtual std::uint64_t bytesLost() const
+  {
+    return 0;
   }
 
 protected:

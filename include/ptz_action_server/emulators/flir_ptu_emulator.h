@@ -1,14 +1,13 @@
 /**
  * \file
- * \brief A FLIR PTU emulator on a pseudo-terminal: the unit's ASCII protocol over the simulated motion model.
+ * \brief A FLIR PTU emulator on a pseudo-terminal or TCP: the unit's ASCII protocol over the simulated motion model.
  */
 #pragma once
 
-#include <condition_variable>
-#include <memory>
+#include <array>
+#include <deque>
 #include <mutex>
 #include <string>
-#include <vector>
 
 #include "ptz_action_server/core/sim_device_model.h"
 #include "ptz_action_server/emulators/line_emulator.h"
@@ -23,11 +22,13 @@ struct FlirPtuEmulatorConfig
   long pan_max = 3090;
   long tilt_min = -907;
   long tilt_max = 604;
-  double pan_max_speed = 1.5;   ///< rad/s
-  double tilt_max_speed = 1.0;  ///< rad/s
-  double acceleration = 3.0;    ///< rad/s^2
-  /// Start verbose, with echo, and print a banner (at power-up on a serial line; on every connection over TCP, ending
-  /// `Initializing...*` once the unit is ready), as a real unit does.
+  double pan_max_speed = 1.5;   ///< rad/s (PU)
+  double tilt_max_speed = 1.0;  ///< rad/s (TU)
+  double acceleration = 3.0;    ///< rad/s^2 (PA, TA)
+  long lower_speed = 31;        ///< positions/s: PL / TL at power-up, and the least they can be set to (a D46)
+  long base_speed = 1000;       ///< positions/s: PB / TB at power-up (a D46)
+  /// Start verbose, with echo, and print a banner (at power-up and reset on a serial line, to a client that has the
+  /// port open; on every connection over TCP, ending `Initializing...*` once the unit is ready), as a real unit does.
   bool banner = true;
 };
 
@@ -39,12 +40,15 @@ struct ReceivedCommand
 };
 
 /**
- * \brief Speaks the FLIR PTU protocol on a pseudo-terminal.
+ * \brief Speaks the FLIR PTU protocol (published-wire-facts.md section 3) on a pseudo-terminal or TCP.
  *
- * Starts like a unit at power-up: a banner, echo on, verbose replies, position mode. Understands FT/FV, ED/EE,
- * CI/CV, PR/TR, PN/PX/TN/TX, PU/TU, PP/TP (query, absolute), PO/TO (relative), PS/TS (speed; signed velocity in CV
- * mode), PA/TA, H/HP/HT, R, LE/LD; answers anything else with `! Illegal Command`. Reports `!P` / `!T` when a
- * velocity move reaches a limit.
+ * Starts like a unit at power-up: echo on (each command is echoed as it arrives, a CR or LF delimiter as a line
+ * break), verbose replies, position mode; on a serial line its banner is lost unless a client has the port open
+ * then, as on a real line. Replies end CR LF. Understands FT/FV/F, ED/EE/E, CI/CV/C, PR/TR, PN/PX/TN/TX, PU/TU,
+ * PL/TL, PB/TB, PA/TA, PP/TP (query, absolute), PO/TO (relative), PS/TS (speed; signed velocity in CV mode),
+ * H/HP/HT, LE/LD, R (a reset: the banner and power-up modes, then the calibration) and RE (the calibration only):
+ * the calibration runs each axis to both its limits and home, then answers `!T!T!P!P*`; the unit reads nothing
+ * meanwhile. Anything else is answered `! Illegal Command`. Reports `!P` / `!T` when a velocity move reaches a limit.
  */
 class FlirPtuEmulator : public LineEmulator<ReceivedCommand>
 {
@@ -53,16 +57,38 @@ public:
   ~FlirPtuEmulator() override;
 
 private:
+  /// One leg of the reset calibration: \p axis runs to \p target, then the unit says \p report.
+  struct CalibrationStep
+  {
+    Axis axis;
+    long target;  ///< positions
+    const char* report;
+  };
+
   void onBytes(const std::uint8_t* data, std::size_t size, TimePoint arrived_at);
   void onTick();
-  void execute(const std::string& command, TimePoint at);
+  /// Echoes \p character as the unit does (a CR or LF delimiter as one line break).
+  void echo(char character, std::string& out);
+  /// Runs one command; returns its reply line without the line end (empty: nothing now).
+  std::string execute(const std::string& command, TimePoint at);
+  // flir_ptu_emulator_answers.cpp: the reply to each command.
   std::string reply(const std::string& letters, bool has_value, long value, TimePoint at);
-  /// Position mode, the default speeds; on a serial line the banner, echo on, verbose.
+  std::string replyToAxisSetting(const std::string& letters, bool has_value, long value, TimePoint at);
+  std::string replyToMotion(const std::string& letters, bool has_value, long value, TimePoint at);
+  /// Position mode, the power-up speeds; on a serial line the banner, echo on, verbose.
   void powerUp() override;
   /// tcp: an E-series unit greets every connection (echo on, verbose, a banner).
   void greet();
+  /// `R` / `RE`: the axes run to their limits and home; the answer comes at the end.
+  void startCalibration(TimePoint at);
+  /// The calibration's reports due at \p now, appended to \p out.
+  void calibrate(TimePoint now, std::string& out);
   long position(Axis axis, TimePoint at);
   double toRadians(Axis axis, long position) const;
+  std::size_t axisIndex(Axis axis) const
+  {
+    return axis == PAN ? 0 : 1;
+  }
 
   const FlirPtuEmulatorConfig config_;
   const double resolution_rad_;
@@ -71,10 +97,16 @@ private:
   bool echo_ = true;
   bool terse_ = false;
   bool velocity_mode_ = false;
-  std::array<long, 2> speed_{ { 0, 0 } };     ///< PS / TS setting (positions/s)
-  std::array<long, 2> velocity_{ { 0, 0 } };  ///< commanded velocity in CV mode (positions/s)
+  bool limits_enforced_ = true;
+  std::array<long, 2> speed_{ { 0, 0 } };         ///< PS / TS setting (positions/s)
+  std::array<long, 2> velocity_{ { 0, 0 } };      ///< commanded velocity in CV mode (positions/s)
+  std::array<long, 2> lower_speed_{ { 0, 0 } };   ///< PL / TL (positions/s)
+  std::array<long, 2> base_speed_{ { 0, 0 } };    ///< PB / TB (positions/s)
+  std::array<long, 2> acceleration_{ { 0, 0 } };  ///< PA / TA (positions/s^2), answered, not modelled
   std::array<bool, 2> limit_reported_{ { false, false } };
   std::string token_;
+  bool after_cr_ = false;  ///< the last byte echoed was a CR (an LF right after it adds no line break)
+  std::deque<CalibrationStep> calibration_;
   TimePoint banner_ready_at_{};  ///< tcp: when the banner's last line goes out (the unit needs a moment)
   bool banner_pending_ = false;
 };

@@ -67,6 +67,12 @@ public:
   void replug()
   {
     port_->replug();
+    powerCycle();
+  }
+  /// The unit loses power and comes back while the port stays open: it stopped, and starts as at power-up (what it
+  /// says then, a FLIR PTU's banner, reaches a client that has the port open).
+  void powerCycle()
+  {
     std::lock_guard<std::mutex> lock(mutex_);
     model_.stop(SteadyClock::now());
     powerUp();

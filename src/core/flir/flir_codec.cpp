@@ -20,66 +20,101 @@ std::string trim(const std::string& text)
   return text.substr(first, last - first + 1);
 }
 
-/// The last number (-12, 3.5, 185.1428) in \p text; false if there is none.
-bool lastNumber(const std::string& text, double& value)
+/// The first number (-12, 3.5, 185.1428) in \p text; false if there is none. Verbose replies put the value first and
+/// may carry other numbers after it (`* Pan acceleration is 2000 positions/sec^2`).
+bool firstNumber(const std::string& text, double& value)
 {
-  std::size_t end = text.size();
-  while (end > 0 && !std::isdigit(static_cast<unsigned char>(text[end - 1])))
+  for (std::size_t index = 0; index < text.size(); ++index)
   {
-    --end;
+    if (!std::isdigit(static_cast<unsigned char>(text[index])))
+    {
+      continue;
+    }
+    const std::size_t begin = index > 0 && text[index - 1] == '-' ? index - 1 : index;
+    std::size_t end = index;
+    while (end < text.size() && (std::isdigit(static_cast<unsigned char>(text[end])) || text[end] == '.'))
+    {
+      ++end;
+    }
+    const std::string number = text.substr(begin, end - begin);
+    char* parsed_end = nullptr;
+    value = std::strtod(number.c_str(), &parsed_end);
+    return parsed_end != number.c_str();
   }
-  if (end == 0)
-  {
-    return false;
-  }
-  std::size_t begin = end;
-  while (begin > 0 && (std::isdigit(static_cast<unsigned char>(text[begin - 1])) || text[begin - 1] == '.'))
-  {
-    --begin;
-  }
-  if (begin > 0 && text[begin - 1] == '-')
-  {
-    --begin;
-  }
-  const std::string number = text.substr(begin, end - begin);
-  char* parsed_end = nullptr;
-  value = std::strtod(number.c_str(), &parsed_end);
-  return parsed_end != number.c_str();
+  return false;
 }
-}  // namespace
 
-Reply classifyLine(const std::string& line)
+bool contains(const std::string& text, const char* part)
+{
+  return text.find(part) != std::string::npos;
+}
+
+/// A line of a start-up banner: the E-series' (`### PAN-TILT CONTROLLER`, `### v3.3.0, (C)2010-2011 FLIR Commercial
+/// Systems, Inc., All Rights Reserved`, `Initializing...*`) or one like it.
+bool isBannerLine(const std::string& trimmed)
+{
+  std::string lower;
+  for (const char character : trimmed)
+  {
+    lower.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(character))));
+  }
+  return trimmed.rfind("###", 0) == 0 || trimmed.rfind(BANNER_END, 0) == 0 || contains(lower, "pan-tilt controller") ||
+         contains(lower, "pan tilt controller") || contains(lower, "directed perception") ||
+         contains(lower, "flir commercial systems") || contains(lower, "all rights reserved");
+}
+
+/// What a line without limit reports is.
+Reply classifyRest(const std::string& line)
 {
   Reply reply;
-  if (trim(line).rfind(BANNER_END, 0) == 0)
+  const std::string trimmed = trim(line);
+  if (isBannerLine(trimmed))
   {
-    // The banner's last line; an E-series unit ends it with `*` when it is ready, which is no reply to anything.
-    reply.text = trim(line);
+    // An E-series unit ends its banner with `Initializing...*` once it is ready, which is no reply to anything.
+    reply.kind = Reply::Kind::BANNER;
+    reply.text = trimmed;
     return reply;
   }
   const std::size_t start = line.find_first_of("*!");
   if (start == std::string::npos)
   {
     reply.text = line;
-    return reply;  // TEXT: a banner, an echo, noise
+    return reply;  // TEXT: an echo without a reply, noise
   }
   const std::string rest = trim(line.substr(start + 1));
   if (line[start] == '!')
   {
-    const bool limit = !rest.empty() && (rest[0] == 'P' || rest[0] == 'T') &&
-                       (rest.size() == 1 || !std::isalpha(static_cast<unsigned char>(rest[1])));
-    if (limit)
-    {
-      reply.kind = Reply::Kind::LIMIT;
-      reply.axis = rest[0];
-      return reply;
-    }
     reply.kind = Reply::Kind::ERROR;
     reply.text = rest.empty() ? "error" : rest;
     return reply;
   }
-  reply.kind = lastNumber(rest, reply.value) ? Reply::Kind::VALUE : Reply::Kind::ACK;
+  reply.kind = firstNumber(rest, reply.value) ? Reply::Kind::VALUE : Reply::Kind::ACK;
   return reply;
+}
+}  // namespace
+
+void classifyLine(const std::string& line, std::vector<Reply>& replies)
+{
+  // `!P` / `!T` come whenever a limit is hit, with no line end of their own: take them out wherever they are. (An
+  // error is `! <message>`, with a space.)
+  std::string rest;
+  for (std::size_t index = 0; index < line.size(); ++index)
+  {
+    if (line[index] == '!' && index + 1 < line.size() && (line[index + 1] == 'P' || line[index + 1] == 'T'))
+    {
+      Reply limit;
+      limit.kind = Reply::Kind::LIMIT;
+      limit.axis = line[index + 1];
+      replies.push_back(limit);
+      ++index;
+      continue;
+    }
+    rest.push_back(line[index]);
+  }
+  if (!trim(rest).empty())
+  {
+    replies.push_back(classifyRest(rest));
+  }
 }
 
 void ReplyParser::feed(const std::uint8_t* data, std::size_t size, std::vector<Reply>& replies)
@@ -89,10 +124,7 @@ void ReplyParser::feed(const std::uint8_t* data, std::size_t size, std::vector<R
     const char character = static_cast<char>(data[index]);
     if (character == '\r' || character == '\n')
     {
-      if (!trim(line_).empty())
-      {
-        replies.push_back(classifyLine(line_));
-      }
+      classifyLine(line_, replies);
       line_.clear();
       continue;
     }

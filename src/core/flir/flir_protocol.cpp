@@ -9,18 +9,21 @@ namespace ptz_action_server
 {
 namespace
 {
-/// Longest exchange: a command like "PP-12345 " and a verbose reply.
-constexpr std::size_t EXCHANGE_BYTES = 48;
+/// Longest exchange: a command like "PR " with its echo and a verbose reply ("* 185.1428 seconds arc per Pan
+/// position"), or "PP-12345 " and its answer.
+constexpr std::size_t EXCHANGE_BYTES = 64;
+/// Positions of a sane unit: beyond this a "limit" is a misread (a D46 has +-3090, resolutions of a few arc-seconds).
+constexpr double MAX_POSITIONS = 1e8;
 }  // namespace
 
 FlirProtocol::FlirProtocol(const FlirSettings& settings, DeviceSession& session)
   : settings_(settings)
   , session_(session)
+  , reply_timeout_(replyTimeout(session.linkConfig(), settings.reply_timeout, EXCHANGE_BYTES))
   , channel_(
         session.context(), session.clock(), [&session](const std::string& bytes) { session.write(bytes); },
-        replyTimeout(session.linkConfig(), settings.reply_timeout, EXCHANGE_BYTES),
-        [this](const TransactionChannel::Request& lost) { onTimeout(lost); })
-  , banner_timer_(session.context())
+        reply_timeout_, [this](const TransactionChannel::Request& lost) { onTimeout(lost); })
+  , wait_timer_(session.context())
 {
 }
 
@@ -49,32 +52,54 @@ Capabilities FlirProtocol::unitCapabilities() const
 
 void FlirProtocol::onConnected()
 {
-  channel_.reset();
   parser_.reset();
   ready_ = false;
-  awaiting_banner_ = session_.linkConfig().kind == LinkKind::TCP;
-  if (!awaiting_banner_)
-  {
-    queueSetup();
-    return;
-  }
-  // An E-series unit greets every TCP connection with a banner and takes commands once it ends: wait for it, but not
-  // forever (other firmware may not send one).
-  banner_timer_.expires_after(toDuration(settings_.banner_timeout));
-  banner_timer_.async_wait([this](const boost::system::error_code& error) {
-    if (!error && awaiting_banner_)
-    {
-      awaiting_banner_ = false;
-      queueSetup();
-    }
-  });
+  // An E-series unit greets every TCP connection with a banner and takes commands once it ends. On a serial line, the
+  // unit may still be saying something (a banner, the answer to a request of the last connection): let it finish.
+  setUpAfter(session_.linkConfig().kind == LinkKind::TCP ? Wait::BANNER_END : Wait::QUIET);
 }
 
 void FlirProtocol::onDisconnected()
 {
   channel_.reset();
-  banner_timer_.cancel();
+  wait_timer_.cancel();
+  waiting_ = Wait::NOTHING;
   ready_ = false;
+}
+
+void FlirProtocol::setUpAfter(Wait wait)
+{
+  channel_.reset();
+  waiting_ = wait;
+  last_bytes_at_ = session_.now();
+  wait_deadline_ = addSeconds(last_bytes_at_, settings_.banner_timeout);
+  armWaitTimer();
+}
+
+void FlirProtocol::armWaitTimer()
+{
+  TimePoint due = wait_deadline_;
+  if (waiting_ == Wait::QUIET)
+  {
+    due = std::min(due, addSeconds(last_bytes_at_, reply_timeout_));
+  }
+  wait_timer_.expires_after(toDuration(std::max(0.0, secondsBetween(session_.now(), due))));
+  wait_timer_.async_wait([this](const boost::system::error_code& error) {
+    if (error || waiting_ == Wait::NOTHING)
+    {
+      return;
+    }
+    const TimePoint now = session_.now();
+    const bool quiet = waiting_ == Wait::QUIET && secondsBetween(last_bytes_at_, now) >= reply_timeout_;
+    if (quiet || now >= wait_deadline_)
+    {
+      // Other firmware may send no banner, or never fall quiet: the set-up goes out anyway, and retries.
+      waiting_ = Wait::NOTHING;
+      queueSetup();
+      return;
+    }
+    armWaitTimer();  // the unit spoke meanwhile
+  });
 }
 
 void FlirProtocol::queueSetup()
@@ -154,42 +179,68 @@ void FlirProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
   addCounts(values, { { "replies", counters_.replies },
                       { "device errors", counters_.errors },
                       { "limit hits", counters_.limit_hits },
+                      { "banner lines", counters_.banner_lines },
+                      { "restarts", counters_.restarts },
+                      { "unusable replies", counters_.unusable_replies },
                       { "unexpected text lines", counters_.unexpected_text } });
   channel_.diagnostics(values);
 }
 
 void FlirProtocol::onReceived(const std::uint8_t* data, std::size_t size)
 {
+  last_bytes_at_ = session_.now();
   std::vector<flir::Reply> replies;
   parser_.feed(data, size, replies);
   for (const flir::Reply& reply : replies)
   {
+    if (!session_.connected())
+    {
+      return;  // a restart dropped this connection: the rest belongs to no one
+    }
     handleReply(reply);
   }
 }
 
 void FlirProtocol::handleReply(const flir::Reply& reply)
 {
-  if (reply.endsBanner() && awaiting_banner_)
+  switch (reply.kind)
   {
-    awaiting_banner_ = false;
-    banner_timer_.cancel();
-    queueSetup();
-    return;
-  }
-  if (reply.kind == flir::Reply::Kind::TEXT || reply.kind == flir::Reply::Kind::LIMIT)
-  {
-    ++(reply.kind == flir::Reply::Kind::TEXT ? counters_.unexpected_text : counters_.limit_hits);
-    return;
+    case flir::Reply::Kind::LIMIT:
+      ++counters_.limit_hits;  // whenever a limit is hit: never the answer to a request
+      return;
+    case flir::Reply::Kind::BANNER:
+      handleBanner(reply);
+      return;
+    case flir::Reply::Kind::TEXT:
+      ++counters_.unexpected_text;
+      return;
+    case flir::Reply::Kind::ACK:
+    case flir::Reply::Kind::VALUE:
+    case flir::Reply::Kind::ERROR:
+      break;
   }
   const std::optional<TransactionChannel::Request> answered = channel_.complete();
   if (!answered)
   {
-    return;  // late: the channel counts it
+    return;  // late, or nothing asked: the channel counts it
   }
   ++counters_.replies;
   session_.reportAlive();
   handleAnswer(*answered, reply);
+}
+
+void FlirProtocol::handleBanner(const flir::Reply& reply)
+{
+  ++counters_.banner_lines;
+  if (ready_)
+  {
+    // A power cycle: the unit forgot the goal, terse mode, echo off and its speeds. Whatever it was asked is lost.
+    ++counters_.restarts;
+    session_.disconnect("the FLIR PTU restarted (it sent its start-up banner)");
+    return;
+  }
+  // The unit (re)started during the set-up: what was on the wire is lost. Start again once it has finished talking.
+  setUpAfter(reply.endsBanner() ? Wait::QUIET : Wait::BANNER_END);
 }
 
 void FlirProtocol::handleAnswer(const TransactionChannel::Request& request, const flir::Reply& reply)
@@ -203,7 +254,16 @@ void FlirProtocol::handleAnswer(const TransactionChannel::Request& request, cons
       std::string sent = request.bytes;
       sent.erase(sent.find_last_not_of(' ') + 1);
       session_.reportFault("the FLIR PTU refused '" + sent + "': " + reply.text, request.command);
+      return;
     }
+  }
+  if (tag == SETUP || tag == COMMAND)
+  {
+    return;  // acknowledged (a verbose acknowledgement may carry a number)
+  }
+  if (reply.kind != flir::Reply::Kind::VALUE || !std::isfinite(reply.value) || std::abs(reply.value) > MAX_POSITIONS)
+  {
+    unusable(tag);
     return;
   }
   const double value = reply.value;
@@ -226,22 +286,50 @@ void FlirProtocol::handleAnswer(const TransactionChannel::Request& request, cons
       break;
     case TILT_SPEED_MAX:
       speed_max_[1] = std::lround(value);
-      if (pan_resolution_ > 0.0 && tilt_resolution_ > 0.0)
+      if (!plausible())
       {
-        ready_ = true;
-        session_.setCapabilities(unitCapabilities());
-        session_.ready();
+        unusable(tag);
+        break;
       }
+      ready_ = true;
+      session_.setCapabilities(unitCapabilities());
+      session_.ready();
       break;
     case PAN_POSITION:
       polled_pan_ = -value * pan_resolution_;
+      pan_polled_ = true;
       break;
     case TILT_POSITION:
-      session_.reportState(AxisValues{ { polled_pan_, value * tilt_resolution_, 1.0 } });
+      if (pan_polled_)
+      {
+        session_.reportState(AxisValues{ { polled_pan_, value * tilt_resolution_, 1.0 } });
+      }
+      pan_polled_ = false;
       break;
     case SETUP:
     case COMMAND:
       break;
+  }
+}
+
+bool FlirProtocol::plausible() const
+{
+  return pan_resolution_ > 0.0 && tilt_resolution_ > 0.0 && limits_[0] < limits_[1] && limits_[2] < limits_[3] &&
+         speed_max_[0] > 0 && speed_max_[1] > 0;
+}
+
+void FlirProtocol::unusable(Tag tag)
+{
+  ++counters_.unusable_replies;
+  if (tag == PAN_POSITION)
+  {
+    pan_polled_ = false;  // the TP that follows has no pan to go with it
+  }
+  if (!ready_)
+  {
+    // The answers are out of step with the questions (something the unit said before was taken for one): start again
+    // once the line is quiet.
+    setUpAfter(Wait::QUIET);
   }
 }
 

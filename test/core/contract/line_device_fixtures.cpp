@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "../line_test_support.h"
 #include "device_fixtures_internal.h"
 #include "ptz_action_server/core/flir/flir_protocol.h"
 #include "ptz_action_server/core/pelco_d/pelco_d_protocol.h"
@@ -111,7 +112,7 @@ public:
   std::string prepareRefusal(AxisValues& goal) override
   {
     goal = AxisValues{ { 3.0, 0.0, 1.0 } };  // beyond the unit's pan limit (3090 positions, 2.77 rad)
-    return "the FLIR PTU refused 'PP-3342': Maximum allowable Pan position exceeded";
+    return "the FLIR PTU refused 'PP-3342': Minimum allowable Pan position is -3090";
   }
   void expectGoalCommands(const std::vector<DeviceCommand>& commands, const AxisValues& target) const override
   {

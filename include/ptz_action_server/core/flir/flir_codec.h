@@ -3,10 +3,12 @@
  * \brief The FLIR (Directed Perception) PTU ASCII protocol: command text and a reply parser that survives any input.
  *
  * A command is `<letters>[<integer>]` ended by a space. In terse mode (`FT`) the unit answers `*` to a command,
- * `* <value>` to a query and `! <message>` to an error; `!P` / `!T` report a pan / tilt limit hit; every reply
- * line ends with CR LF. Before `ED` the unit echoes what it receives, before `FT` its replies are verbose
- * ("* Current Pan position is 1234"), and at power-up it prints a banner. Positions are encoder steps; the unit's
- * positive pan is counter-clockwise, the opposite of ptz_action_server's.
+ * `* <value>` to a query and `! <message>` to an error; every reply line ends with CR LF. `!P` / `!T` report a pan /
+ * tilt limit hit whenever it happens, without a line end of their own, so they may lead any line (a reset answers
+ * `!T!T!P!P*`). Before `ED` the unit echoes what it receives ahead of its reply (`PP * 12`; a CR delimiter is echoed
+ * as a line break), before `FT` its replies are verbose ("* Current pan position is 1234"), and it prints a banner at
+ * power-up (an E-series unit on every TCP connection). Positions are encoder steps; the unit's positive pan is
+ * counter-clockwise, the opposite of ptz_action_server's.
  */
 #pragma once
 
@@ -21,31 +23,36 @@ namespace flir
 /// How the unit's start-up banner ends: `Initializing...` (E-series on TCP: `Initializing...*`, once it is ready).
 constexpr const char* BANNER_END = "Initializing";
 
-/// One reply line, classified.
+/// What the unit said: a reply to a request, a limit report, its banner, or other text.
 struct Reply
 {
   enum class Kind
   {
-    ACK,    ///< `*` without a number
-    VALUE,  ///< `*` with a number: the last number on the line (terse or verbose)
-    ERROR,  ///< `! message`
-    LIMIT,  ///< `!P` or `!T`: a limit was hit (not an answer to a command)
-    TEXT,   ///< anything else: banners (including `Initializing...*`), echoes without a reply, noise
+    ACK,     ///< `*` without a number (after any echo: `ED *`)
+    VALUE,   ///< `*` with a number: the first number after it (terse `* 12`, verbose `* Current pan position is 12`)
+    ERROR,   ///< `! message`
+    LIMIT,   ///< `!P` or `!T`: a limit was hit (never an answer to a request)
+    BANNER,  ///< a line of the start-up banner (`### PAN-TILT CONTROLLER`, ..., `Initializing...*`): no reply either
+    TEXT,    ///< anything else: an echo without a reply (`TP` before a CR), noise
   };
   Kind kind = Kind::TEXT;
   double value = 0.0;  ///< VALUE
   char axis = 0;       ///< LIMIT: 'P' or 'T'
-  std::string text;    ///< ERROR: the message; TEXT: the line
+  std::string text;    ///< ERROR: the message; BANNER, TEXT: the line
 
   /// The banner's last line: the unit has finished starting.
   bool endsBanner() const
   {
-    return kind == Kind::TEXT && text.rfind(BANNER_END, 0) == 0;
+    return kind == Kind::BANNER && text.rfind(BANNER_END, 0) == 0;
   }
 };
 
-/// Classifies one line (without its line end). Never throws.
-Reply classifyLine(const std::string& line);
+/**
+ * \brief Classifies one line (without its line end) and appends what it says to \p replies: first a LIMIT for each
+ * `!P` / `!T` anywhere in it, then what the rest of the line is (nothing if only limit reports were left). Never
+ * throws.
+ */
+void classifyLine(const std::string& line, std::vector<Reply>& replies);
 
 /**
  * \brief Splits a byte stream into reply lines (CR and/or LF end a line) and classifies them.

@@ -15,11 +15,12 @@ namespace ptz_action_server
 /// What only the FLIR protocol needs to know.
 struct FlirSettings
 {
-  double pan_speed = 1.5;       ///< rad/s of position goals (PS); capped by the unit's upper speed (PU)
-  double tilt_speed = 1.0;      ///< rad/s (TS)
-  double acceleration = 3.0;    ///< rad/s^2, for goal timeouts
-  double reply_timeout = 0.0;   ///< s for one reply; 0: the exchange's wire time plus 100 ms
-  double banner_timeout = 3.0;  ///< tcp: s to wait for the per-connection banner before the set-up goes out anyway
+  double pan_speed = 1.5;      ///< rad/s of position goals (PS); capped by the unit's upper speed (PU)
+  double tilt_speed = 1.0;     ///< rad/s (TS)
+  double acceleration = 3.0;   ///< rad/s^2, for goal timeouts
+  double reply_timeout = 0.0;  ///< s for one reply; 0: the exchange's wire time plus 100 ms
+  /// s the set-up waits at most for a banner to end (tcp: the per-connection banner) or for the line to fall quiet
+  double banner_timeout = 3.0;
 };
 
 /// Everything a FLIR backend is built from.
@@ -35,20 +36,29 @@ struct FlirConfig
 struct FlirCounters
 {
   Counter replies;
-  Counter errors;           ///< `!` replies to commands
-  Counter limit_hits;       ///< `!P` / `!T`
-  Counter unexpected_text;  ///< banners, echoes, noise
+  Counter errors;            ///< `!` replies to commands
+  Counter limit_hits;        ///< `!P` / `!T`
+  Counter banner_lines;      ///< lines of a start-up banner
+  Counter restarts;          ///< banners after the set-up: the unit restarted under us
+  Counter unusable_replies;  ///< a query answered without a usable number, or a set-up that made no sense
+  Counter unexpected_text;   ///< echoes without a reply, noise
 };
 
 /**
  * \brief The FLIR PTU ASCII protocol over a DeviceSession.
  *
- * At every (re)connection (after the banner, on TCP): terse mode, echo off, position mode (`FT ED CI`), then the
- * resolutions (`PR`/`TR`), the position limits (`PN`/`PX`/`TN`/`TX`) and upper speeds (`PU`/`TU`) are read from the
- * unit. Position goals are `PS TS PP TP`, velocity goals switch to velocity mode (`CV`) and set signed `PS TS`,
- * cancel is `H`. The position is polled (`PP`, `TP`) whenever the line is free, so PtzState reads a cache and never
- * waits on the wire. The unit's counter-clockwise pan is inverted to the contract's clockwise pan. A `!` reply to a
- * command is a device fault (the goal aborts with the unit's message); `!P` / `!T` and unexpected text are counted.
+ * At every (re)connection, once the line is quiet (on TCP, once the banner has ended): terse mode, echo off, position
+ * mode (`FT ED CI`), then the resolutions (`PR`/`TR`), the position limits (`PN`/`PX`/`TN`/`TX`) and upper speeds
+ * (`PU`/`TU`) are read from the unit; answers that make no sense start the set-up again. Position goals are
+ * `PS TS PP TP`, velocity goals switch to velocity mode (`CV`) and set signed `PS TS`, cancel is `H`. The position is
+ * polled (`PP`, `TP`) whenever the line is free, so PtzState reads a cache and never waits on the wire. The unit's
+ * counter-clockwise pan is inverted to the contract's clockwise pan.
+ *
+ * Whatever a unit says besides its replies is never taken for one: echoes and verbose replies are read through,
+ * `!P` / `!T` are counted wherever they come, and a banner during the set-up starts it again once the banner has
+ * ended. A banner after the set-up means the unit restarted (a power cycle): it has forgotten the goal, its modes and
+ * speeds, so the connection is dropped as lost ("the FLIR PTU restarted") and set up afresh. A `!` reply to a command
+ * is a device fault (the goal aborts with the unit's message).
  */
 class FlirProtocol : public DeviceProtocol
 {
@@ -65,8 +75,8 @@ public:
   }
   /// No zoom; pan and tilt are unknown until the unit has told its limits (see onConnected()).
   Capabilities capabilities() const override;
-  /// On TCP, waits for the E-series banner; then `FT ED CI` and the queries of the unit's resolution, limits and
-  /// upper speeds. The link is ready when the last answer is in.
+  /// Waits for the line to fall quiet (on TCP, for the E-series banner); then `FT ED CI` and the queries of the unit's
+  /// resolution, limits and upper speeds. The link is ready when the last answer is in and makes sense.
   void onConnected() override;
   /// Reply lines, each matched to the one request on the wire.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
@@ -104,23 +114,42 @@ private:
     COMMAND,  ///< anything acknowledged with *
   };
 
+  /// What the set-up waits for before it goes out.
+  enum class Wait
+  {
+    NOTHING,     ///< it went out
+    BANNER_END,  ///< the banner's last line (`Initializing...`), then a quiet line
+    QUIET,       ///< no byte from the unit for a reply time: nothing it still says can be taken for an answer
+  };
+
   void handleReply(const flir::Reply& reply);
+  void handleBanner(const flir::Reply& reply);
   void handleAnswer(const TransactionChannel::Request& request, const flir::Reply& reply);
+  /// A query answered without its number, or a set-up that made no sense: counted; the set-up starts again.
+  void unusable(Tag tag);
   void onTimeout(const TransactionChannel::Request& lost);
+  /// Forgets what is on the wire and sends the set-up once \p wait is over (at most banner_timeout from now).
+  void setUpAfter(Wait wait);
+  void armWaitTimer();
   void queueSetup();
   void request(const std::string& text, Tag tag);
+  bool plausible() const;
   Capabilities unitCapabilities() const;
 
   const FlirSettings settings_;
   DeviceSession& session_;
+  const double reply_timeout_;  ///< s: how long the unit may take to answer, and how long a quiet line must last
   TransactionChannel channel_;
   flir::ReplyParser parser_;
-  boost::asio::steady_timer banner_timer_;
+  boost::asio::steady_timer wait_timer_;
   FlirCounters counters_;
 
   // I/O thread only.
-  bool awaiting_banner_ = false;
+  Wait waiting_ = Wait::NOTHING;
+  TimePoint wait_deadline_{};    ///< the set-up goes out then, whatever the line does
+  TimePoint last_bytes_at_{};    ///< when the unit last said anything
   bool ready_ = false;           ///< the set-up of this connection is complete
+  bool pan_polled_ = false;      ///< polled_pan_ is from the PP just before the TP being answered
   double polled_pan_ = 0.0;      ///< rad, from the last PP
   double pan_resolution_ = 0.0;  ///< rad per position
   double tilt_resolution_ = 0.0;
