@@ -7,8 +7,19 @@
 
 namespace ptz_action_server
 {
+namespace
+{
+/// The motion model: the pan may turn at the turbo speed too.
+SimDeviceConfig modelConfig(const PelcoDEmulatorConfig& config)
+{
+  SimDeviceConfig model = config.device;
+  model.axes[PAN].motion.max_speed = std::max(model.axes[PAN].motion.max_speed, config.pan_turbo_speed);
+  return model;
+}
+}  // namespace
+
 PelcoDEmulator::PelcoDEmulator(const PelcoDEmulatorConfig& config)
-  : LineEmulator(config.device), config_(config), parser_(config.address, false)
+  : LineEmulator(modelConfig(config)), config_(config), parser_(config.address, false)
 {
   openPort(config.port,
            DevicePort::Handlers{
@@ -109,11 +120,14 @@ std::vector<std::uint8_t> PelcoDEmulator::execute(const pelco::Frame& frame, Tim
       {
         break;  // another extended command: not modelled
       }
-      // The standard movement command (all zero: stop). Speeds 0..0x3F scale the max speed; 0x40 is turbo.
+      // The standard movement command (all zero: stop). Speeds 0..0x3F scale the speed at 0x3F; a pan byte above it
+      // is turbo.
       const auto speed = [](std::uint8_t value, double max_speed) {
         return std::min(1.0, value / static_cast<double>(pelco::MAX_SPEED)) * max_speed;
       };
-      const double pan_speed = speed(frame.data1, config_.device.axes[PAN].motion.max_speed);
+      const double pan_speed = frame.data1 > pelco::MAX_SPEED && config_.pan_turbo_speed > 0.0 ?
+                                   config_.pan_turbo_speed :
+                                   speed(frame.data1, config_.device.axes[PAN].motion.max_speed);
       const double tilt_speed = speed(frame.data2, config_.device.axes[TILT].motion.max_speed);
       const double zoom_rate = config_.device.axes[ZOOM].motion.max_speed;
       const std::uint8_t bits = frame.command2;

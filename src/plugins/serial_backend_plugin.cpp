@@ -60,9 +60,8 @@ public:
     pelco_settings.reply_timeout = reply_timeout;
     const ParamReader pelco = params.child("pelco_d");
     pelco_settings.address = static_cast<std::uint8_t>(pelco.integer("address", pelco_settings.address, 1, 255));
-    pelco_settings.tilt_encoding = pelco.choice("tilt_encoding", "wrap", { "wrap", "inverted_wrap" }) == "wrap" ?
-                                       pelco::TiltEncoding::WRAP :
-                                       pelco::TiltEncoding::INVERTED_WRAP;
+    pelco::parseTiltEncoding(pelco.choice("tilt_encoding", "down_positive", { "down_positive", "up_positive" }),
+                             pelco_settings.tilt_encoding);
     pelco_settings.general_reply = pelco.flag("general_reply", pelco_settings.general_reply);
     pelco_settings.zoom_position_max =
         static_cast<std::uint16_t>(pelco.integer("zoom_position_max", pelco_settings.zoom_position_max, 1, 0xFFFF));
@@ -74,6 +73,17 @@ public:
     zoom_capability.range.min = zoom.number("min", zoom_capability.range.min, 1.0, 1000.0);
     zoom_capability.range.max = zoom.number("max", zoom_capability.range.max, zoom_capability.range.min, 1000.0);
     zoom_capability.max_speed = zoom.number("rate", zoom_capability.max_speed, 1e-3, 1000.0);
+    // Turbo is device-specific: off unless the device's byte is given (and faster than 0x3F's speed).
+    pelco_settings.turbo_byte = static_cast<std::uint8_t>(pelco.integer("turbo_byte", 0, 0, 255));
+    if (pelco_settings.turbo_byte != 0)
+    {
+      if (pelco_settings.turbo_byte <= pelco::MAX_SPEED)
+      {
+        throw ConfigError("parameter " + pelco.resolve("turbo_byte") +
+                          " must be above 0x3F (63), the highest ordinary speed, or 0 for no turbo");
+      }
+      pelco_settings.turbo_speed = pelco.number("turbo_speed", 0.0, pelco_settings.axes[PAN].max_speed + 1e-6, 100.0);
+    }
     return makePelcoBackend(config, context.clock);
   }
 };

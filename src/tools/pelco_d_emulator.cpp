@@ -21,8 +21,10 @@ paced at the baud rate. Point the node at the link: backend:=serial with protoco
 
 Options:
   --address N            the camera's address, 1..255 (default 1)
-  --tilt-encoding E      wrap (up positive, negative as 36000 - x; default) or inverted_wrap (down positive)
+  --tilt-encoding E      down_positive (the Pelco manual's: 45 below the horizon is 4500, 30 above is 33000;
+                         default) or up_positive (30 above is 3000, 45 below is 31500)
   --general-reply        answer every command with a 4-byte general reply
+  --turbo-speed R        rad/s of a pan speed byte above 0x3F (turbo); default: the 0x3F speed
 )";
 }  // namespace
 
@@ -45,10 +47,13 @@ int main(int argc, char** argv)
         }
         else if (arg == "--tilt-encoding")
         {
-          config.tilt_encoding =
-              emulator_main::choice(PROGRAM, value(), arg, { "wrap", "inverted_wrap" }, usage.c_str()) == "wrap" ?
-                  ptz_action_server::pelco::TiltEncoding::WRAP :
-                  ptz_action_server::pelco::TiltEncoding::INVERTED_WRAP;
+          ptz_action_server::pelco::parseTiltEncoding(
+              emulator_main::choice(PROGRAM, value(), arg, { "down_positive", "up_positive" }, usage.c_str()),
+              config.tilt_encoding);
+        }
+        else if (arg == "--turbo-speed")
+        {
+          config.pan_turbo_speed = emulator_main::number(PROGRAM, value(), arg, usage.c_str());
         }
         else if (arg == "--general-reply")
         {
@@ -61,5 +66,7 @@ int main(int argc, char** argv)
         return true;
       });
   return emulator_main::runSerialDevice<ptz_action_server::PelcoDEmulator>(
-      PROGRAM, config, options, ", address " + std::to_string(config.address));
+      PROGRAM, config, options,
+      ", address " + std::to_string(config.address) + ", tilt " +
+          ptz_action_server::pelco::toString(config.tilt_encoding));
 }

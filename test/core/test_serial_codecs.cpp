@@ -55,8 +55,33 @@ TEST(PelcoGolden, MovementBitsAndSpeeds)
   EXPECT_EQ(up_left_tele.data2, 0x3F);
   const pelco::Frame down_right_wide = pelco::move(3, 0x40, -0x50, -1);
   EXPECT_EQ(down_right_wide.command2, pelco::RIGHT | pelco::DOWN | pelco::ZOOM_WIDE);
-  EXPECT_EQ(down_right_wide.data1, 0x40);  // turbo
-  EXPECT_EQ(down_right_wide.data2, 0x3F);  // tilt has no turbo
+  EXPECT_EQ(down_right_wide.data1, 0x3F);  // capped: no published client sends 0x40
+  EXPECT_EQ(down_right_wide.data2, 0x3F);
+  const pelco::Frame turbo = pelco::move(3, 0x40, -0x50, 0, 0xFF);
+  EXPECT_EQ(turbo.data1, 0xFF);                             // the device's own turbo byte, when configured
+  EXPECT_EQ(turbo.data2, 0x3F);                             // tilt has no turbo
+  EXPECT_EQ(pelco::move(3, 0x3F, 0, 0, 0xFF).data1, 0x3F);  // turbo only above 0x3F
+}
+
+TEST(PelcoGolden, PublishedClientsFrames)
+{
+  // Printed by the published clients (published-wire-facts.md section 4), address 1.
+  EXPECT_EQ(bytesOf(pelco::move(1, -0x40, 0, 0)),
+            (Bytes{ 0xFF, 0x01, 0x00, 0x04, 0x3F, 0x00, 0x44 }));  // panLeft(0x40)
+  EXPECT_EQ(bytesOf(pelco::move(1, -0x40, 0, 0, 0xFF)),
+            (Bytes{ 0xFF, 0x01, 0x00, 0x04, 0xFF, 0x00, 0x04 }));  // pelcodrs
+  const auto down = pelco::TiltEncoding::DOWN_POSITIVE;
+  EXPECT_EQ(bytesOf(pelco::withValue(1, pelco::SET_TILT, pelco::encodeTilt(-45.0, down))),
+            (Bytes{ 0xFF, 0x01, 0x00, 0x4D, 0x11, 0x94, 0xF3 }));  // "45 degrees below the horizon is 4500"
+  EXPECT_EQ(bytesOf(pelco::withValue(1, pelco::SET_TILT, pelco::encodeTilt(-20.0, down))),
+            (Bytes{ 0xFF, 0x01, 0x00, 0x4D, 0x07, 0xD0, 0x25 }));
+  EXPECT_EQ(bytesOf(pelco::withValue(1, pelco::SET_TILT, pelco::encodeTilt(30.0, down))),
+            (Bytes{ 0xFF, 0x01, 0x00, 0x4D, 0x80, 0xE8, 0xB6 }));  // "30 degrees above the horizon is 33000"
+  EXPECT_EQ(bytesOf(pelco::withValue(1, pelco::SET_PAN, pelco::encodePan(90.0))),
+            (Bytes{ 0xFF, 0x01, 0x00, 0x4B, 0x23, 0x28, 0x97 }));
+  EXPECT_EQ(bytesOf(pelco::withValue(1, pelco::QUERY_TILT, 0)), (Bytes{ 0xFF, 0x01, 0x00, 0x53, 0x00, 0x00, 0x54 }));
+  EXPECT_DOUBLE_EQ(pelco::decodeTilt(4500, down), -45.0);
+  EXPECT_DOUBLE_EQ(pelco::decodeTilt(33000, down), 30.0);
 }
 
 TEST(PelcoAngles, PanWrapsClockwiseAndTiltEncodingIsASetting)
@@ -66,14 +91,18 @@ TEST(PelcoAngles, PanWrapsClockwiseAndTiltEncodingIsASetting)
   EXPECT_DOUBLE_EQ(pelco::decodePan(35000), -10.0);
   EXPECT_DOUBLE_EQ(pelco::decodePan(18000), 180.0);
   EXPECT_DOUBLE_EQ(pelco::decodePan(18001), -179.99);
-  // WRAP: up positive, negative as 36000 - x (the golden "set tilt 35000" is 10 degrees down).
-  EXPECT_EQ(pelco::encodeTilt(-10.0, pelco::TiltEncoding::WRAP), 35000);
-  EXPECT_EQ(pelco::encodeTilt(25.5, pelco::TiltEncoding::WRAP), 2550);
-  EXPECT_DOUBLE_EQ(pelco::decodeTilt(35000, pelco::TiltEncoding::WRAP), -10.0);
-  // INVERTED_WRAP: down positive.
-  EXPECT_EQ(pelco::encodeTilt(-10.0, pelco::TiltEncoding::INVERTED_WRAP), 1000);
-  EXPECT_EQ(pelco::encodeTilt(10.0, pelco::TiltEncoding::INVERTED_WRAP), 35000);
-  EXPECT_DOUBLE_EQ(pelco::decodeTilt(1000, pelco::TiltEncoding::INVERTED_WRAP), -10.0);
+  // UP_POSITIVE: up positive, negative as 36000 - x.
+  EXPECT_EQ(pelco::encodeTilt(-10.0, pelco::TiltEncoding::UP_POSITIVE), 35000);
+  EXPECT_EQ(pelco::encodeTilt(25.5, pelco::TiltEncoding::UP_POSITIVE), 2550);
+  EXPECT_DOUBLE_EQ(pelco::decodeTilt(35000, pelco::TiltEncoding::UP_POSITIVE), -10.0);
+  // DOWN_POSITIVE, the manual's (and the default): down positive, up as 36000 - x.
+  EXPECT_EQ(pelco::encodeTilt(-10.0, pelco::TiltEncoding::DOWN_POSITIVE), 1000);
+  EXPECT_EQ(pelco::encodeTilt(10.0, pelco::TiltEncoding::DOWN_POSITIVE), 35000);
+  EXPECT_DOUBLE_EQ(pelco::decodeTilt(1000, pelco::TiltEncoding::DOWN_POSITIVE), -10.0);
+  pelco::TiltEncoding parsed = pelco::TiltEncoding::UP_POSITIVE;
+  EXPECT_TRUE(pelco::parseTiltEncoding("down_positive", parsed));
+  EXPECT_EQ(parsed, pelco::TiltEncoding::DOWN_POSITIVE);
+  EXPECT_FALSE(pelco::parseTiltEncoding("wrap", parsed));
 }
 
 // --- Pelco-D parser

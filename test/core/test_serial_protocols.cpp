@@ -268,6 +268,51 @@ TEST_F(PelcoTest, GarbledRepliesAreDroppedAndCounted)
   EXPECT_TRUE(waitUntil([&] { return atRest(*backend_, 0.2, 0.2); }, WAIT));
 }
 
+TEST(PelcoTurbo, OnlyAConfiguredTurboByteGoesFasterThan0x3F)
+{
+  PelcoDEmulatorConfig emulator_config;
+  emulator_config.port.link = uniqueLink("pelco_turbo");
+  emulator_config.pan_turbo_speed = 3.0;
+  PelcoDEmulator emulator(emulator_config);
+  auto velocityFrame = [&emulator] {
+    for (const ReceivedFrame& item : emulator.received().items())
+    {
+      const bool standard = (item.frame.command2 & 0x01) == 0;  // extended commands (queries too) are odd
+      if (standard && (item.frame.command2 & (pelco::LEFT | pelco::RIGHT)) != 0)
+      {
+        return item.frame;
+      }
+    }
+    return pelco::Frame();
+  };
+  PelcoConfig config;
+  config.link = serialLink(emulator_config.port.link, 9600);
+  config.session.state_timeout = STATE_TIMEOUT;
+  {
+    // No turbo configured: the fastest goal is the speed at 0x3F, and nothing faster goes out.
+    auto backend = makePelcoBackend(config);
+    backend->start();
+    EXPECT_DOUBLE_EQ(backend->capabilities().axes[PAN].max_speed, 1.5);
+    backend->moveAtVelocity({ 2.5, 0.0, 0.0 });
+    ASSERT_TRUE(waitUntil([&] { return velocityFrame().data1 != 0; }, WAIT));
+    EXPECT_EQ(velocityFrame().data1, pelco::MAX_SPEED);
+    backend->stop();
+  }
+  emulator.received().clear();
+  config.pelco.turbo_byte = 0xFF;
+  config.pelco.turbo_speed = 3.0;
+  auto backend = makePelcoBackend(config);
+  backend->start();
+  EXPECT_DOUBLE_EQ(backend->capabilities().axes[PAN].max_speed, 3.0);
+  backend->moveAtVelocity({ -2.5, 0.0, 0.0 });
+  ASSERT_TRUE(waitUntil([&] { return velocityFrame().data1 != 0; }, WAIT));
+  EXPECT_EQ(velocityFrame().data1, 0xFF);
+  EXPECT_EQ(velocityFrame().command2, pelco::LEFT);
+  EXPECT_TRUE(waitUntil([&] { return emulator.sample().velocity[PAN] < -2.9; }, WAIT));  // turbo, to the left
+  backend->stop();
+  EXPECT_TRUE(waitUntil([&] { return !emulator.sample().moving; }, WAIT));
+}
+
 TEST(PelcoGeneralReplies, CommandsAreAcknowledged)
 {
   PelcoDEmulatorConfig emulator_config;

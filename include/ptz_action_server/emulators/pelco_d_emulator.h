@@ -20,10 +20,14 @@ struct PelcoDEmulatorConfig
 {
   DevicePortConfig port;  ///< a pseudo-terminal (RS-485), or a TCP server (a serial-to-Ethernet server)
   std::uint8_t address = 1;
-  pelco::TiltEncoding tilt_encoding = pelco::TiltEncoding::WRAP;
-  bool general_reply = false;                            ///< answer every non-query command with a 4-byte general reply
-  SimDeviceConfig device = SimDeviceConfig::defaults();  ///< pan +-pi, tilt +-pi/2, zoom 1..24
+  pelco::TiltEncoding tilt_encoding = pelco::TiltEncoding::DOWN_POSITIVE;  ///< the Pelco manual's
+  bool general_reply = false;  ///< answer every non-query command with a 4-byte general reply
+  /// pan +-pi, tilt +-pi/2, zoom 1..24; each axis' max speed is its speed at 0x3F.
+  SimDeviceConfig device = SimDeviceConfig::defaults();
   std::uint16_t zoom_position_max = 0xFFFF;
+  /// rad/s of a pan speed byte above 0x3F (a turbo byte: 0x40 or 0xFF, by device); 0: the 0x3F speed, as a FLIR
+  /// D300E treats any speed above 64.
+  double pan_turbo_speed = 0.0;
 };
 
 /// A frame as it reached the device.

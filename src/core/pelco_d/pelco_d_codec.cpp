@@ -57,14 +57,16 @@ Frame stop(std::uint8_t address)
   return frame;
 }
 
-Frame move(std::uint8_t address, int pan_speed, int tilt_speed, int zoom_direction)
+Frame move(std::uint8_t address, int pan_speed, int tilt_speed, int zoom_direction, std::uint8_t pan_turbo)
 {
   Frame frame;
   frame.address = address;
   frame.command2 = static_cast<std::uint8_t>(
       (pan_speed > 0 ? RIGHT : 0) | (pan_speed < 0 ? LEFT : 0) | (tilt_speed > 0 ? UP : 0) |
       (tilt_speed < 0 ? DOWN : 0) | (zoom_direction > 0 ? ZOOM_TELE : 0) | (zoom_direction < 0 ? ZOOM_WIDE : 0));
-  frame.data1 = static_cast<std::uint8_t>(std::min(std::abs(pan_speed), static_cast<int>(TURBO_SPEED)));
+  const bool turbo = pan_turbo != 0 && std::abs(pan_speed) > MAX_SPEED;
+  frame.data1 =
+      turbo ? pan_turbo : static_cast<std::uint8_t>(std::min(std::abs(pan_speed), static_cast<int>(MAX_SPEED)));
   frame.data2 = static_cast<std::uint8_t>(std::min(std::abs(tilt_speed), static_cast<int>(MAX_SPEED)));
   return frame;
 }
@@ -81,14 +83,29 @@ double decodePan(std::uint16_t value)
 
 std::uint16_t encodeTilt(double degrees, TiltEncoding encoding)
 {
-  const double up_positive = encoding == TiltEncoding::WRAP ? degrees : -degrees;
-  return static_cast<std::uint16_t>(wrap(std::lround(up_positive * 100.0)));
+  const double counted = encoding == TiltEncoding::UP_POSITIVE ? degrees : -degrees;
+  return static_cast<std::uint16_t>(wrap(std::lround(counted * 100.0)));
 }
 
 double decodeTilt(std::uint16_t value, TiltEncoding encoding)
 {
   const double degrees = signedDegrees(value);
-  return encoding == TiltEncoding::WRAP ? degrees : -degrees;
+  return encoding == TiltEncoding::UP_POSITIVE ? degrees : -degrees;
+}
+
+bool parseTiltEncoding(const std::string& text, TiltEncoding& encoding)
+{
+  if (text == "down_positive" || text == "up_positive")
+  {
+    encoding = text == "down_positive" ? TiltEncoding::DOWN_POSITIVE : TiltEncoding::UP_POSITIVE;
+    return true;
+  }
+  return false;
+}
+
+const char* toString(TiltEncoding encoding)
+{
+  return encoding == TiltEncoding::DOWN_POSITIVE ? "down_positive" : "up_positive";
 }
 
 FrameParser::FrameParser(std::uint8_t address, bool general_replies)

@@ -64,6 +64,10 @@ Capabilities PelcoProtocol::capabilities() const
 {
   Capabilities capabilities;
   capabilities.axes = settings_.axes;
+  if (settings_.turbo_byte != 0)
+  {
+    capabilities.axes[PAN].max_speed = std::max(settings_.axes[PAN].max_speed, settings_.turbo_speed);
+  }
   if (!capabilities.axes[ZOOM].present)
   {
     capabilities.axes[ZOOM].range = AxisRange{ 1.0, 1.0 };
@@ -122,8 +126,12 @@ void PelcoProtocol::moveAtVelocity(const AxisValues& velocity)
   }
   channel_.clearQueue();  // what the previous command had not sent yet
   const int zoom = settings_.axes[ZOOM].present ? direction(velocity[ZOOM]) : 0;
-  queueFrame(pelco::move(settings_.address, speedByte(velocity[PAN], settings_.axes[PAN].max_speed),
-                         speedByte(velocity[TILT], settings_.axes[TILT].max_speed), zoom),
+  // Faster than the speed at 0x3F: only turbo goes faster (speedByte returns more than 0x3F, move() sends the byte).
+  const bool turbo = settings_.turbo_byte != 0 && std::abs(velocity[PAN]) > settings_.axes[PAN].max_speed;
+  const int pan = turbo ? (velocity[PAN] > 0.0 ? pelco::MAX_SPEED + 1 : -(pelco::MAX_SPEED + 1)) :
+                          speedByte(velocity[PAN], settings_.axes[PAN].max_speed);
+  queueFrame(pelco::move(settings_.address, pan, speedByte(velocity[TILT], settings_.axes[TILT].max_speed), zoom,
+                         settings_.turbo_byte),
              COMMAND);
 }
 

@@ -213,10 +213,11 @@ std::vector<FixtureMaker> lineDeviceFixtures()
   return {
     { "FlirSerial", [] { return std::make_unique<FlirFixture>(PortKind::PTY); } },
     { "FlirTcp", [] { return std::make_unique<FlirFixture>(PortKind::TCP); } },
-    { "PelcoSerialWrap", [] { return std::make_unique<PelcoFixture>(PortKind::PTY, pelco::TiltEncoding::WRAP); } },
-    { "PelcoSerialInvertedWrap",
-      [] { return std::make_unique<PelcoFixture>(PortKind::PTY, pelco::TiltEncoding::INVERTED_WRAP); } },
-    { "PelcoTcp", [] { return std::make_unique<PelcoFixture>(PortKind::TCP, pelco::TiltEncoding::WRAP); } },
+    { "PelcoSerialUpPositive",
+      [] { return std::make_unique<PelcoFixture>(PortKind::PTY, pelco::TiltEncoding::UP_POSITIVE); } },
+    { "PelcoSerialDownPositive",
+      [] { return std::make_unique<PelcoFixture>(PortKind::PTY, pelco::TiltEncoding::DOWN_POSITIVE); } },
+    { "PelcoTcp", [] { return std::make_unique<PelcoFixture>(PortKind::TCP, pelco::TiltEncoding::DOWN_POSITIVE); } },
   };
 }
 

@@ -26,8 +26,9 @@ constexpr std::uint8_t UP = 0x08;
 constexpr std::uint8_t DOWN = 0x10;
 constexpr std::uint8_t ZOOM_TELE = 0x20;
 constexpr std::uint8_t ZOOM_WIDE = 0x40;
+/// The highest speed byte every published Pelco-D client sends. Turbo is device-specific (0x40 on some, 0xFF on
+/// others, ignored by many): a setting of the backend, never sent unless configured.
 constexpr std::uint8_t MAX_SPEED = 0x3F;
-constexpr std::uint8_t TURBO_SPEED = 0x40;
 
 /// Extended commands (cmd2) and their replies.
 constexpr std::uint8_t SET_PAN = 0x4B;
@@ -71,15 +72,27 @@ Bytes encode(const Frame& frame);
 Frame withValue(std::uint8_t address, std::uint8_t command2, std::uint16_t value);
 /// Stop: all zero.
 Frame stop(std::uint8_t address);
-/// Movement: signed speeds 0..0x3F (0x40 turbo for pan), positive pan right, positive tilt up; zoom -1 wide, +1 tele.
-Frame move(std::uint8_t address, int pan_speed, int tilt_speed, int zoom_direction);
+/**
+ * \brief Movement: signed speeds, positive pan right, positive tilt up; zoom -1 wide, +1 tele.
+ *
+ * Speeds are capped at 0x3F; a pan speed above it is sent as \p pan_turbo instead when that is not 0 (the device's
+ * own turbo byte). Tilt has no turbo.
+ */
+Frame move(std::uint8_t address, int pan_speed, int tilt_speed, int zoom_direction, std::uint8_t pan_turbo = 0);
 
-/// How a device encodes tilt angles in 0..35999 hundredths of a degree; it differs between devices.
+/// How a device encodes tilt angles in 0..35999 hundredths of a degree.
 enum class TiltEncoding
 {
-  WRAP,           ///< up positive: x for x >= 0, 36000 - |x| for x < 0 (the common encoding)
-  INVERTED_WRAP,  ///< down positive: the sign flipped, then wrapped the same way
+  /// The Pelco manual's, as its published clients quote it: 0 is horizontal, "45 degrees below the horizon is 4500",
+  /// "30 degrees above the horizon is 33000" (36000 - 100 a for an angle a up). The default.
+  DOWN_POSITIVE,
+  /// Up positive, an angle below the horizon as 36000 - 100 a: some devices count this way.
+  UP_POSITIVE,
 };
+
+/// "down_positive" / "up_positive" -> \p encoding; false for anything else.
+bool parseTiltEncoding(const std::string& text, TiltEncoding& encoding);
+const char* toString(TiltEncoding encoding);
 
 /// Pan in degrees (clockwise positive, any value) -> 0..35999 hundredths, clockwise from home.
 std::uint16_t encodePan(double degrees);
