@@ -230,8 +230,8 @@ TEST(PanTiltDecoder, RejectsMalformedCommandsWithOneReasonAndDefinedOutputs)
     { "param id 65539", param_id_huge, WireFormat::SEED, DecodeError::BAD_ID },
     { "param id 12 in v1.1", param_v11_id_twelve, WireFormat::V1_1, DecodeError::BAD_ID },
     // Valid frames, but of another format (test_pantilt_formats.cpp has every pair).
-    { "seed frame to a v1.1 decoder", stop, WireFormat::V1_1, DecodeError::OTHER_FORMAT },
-    { "v1.1 frame to a seed decoder", move_pan_tilt, WireFormat::SEED, DecodeError::OTHER_FORMAT },
+    { "seed frame to a v1.1 decoder", stop, WireFormat::V1_1, DecodeError::FOREIGN_FORMAT },
+    { "v1.1 frame to a seed decoder", move_pan_tilt, WireFormat::SEED, DecodeError::FOREIGN_FORMAT },
   };
   for (const Case& item : cases)
   {

@@ -2,7 +2,7 @@
  * \file
  * \brief Frames of one PanTilt wire format sent to a receiver configured for another, over UDP on 127.0.0.1: the
  * emulated device and the pantilt_udp backend count every frame they can recognise as another format under
- * "another format", and never execute it: the device does not move and nothing it holds changes; the backend takes
+ * "foreign format", and never execute it: the device does not move and nothing it holds changes; the backend takes
  * no state from it.
  */
 #include <gtest/gtest.h>
@@ -98,7 +98,7 @@ std::vector<Bytes> foreignParamsFrames(WireFormat sender, WireFormat receiver)
     PanTiltParams ignored;
     DecodeError error = DecodeError::NONE;
     if (!ignored.decode(frame.data(), static_cast<int>(frame.size()), receiver, &error) &&
-        error == DecodeError::OTHER_FORMAT)
+        error == DecodeError::FOREIGN_FORMAT)
     {
       foreign.push_back(frame);
     }
@@ -130,7 +130,7 @@ std::vector<Bytes> foreignCommandFrames(WireFormat sender, WireFormat receiver)
       float value = 0.0f;
       DecodeError error = DecodeError::NONE;
       PanTilt::decodeCommand(frame.data(), size, decoded_param, command, value, receiver, nullptr, &error);
-      if (error == DecodeError::OTHER_FORMAT)
+      if (error == DecodeError::FOREIGN_FORMAT)
       {
         frames.push_back(frame);
       }
@@ -197,13 +197,13 @@ TEST_P(PanTiltForeignFramesTest, TheDeviceCountsThemAndExecutesNothing)
   // another on the loopback keeps their order).
   send(stateRequest(receiver()));
   ASSERT_TRUE(waitUntil([&] { return device.counters().state_requests == counted_before.state_requests + 1; }, 10.0))
-      << "dropped as another format: " << device.counters().dropped(DecodeError::OTHER_FORMAT);
+      << "dropped as another format: " << device.counters().dropped(DecodeError::FOREIGN_FORMAT);
 
   const PanTiltEmulatorCounters counted = device.counters();
-  EXPECT_EQ(counted.dropped(DecodeError::OTHER_FORMAT), foreign.size());
+  EXPECT_EQ(counted.dropped(DecodeError::FOREIGN_FORMAT), foreign.size());
   for (std::size_t reason = 0; reason < DECODE_ERROR_COUNT; ++reason)
   {
-    if (reason != static_cast<std::size_t>(DecodeError::OTHER_FORMAT))
+    if (reason != static_cast<std::size_t>(DecodeError::FOREIGN_FORMAT))
     {
       EXPECT_EQ(counted.invalid[reason], 0u) << toString(static_cast<DecodeError>(reason));
     }
@@ -259,9 +259,10 @@ TEST_P(PanTiltForeignFramesTest, TheBackendCountsThemAndTakesNoStateFromThem)
   {
     send(frame);
   }
-  ASSERT_TRUE(waitUntil([&] { return counters().other_format == before.other_format + foreign.size(); }, 10.0))
-      << "another format: " << counters().other_format - before.other_format << " of " << foreign.size()
-      << ", frames ok " << counters().frames_ok - before.frames_ok;
+  ASSERT_TRUE(waitUntil(
+      [&] { return counters().foreign_format_frames == before.foreign_format_frames + foreign.size(); }, 10.0))
+      << "another format: " << counters().foreign_format_frames - before.foreign_format_frames << " of "
+      << foreign.size() << ", frames ok " << counters().frames_ok - before.frames_ok;
   // Nothing came after them: the state is still the one of the backend's own format.
   const PanTiltCounters after = counters();
   EXPECT_EQ(after.frames_ok, before.frames_ok);

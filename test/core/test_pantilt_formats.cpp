@@ -1,7 +1,7 @@
 /**
  * \file
  * \brief Frames of one PanTilt wire format to a decoder of another (published-wire-facts.md 2.4): every frame that
- * can be recognised as another format is reported as DecodeError::OTHER_FORMAT, and exactly the frames the facts call
+ * can be recognised as another format is reported as DecodeError::FOREIGN_FORMAT, and exactly the frames the facts call
  * undetectable are taken (the reason the format is configured, never guessed).
  */
 #include <gtest/gtest.h>
@@ -112,7 +112,7 @@ TEST(PanTiltFormats, EveryCommandIsAnotherFormatToTheOthers)
         int size = 0;
         ASSERT_TRUE(PanTilt::encodeCommand(frame.data(), size, static_cast<PanTiltCommand>(id), sender, 10.0f, -5.0f));
         frame.resize(static_cast<std::size_t>(size));
-        EXPECT_EQ(commandError(frame, receiver), DecodeError::OTHER_FORMAT)
+        EXPECT_EQ(commandError(frame, receiver), DecodeError::FOREIGN_FORMAT)
             << toString(sender) << " command " << id << " to " << toString(receiver);
       }
     }
@@ -144,7 +144,7 @@ TEST(PanTiltFormats, SetParamsTellTheirFormatExceptIdsTheSeedAndV1_0Share)
                         0x42 };  // value 50
         // Ids 1..9 of the seed and v1.0 look the same: the receiver takes them in its own meaning.
         const bool undetectable = shareVersionBytes(sender, receiver) && id <= 9;
-        EXPECT_EQ(commandError(frame, receiver), undetectable ? DecodeError::NONE : DecodeError::OTHER_FORMAT)
+        EXPECT_EQ(commandError(frame, receiver), undetectable ? DecodeError::NONE : DecodeError::FOREIGN_FORMAT)
             << toString(sender) << " SET_PARAM id " << id << " to " << toString(receiver);
       }
     }
@@ -187,7 +187,7 @@ TEST(PanTiltFormats, ParamsFramesOfEveryMaskAreAnotherFormatUnlessNothingCanTell
         ASSERT_EQ(paramsError(frame, sender), DecodeError::NONE);
         constexpr unsigned TELLING_BITS = (1u << 0) | (1u << 4) | (1u << 6) | (1u << 7) | (1u << 9) | (1u << 10);
         const bool undetectable = shareVersionBytes(sender, receiver) && (bits & TELLING_BITS) == 0;
-        EXPECT_EQ(paramsError(frame, receiver), undetectable ? DecodeError::NONE : DecodeError::OTHER_FORMAT)
+        EXPECT_EQ(paramsError(frame, receiver), undetectable ? DecodeError::NONE : DecodeError::FOREIGN_FORMAT)
             << toString(sender) << " mask bits " << bits << " to " << toString(receiver);
         taken += undetectable ? 1 : 0;
       }
@@ -211,7 +211,7 @@ TEST(PanTiltFormats, TheFactsExamplesOfFramesBothDecodersTake)
   const Bytes request = { 0x02, 0x01, 0x00, 0x00, 0x00 };
   EXPECT_EQ(paramsError(request, WireFormat::SEED), DecodeError::NONE);
   EXPECT_EQ(paramsError(request, WireFormat::V1_0), DecodeError::NONE);
-  EXPECT_EQ(paramsError(request, WireFormat::V1_1), DecodeError::OTHER_FORMAT);
+  EXPECT_EQ(paramsError(request, WireFormat::V1_1), DecodeError::FOREIGN_FORMAT);
 }
 
 TEST(PanTiltFormats, AFrameNoFormatTakesKeepsItsOwnReason)

@@ -303,7 +303,7 @@ TEST(PanTiltDecoder, RejectsMalformedParamsAndKeepsTheOldValues)
     { "speed 100.5 %", speed_too_large, WireFormat::SEED, DecodeError::BAD_VALUE },
     { "flag 2", v11_flag_two, WireFormat::V1_1, DecodeError::BAD_VALUE },
     // A valid frame, but of another format (test_pantilt_formats.cpp has every pair).
-    { "v1.1 frame to a seed decoder", v11, WireFormat::SEED, DecodeError::OTHER_FORMAT },
+    { "v1.1 frame to a seed decoder", v11, WireFormat::SEED, DecodeError::FOREIGN_FORMAT },
   };
   for (const Case& item : cases)
   {

@@ -56,7 +56,7 @@ void fuzzCommand(const std::uint8_t* data, int size, WireFormat format)
   DecodeError error = DecodeError::NONE;
   const int kind = PanTilt::decodeCommand(data, size, param, command, value, format, &second, &error);
   check((kind < 0) == (error != DecodeError::NONE));
-  check((error == DecodeError::OTHER_FORMAT) == (kind < 0 && anotherFormatTakes(data, size, format, false)));
+  check((error == DecodeError::FOREIGN_FORMAT) == (kind < 0 && anotherFormatTakes(data, size, format, false)));
   std::uint8_t encoded[MAX_COMMAND_SIZE];
   int encoded_size = 0;
   if (kind == 0)
@@ -82,7 +82,7 @@ void fuzzParams(const std::uint8_t* data, int size, WireFormat format)
   if (!params.decode(data, size, format, &error))
   {
     check(error != DecodeError::NONE && params == PanTiltParams());
-    check((error == DecodeError::OTHER_FORMAT) == anotherFormatTakes(data, size, format, true));
+    check((error == DecodeError::FOREIGN_FORMAT) == anotherFormatTakes(data, size, format, true));
     return;
   }
   check(error == DecodeError::NONE);

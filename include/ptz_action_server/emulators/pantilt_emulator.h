@@ -8,7 +8,7 @@
  * - every state_period the device also sends a full params frame, unasked, to the last client that sent a valid
  *   datagram.
  * The device speaks one wire format, as a real one does. Invalid datagrams are counted by reason and dropped without
- * a reply; so are frames of another PanTilt format (DecodeError::OTHER_FORMAT): they are never executed.
+ * a reply; so are frames of another PanTilt format (DecodeError::FOREIGN_FORMAT): they are never executed.
  */
 #pragma once
 

@@ -160,8 +160,8 @@ const char* toString(DecodeError error)
       return "bad mask";
     case DecodeError::BAD_VALUE:
       return "bad value";
-    case DecodeError::OTHER_FORMAT:
-      return "another format";
+    case DecodeError::FOREIGN_FORMAT:
+      return "foreign format";
   }
   return "?";
 }
@@ -252,7 +252,7 @@ int PanTilt::decodeCommand(const std::uint8_t* data, int size, PanTiltParam& par
       DecodedCommand ignored;
       if (other != format && decodeCommandAs(data, size, other, ignored) == DecodeError::NONE)
       {
-        result = DecodeError::OTHER_FORMAT;
+        result = DecodeError::FOREIGN_FORMAT;
         break;
       }
     }

@@ -213,7 +213,7 @@ bool PanTiltParams::decode(const std::uint8_t* data, int dataSize, WireFormat fo
       PanTiltParams ignored;
       if (other != format && decodeParamsAs(data, dataSize, other, ignored) == DecodeError::NONE)
       {
-        result = DecodeError::OTHER_FORMAT;
+        result = DecodeError::FOREIGN_FORMAT;
         break;
       }
     }

@@ -63,8 +63,8 @@ void PanTiltProtocol::onReceived(const std::uint8_t* data, std::size_t size)
       case DecodeError::BAD_VALUE:
         ++counters_.bad_value;
         break;
-      case DecodeError::OTHER_FORMAT:
-        ++counters_.other_format;
+      case DecodeError::FOREIGN_FORMAT:
+        ++counters_.foreign_format_frames;
         break;
       default:
         ++counters_.bad_size;
@@ -149,7 +149,7 @@ void PanTiltProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
                       { "dropped: bad version", counters_.bad_version },
                       { "dropped: bad mask", counters_.bad_mask },
                       { "dropped: bad value", counters_.bad_value },
-                      { "dropped: another format", counters_.other_format } });
+                      { "dropped: foreign format", counters_.foreign_format_frames } });
 }
 
 void PanTiltProtocol::sendSetParam(PanTiltParam id, double value)

@@ -20,7 +20,7 @@
  *
  * The seed and v1.0 share the version bytes `1 0`: a receiver cannot tell them apart by the header. Decoders check the
  * exact size, the version bytes, the ids, the reserved mask bits and (params) that every field is plausible; a frame
- * that fails these in the selected format but passes them in another is reported as DecodeError::OTHER_FORMAT.
+ * that fails these in the selected format but passes them in another is reported as DecodeError::FOREIGN_FORMAT.
  * SET_PARAM ids 1..9 and some params masks mean different things in the seed and v1.0 and cannot be told apart at
  * all: the format must be configured, never guessed.
  *
@@ -124,16 +124,16 @@ enum class PanTiltParam
 enum class DecodeError
 {
   NONE = 0,
-  BAD_SIZE,      ///< too short for a header, or not the exact size its type (and mask) requires
-  BAD_HEADER,    ///< first byte is not a known frame type for this decoder
-  BAD_VERSION,   ///< version bytes do not match the selected wire format
-  BAD_ID,        ///< command or param id outside the selected format's tables
-  BAD_MASK,      ///< params mask has bits set for fields the format does not have
-  BAD_VALUE,     ///< a params field outside what its kind can hold (see PanTiltParams::decode)
-  OTHER_FORMAT,  ///< not a frame of the selected format, but a valid frame of another PanTilt format
+  BAD_SIZE,        ///< too short for a header, or not the exact size its type (and mask) requires
+  BAD_HEADER,      ///< first byte is not a known frame type for this decoder
+  BAD_VERSION,     ///< version bytes do not match the selected wire format
+  BAD_ID,          ///< command or param id outside the selected format's tables
+  BAD_MASK,        ///< params mask has bits set for fields the format does not have
+  BAD_VALUE,       ///< a params field outside what its kind can hold (see PanTiltParams::decode)
+  FOREIGN_FORMAT,  ///< not a frame of the selected format, but a valid frame of another PanTilt format
 };
 /// How many DecodeError values there are (for counters indexed by them).
-constexpr std::size_t DECODE_ERROR_COUNT = static_cast<std::size_t>(DecodeError::OTHER_FORMAT) + 1;
+constexpr std::size_t DECODE_ERROR_COUNT = static_cast<std::size_t>(DecodeError::FOREIGN_FORMAT) + 1;
 
 const char* toString(DecodeError error);
 
@@ -227,7 +227,7 @@ public:
    * Checks the header, both version bytes, that no mask bit names a field the format lacks, the exact size the mask
    * asks for, and that every field is plausible: motor positions 0..65535, pan angles within +-180, tilt angles
    * within +-90, speeds within +-100, flags 0 or 1, no subnormal float (a small integer read as a float is one); the
-   * custom values may hold anything. A frame that fails but passes in another format is DecodeError::OTHER_FORMAT.
+   * custom values may hold anything. A frame that fails but passes in another format is DecodeError::FOREIGN_FORMAT.
    * Never reads outside [data, data + dataSize). On failure returns false, leaves this object unchanged and, when
    * \p error is given, says why.
    */
@@ -283,7 +283,7 @@ public:
    *
    * Returns 0 for a COMMAND, 1 for a SET_PARAM, -1 on error. Checks the exact size, both version bytes and that the
    * id exists in \p format; a frame that fails these but passes them in another format is
-   * DecodeError::OTHER_FORMAT. Never reads outside the frame. Every output is written on every path: on error the
+   * DecodeError::FOREIGN_FORMAT. Never reads outside the frame. Every output is written on every path: on error the
    * ids are value-initialised (0, no enumerator), the values 0 and \p error (if given) says why. For a v1.x COMMAND,
    * \p value is the first argument and \p secondValue (if given) the second.
    */

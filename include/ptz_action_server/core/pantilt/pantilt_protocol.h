@@ -48,12 +48,12 @@ struct PanTiltCounters
   Counter bad_header;
   Counter bad_version;
   Counter bad_mask;
-  Counter bad_value;     ///< a field no device of the format could report (NaN angles, subnormals, ...)
-  Counter other_format;  ///< a valid frame of another PanTilt format: never taken as state
+  Counter bad_value;              ///< a field no device of the format could report (NaN angles, subnormals, ...)
+  Counter foreign_format_frames;  ///< a valid frame of another PanTilt format: never taken as state
 
   std::uint64_t dropped() const
   {
-    return bad_size + bad_header + bad_version + bad_mask + bad_value + other_format;
+    return bad_size + bad_header + bad_version + bad_mask + bad_value + foreign_format_frames;
   }
 };
 
