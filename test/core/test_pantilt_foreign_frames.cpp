@@ -3,7 +3,7 @@
  * \brief Frames of one PanTilt wire format sent to a receiver configured for another, over UDP on 127.0.0.1: the
  * emulated device and the pantilt_udp backend count every frame they can recognise as another format under
  * "foreign format", and never execute it: the device does not move and nothing it holds changes; the backend takes
- * no state from it.
+ * no state from it, and does not start against a device of another format.
  */
 #include <gtest/gtest.h>
 
@@ -269,6 +269,45 @@ TEST_P(PanTiltForeignFramesTest, TheBackendCountsThemAndTakesNoStateFromThem)
   EXPECT_EQ(after.dropped() - before.dropped(), foreign.size());
   EXPECT_TRUE(pan_at(7.0)) << backend->sample().position[PAN];
   EXPECT_NEAR(backend->sample().position[TILT], -3.0 * M_PI / 180.0, 1e-4);
+}
+
+TEST_P(PanTiltForeignFramesTest, ABackendAndADeviceOfDifferentFormatsNeverWorkTogether)
+{
+  // The device speaks the sender's format, the backend the receiver's.
+  PanTiltEmulatorConfig emulator_config;
+  emulator_config.format = sender();
+  PanTiltEmulator device(emulator_config);
+  PanTiltConfig config;
+  config.pantilt.format = receiver();
+  config.link.port = device.endpoint().port();
+  config.link.local_host = "127.0.0.1";
+  // The seed and v1.0 share their version bytes, so each answers the other's state request, and the backend gives
+  // up at the first answer it recognises as another format. Between v1.1 and the others every frame is foreign:
+  // the device drops them all and answers nothing, so the backend waits its whole start-up time.
+  const bool device_answers = receiver() != WireFormat::V1_1 && sender() != WireFormat::V1_1;
+  config.session.startup_timeout = device_answers ? 30.0 : 1.0;
+  std::unique_ptr<DeviceBackend> backend = makePanTiltBackend(config);
+  try
+  {
+    backend->start();
+    FAIL() << "the backend started against a device of another format";
+  }
+  catch (const BackendError& error)
+  {
+    const std::string expected = device_answers ? "another PanTilt wire format than " : "no answer from ";
+    EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+  }
+  const PanTiltCounters counted = backend->protocol<PanTiltProtocol>().counters();
+  EXPECT_EQ(counted.frames_ok, 0u);
+  EXPECT_EQ(counted.foreign_format_frames > 0, device_answers);
+  EXPECT_EQ(counted.dropped(), counted.foreign_format_frames);
+  const PanTiltEmulatorCounters device_counted = device.counters();
+  EXPECT_EQ(device_counted.dropped(DecodeError::FOREIGN_FORMAT) > 0, !device_answers);
+  if (!device_answers)
+  {
+    EXPECT_EQ(device_counted.commands_executed + device_counted.commands_refused + device_counted.state_requests, 0u);
+  }
+  EXPECT_FALSE(device.panTilt().sample().moving);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryPairOfFormats, PanTiltForeignFramesTest, ::testing::ValuesIn(differentFormatPairs()),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
 
 namespace ptz_action_server
@@ -65,6 +66,13 @@ void PanTiltProtocol::onReceived(const std::uint8_t* data, std::size_t size)
         break;
       case DecodeError::FOREIGN_FORMAT:
         ++counters_.foreign_format_frames;
+        if (!heard_)
+        {
+          // The device speaks another format: waiting for the start-up timeout would only hide why.
+          session_.failStartup(formatText("it sends frames of another PanTilt wire format than %s, the configured "
+                                          "one (format: seed, v1.0 or v1.1, as the device speaks)",
+                                          cr::pantilt::toString(settings_.format)));
+        }
         break;
       default:
         ++counters_.bad_size;

@@ -84,7 +84,8 @@ public:
   Capabilities capabilities() const override;
   /// The speeds and a state request (a params frame with an empty mask).
   void onConnected() override;
-  /// One params frame per datagram; anything else is counted under its reason and dropped.
+  /// One params frame per datagram; anything else is counted under its reason and dropped. A frame of another
+  /// PanTilt format before the first valid one fails the start-up: the device speaks another format.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   /// A state request while the device is quiet (it reports on its own otherwise).
   void poll() override;
