@@ -308,6 +308,22 @@ TEST(SimPanTilt, SpeedParamsScaleTheMove)
   EXPECT_FLOAT_EQ(device.getParam(PanTiltParam::PAN_MOTOR_SPEED), 50.0f);
 }
 
+TEST(SimPanTilt, AV1_0SpeedIsASpeedNotAMotorPosition)
+{
+  // PanTilt 1.0.x's SET_PARAM PAN_MOTOR_SPEED = 100 (id 5): the old "1.0" took it as the seed's
+  // PAN_TILT_MOTOR_POSITION, a target for both axes.
+  const Bytes speed = { 0x01, 0x01, 0x00, 0x05, 0x00, 0x00, 0x00, 0x00, 0x00, 0xC8, 0x42 };
+  auto clock = std::make_shared<ptz_action_server::ManualClock>();
+  SimPanTilt device(ptz_action_server::SimDeviceConfig::defaults(), clock, WireFormat::V1_0);
+  ASSERT_TRUE(device.setParam(PanTiltParam::PAN_MOTOR_SPEED, 20.0f));
+  ASSERT_TRUE(device.decodeAndExecuteCommand(speed.data(), static_cast<int>(speed.size())));
+  EXPECT_FLOAT_EQ(device.getParam(PanTiltParam::PAN_MOTOR_SPEED), 100.0f);
+  const Bytes go = commandFrame(PanTiltCommand::GO_TO_PAN_TILT_POSITION, WireFormat::V1_0, 60000.0f, 30000.0f);
+  ASSERT_TRUE(device.decodeAndExecuteCommand(go.data(), static_cast<int>(go.size())));
+  clock->advance(1.0);
+  EXPECT_NEAR(device.sample().velocity[ptz_action_server::PAN], 1.5, 1e-9);  // 100 % of 1.5 rad/s, not 20 %
+}
+
 TEST(SimPanTilt, V1CommandsCarryTheirTargetsAndSpeeds)
 {
   for (WireFormat format : { WireFormat::V1_0, WireFormat::V1_1 })
