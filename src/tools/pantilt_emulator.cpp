@@ -99,6 +99,20 @@ int main(int argc, char** argv)
     emulator_main::Hooks hooks;
     hooks.set_silent = [&device](bool value) { device.setSilent(value); };
     emulator_main::run(PROGRAM, signals, hooks, schedule, silent);
+    // What it did, so that a client speaking another format shows up here too.
+    const ptz_action_server::PanTiltEmulatorCounters counted = device.counters();
+    std::uint64_t invalid = 0;
+    for (std::uint64_t count : counted.invalid)
+    {
+      invalid += count;
+    }
+    const std::uint64_t foreign = counted.dropped(cr::pantilt::DecodeError::FOREIGN_FORMAT);
+    std::printf("%s: %llu commands executed, %llu refused, %llu state requests; dropped %llu frames of another "
+                "PanTilt format and %llu invalid datagrams\n",
+                PROGRAM, static_cast<unsigned long long>(counted.commands_executed),
+                static_cast<unsigned long long>(counted.commands_refused),
+                static_cast<unsigned long long>(counted.state_requests), static_cast<unsigned long long>(foreign),
+                static_cast<unsigned long long>(invalid - foreign));
   }
   catch (const std::exception& error)
   {
