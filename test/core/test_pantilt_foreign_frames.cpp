@@ -170,6 +170,12 @@ TEST_P(PanTiltForeignFramesTest, TheDeviceCountsThemAndExecutesNothing)
   UdpSocket client;
   client.bind("127.0.0.1", 0);
   auto send = [&](const Bytes& frame) { ASSERT_TRUE(client.sendTo(device.endpoint(), frame.data(), frame.size())); };
+  // Every valid datagram has had its reply (the count of a reply follows the count of its datagram); a foreign frame
+  // answered would keep this false.
+  auto all_answered = [&] {
+    const PanTiltEmulatorCounters counted = device.counters();
+    return counted.replies_sent == counted.commands_executed + counted.commands_refused + counted.state_requests;
+  };
 
   // Speeds at 50 % in the device's own format, so that a foreign RESTART or speed would show.
   for (PanTiltParam speed : { PanTiltParam::PAN_MOTOR_SPEED, PanTiltParam::TILT_MOTOR_SPEED })
@@ -179,7 +185,7 @@ TEST_P(PanTiltForeignFramesTest, TheDeviceCountsThemAndExecutesNothing)
     ASSERT_TRUE(PanTilt::encodeSetParamCommand(frame.data(), size, speed, 50.0f, receiver()));
     send(frame);
   }
-  ASSERT_TRUE(waitUntil([&] { return device.counters().commands_executed == 2; }, 10.0));
+  ASSERT_TRUE(waitUntil([&] { return device.counters().commands_executed == 2 && all_answered(); }, 10.0));
   PanTiltParams before;
   device.panTilt().getParams(before);
   const PanTiltEmulatorCounters counted_before = device.counters();
@@ -196,8 +202,10 @@ TEST_P(PanTiltForeignFramesTest, TheDeviceCountsThemAndExecutesNothing)
   // Then a state request of its own: once it is answered, every frame before it has been handled (one socket to
   // another on the loopback keeps their order).
   send(stateRequest(receiver()));
-  ASSERT_TRUE(waitUntil([&] { return device.counters().state_requests == counted_before.state_requests + 1; }, 10.0))
-      << "dropped as another format: " << device.counters().dropped(DecodeError::FOREIGN_FORMAT);
+  ASSERT_TRUE(waitUntil(
+      [&] { return device.counters().state_requests == counted_before.state_requests + 1 && all_answered(); }, 10.0))
+      << "dropped as another format: " << device.counters().dropped(DecodeError::FOREIGN_FORMAT)
+      << ", replies sent: " << device.counters().replies_sent - counted_before.replies_sent;
 
   const PanTiltEmulatorCounters counted = device.counters();
   EXPECT_EQ(counted.dropped(DecodeError::FOREIGN_FORMAT), foreign.size());
