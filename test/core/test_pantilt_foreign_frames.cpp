@@ -302,7 +302,8 @@ TEST_P(PanTiltForeignFramesTest, ABackendAndADeviceOfDifferentFormatsNeverWorkTo
   }
   catch (const BackendError& error)
   {
-    const std::string expected = device_answers ? "another PanTilt wire format than " : "no answer from ";
+    const std::string expected =
+        device_answers ? "in another PanTilt wire format than the configured " : "no answer from ";
     EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
   }
   const PanTiltCounters counted = backend->protocol<PanTiltProtocol>().counters();

@@ -69,8 +69,8 @@ void PanTiltProtocol::onReceived(const std::uint8_t* data, std::size_t size)
         if (!heard_)
         {
           // The device speaks another format: waiting for the start-up timeout would only hide why.
-          session_.failStartup(formatText("it sends frames of another PanTilt wire format than %s, the configured "
-                                          "one (format: seed, v1.0 or v1.1, as the device speaks)",
+          session_.failStartup(formatText("it answers in another PanTilt wire format than the configured %s: set "
+                                          "format to the device's (seed, v1.0 or v1.1)",
                                           cr::pantilt::toString(settings_.format)));
         }
         break;
