@@ -40,9 +40,10 @@ DigiViewEmulator::DigiViewEmulator(const DigiViewEmulatorConfig& config)
   const SimDeviceConfig model = viewModel(config);
   for (const std::string& stream : config.streams)
   {
-    for (std::uint8_t cam = 0; cam < viewsOf(config.layout_mode); ++cam)
+    for (std::size_t cam = 0; cam < viewsOf(config.layout_mode).size(); ++cam)
     {
-      models_.emplace(std::make_pair(stream, cam), SimDeviceModel(model, SteadyClock::now()));
+      models_.emplace(std::make_pair(stream, static_cast<std::uint8_t>(cam)),
+                      SimDeviceModel(model, SteadyClock::now()));
     }
   }
   const auto address = boost::asio::ip::make_address(config.host);
@@ -147,11 +148,13 @@ void DigiViewEmulator::readTcp(const SessionPtr& session)
           return;
         }
         session->buffered += size;
+        // A stream: cut into messages of the format's size.
+        const std::size_t message_size = layoutOf(config_.wire.format).size;
         std::size_t offset = 0;
-        while (session->open && session->buffered - offset >= MESSAGE_SIZE)
+        while (session->open && session->buffered - offset >= message_size)
         {
-          handle(session, session->buffer.data() + offset, MESSAGE_SIZE);
-          offset += MESSAGE_SIZE;
+          handle(session, session->buffer.data() + offset, message_size);
+          offset += message_size;
         }
         std::copy(session->buffer.begin() + offset, session->buffer.begin() + session->buffered,
                   session->buffer.begin());
@@ -217,14 +220,19 @@ void DigiViewEmulator::reply(const SessionPtr& session, const Message& message)
   stamped.timestamp = static_cast<std::uint64_t>(
       std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
           .count());
+  Bytes bytes = stamped.pack();
+  if (!config_.fill_checksum)
+  {
+    bytes[layoutOf(stamped.format).checksum_offset] = 0;
+  }
   if (session->is_udp)
   {
-    auto bytes = std::make_shared<digiview::Bytes>(stamped.pack());
-    udp_.async_send_to(boost::asio::buffer(*bytes), session->peer,
-                       [bytes](const boost::system::error_code&, std::size_t) {});
+    auto datagram = std::make_shared<Bytes>(std::move(bytes));
+    udp_.async_send_to(boost::asio::buffer(*datagram), session->peer,
+                       [datagram](const boost::system::error_code&, std::size_t) {});
     return;
   }
-  session->writes.push_back(stamped.pack());
+  session->writes.push_back(std::move(bytes));
   if (session->writes.size() == 1)
   {
     writeNext(session);

@@ -21,11 +21,6 @@ PtzSample DigiViewEmulator::view(const std::string& stream, std::uint8_t cam_id)
   return models_.at(std::make_pair(stream, cam_id)).sample(SteadyClock::now());
 }
 
-std::uint8_t DigiViewEmulator::numUserViews() const
-{
-  return viewsOf(config_.layout_mode);
-}
-
 SimDeviceModel* DigiViewEmulator::model(const CameraId& camera)
 {
   const auto found = models_.find(std::make_pair(camera.stream_name, camera.cam_id));
@@ -34,10 +29,11 @@ SimDeviceModel* DigiViewEmulator::model(const CameraId& camera)
 
 bool DigiViewEmulator::current(ParamType param, const CameraId& camera, Message& message)
 {
+  const Format format = config_.wire.format;
   std::lock_guard<std::mutex> lock(mutex_);
   if (param == ParamType::SYSTEM_STATUS)
   {
-    message = packSystemStatus(MessageType::CURRENT_PARAMETERS, SystemStatus{ 1, 0, 45.0f });
+    message = packSystemStatus(format, MessageType::CURRENT_PARAMETERS, SystemStatus{ 1, 0, 45.5 });
     return true;
   }
   if (param == ParamType::VIDEO_OUTPUT)
@@ -46,16 +42,14 @@ bool DigiViewEmulator::current(ParamType param, const CameraId& camera, Message&
     {
       return false;
     }
-    VideoOutput output;
+    VideoOutput output;  // 1920 x 1080, no detection overlay
     output.stream_name = camera.stream_name;
+    output.fps = 30;
     output.layout_mode = config_.layout_mode;
-    output.num_user_views = numUserViews();
-    for (std::size_t index = 0; index < output.views.size(); ++index)
-    {
-      output.views[index] = BoundingBox{ static_cast<std::uint16_t>(960 * (index % 2)),
-                                         static_cast<std::uint16_t>(540 * (index / 2)), 960, 540 };
-    }
-    message = packVideoOutput(MessageType::CURRENT_PARAMETERS, output);
+    const std::vector<BoundingBox> views = viewsOf(config_.layout_mode);
+    output.num_user_views = static_cast<std::uint8_t>(views.size());
+    std::copy(views.begin(), views.end(), output.views.begin());
+    message = packVideoOutput(format, MessageType::CURRENT_PARAMETERS, output);
     return true;
   }
   SimDeviceModel* view = model(camera);
@@ -70,7 +64,7 @@ bool DigiViewEmulator::current(ParamType param, const CameraId& camera, Message&
     targeting.camera = camera;
     targeting.yaw = state.position[PAN];
     targeting.pitch = state.position[TILT];
-    message = packTargeting(MessageType::CURRENT_PARAMETERS, targeting);
+    message = packTargeting(format, MessageType::CURRENT_PARAMETERS, targeting);
     return true;
   }
   if (param == ParamType::CAM_OPTICS_AND_CONTROL)
@@ -78,7 +72,7 @@ bool DigiViewEmulator::current(ParamType param, const CameraId& camera, Message&
     CamOpticsAndControl optics;
     optics.camera = camera;
     optics.fov = state.position[ZOOM];
-    message = packOptics(MessageType::CURRENT_PARAMETERS, optics);
+    message = packOptics(format, MessageType::CURRENT_PARAMETERS, optics);
     return true;
   }
   return false;
@@ -87,12 +81,15 @@ bool DigiViewEmulator::current(ParamType param, const CameraId& camera, Message&
 void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* bytes, std::size_t size)
 {
   Message message;
-  const UnpackError error = Message::unpack(bytes, size, message);
-  received_.add(ReceivedMessage{ SteadyClock::now(), error, message });
+  bool unverified = false;
+  const UnpackError error = Message::unpack(bytes, size, config_.wire, message, &unverified);
+  received_.add(ReceivedMessage{ SteadyClock::now(), error, unverified, message });
   if (silent_)
   {
     return;
   }
+  const Format format = config_.wire.format;
+  auto answer = [&](MessageType type, ParamType param_type) { reply(session, packBare(format, type, param_type)); };
   const ParamType about =
       size > 10 && isParamType(bytes[10]) ? static_cast<ParamType>(bytes[10]) : ParamType::SYSTEM_STATUS;
   switch (error)
@@ -100,14 +97,14 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
     case UnpackError::NONE:
       break;
     case UnpackError::BAD_CHECKSUM:
-      reply(session, packBare(MessageType::CHECKSUM_ERROR, about));
+      answer(MessageType::CHECKSUM_ERROR, about);
       return;
     case UnpackError::BAD_MESSAGE_TYPE:
     case UnpackError::BAD_PARAM_TYPE:
-      reply(session, packBare(MessageType::UNKNOWN, about));
+      answer(MessageType::UNKNOWN, about);
       return;
     default:
-      reply(session, packBare(MessageType::DATA_ERROR, about));
+      answer(MessageType::DATA_ERROR, about);
       return;
   }
 
@@ -126,18 +123,27 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
       CameraId camera;
       if (unpackCamera(message, camera) != UnpackError::NONE)
       {
-        reply(session, packBare(MessageType::DATA_ERROR, param));
+        answer(MessageType::DATA_ERROR, param);
         return;
       }
-      Message answer;
-      if (current(param, camera, answer))
+      // 1.0: interval_ms subscribes (100 ms or more) or cancels (0); a GET with less is ignored, as a GET_INTERVAL.
+      if (message.interval_ms != 0 && message.interval_ms < MIN_INTERVAL_MS)
       {
-        reply(session, answer);
+        return;
+      }
+      Message state;
+      if (current(param, camera, state))
+      {
+        reply(session, state);
+        if (format == Format::V1_0)
+        {
+          subscribe(session, IntervalRequest{ param, camera, message.interval_ms });
+        }
       }
       else if (param != ParamType::VIDEO_OUTPUT && param != ParamType::CAM_TARGETING &&
                param != ParamType::CAM_OPTICS_AND_CONTROL)
       {
-        reply(session, packBare(MessageType::UNKNOWN, param));  // a parameter the emulator does not model
+        answer(MessageType::UNKNOWN, param);  // a parameter the emulator does not model
       }
       return;  // an unknown stream or camera: ignored, as DigiView does
     }
@@ -145,7 +151,7 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
       IntervalRequest request;
       if (unpackInterval(message, request) != UnpackError::NONE)
       {
-        reply(session, packBare(MessageType::DATA_ERROR, param));
+        answer(MessageType::DATA_ERROR, param);
         return;
       }
       subscribe(session, request);
@@ -154,7 +160,7 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
     case MessageType::SET_PARAMETERS: {
       if (refuse_)
       {
-        reply(session, packBare(MessageType::FORBIDDEN, param));
+        answer(MessageType::FORBIDDEN, param);
         return;
       }
       const TimePoint now = SteadyClock::now();
@@ -163,7 +169,7 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
         CamTargeting targeting;
         if (unpackTargeting(message, targeting) != UnpackError::NONE)
         {
-          reply(session, packBare(MessageType::DATA_ERROR, param));
+          answer(MessageType::DATA_ERROR, param);
           return;
         }
         std::unique_lock<std::mutex> lock(mutex_);
@@ -181,7 +187,7 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
           view->goToAxis(TILT, pitch, now);
         }
         lock.unlock();
-        reply(session, packBare(MessageType::ACKNOWLEDGEMENT, param));
+        answer(MessageType::ACKNOWLEDGEMENT, param);
         return;
       }
       if (param == ParamType::CAM_OPTICS_AND_CONTROL)
@@ -189,7 +195,7 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
         CamOpticsAndControl optics;
         if (unpackOptics(message, optics) != UnpackError::NONE)
         {
-          reply(session, packBare(MessageType::DATA_ERROR, param));
+          answer(MessageType::DATA_ERROR, param);
           return;
         }
         std::unique_lock<std::mutex> lock(mutex_);
@@ -208,14 +214,14 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
           view->goToAxis(ZOOM, fov, now);
         }
         lock.unlock();
-        reply(session, packBare(MessageType::ACKNOWLEDGEMENT, param));
+        answer(MessageType::ACKNOWLEDGEMENT, param);
         return;
       }
-      reply(session, packBare(MessageType::UNKNOWN, param));
+      answer(MessageType::UNKNOWN, param);
       return;
     }
     default:
-      reply(session, packBare(MessageType::UNKNOWN, param));
+      answer(MessageType::UNKNOWN, param);
       return;
   }
 }

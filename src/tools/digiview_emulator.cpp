@@ -1,6 +1,6 @@
 /**
  * \file
- * \brief digiview_emulator: a DigiView emulator (message format 0.5) with virtual views that slew.
+ * \brief digiview_emulator: a DigiView emulator (message format 0.5 or 1.0) with virtual views that slew.
  */
 #include <cstdio>
 #include <string>
@@ -14,14 +14,18 @@ namespace
 const char* PROGRAM = "digiview_emulator";
 const char* USAGE = R"(usage: digiview_emulator [options]
 
-Answers as DigiView does (80-byte messages, CRC-8/BLUETOOTH): ACKNOWLEDGEMENT for SET CAM_TARGETING and
-CAM_OPTICS_AND_CONTROL, CURRENT_PARAMETERS for GETs and GET_INTERVAL subscriptions (>= 100 ms, 0 cancels),
-CHECKSUM_ERROR, DATA_ERROR, UNKNOWN, FORBIDDEN when told to refuse; QUIT closes the connection.
+Answers as DigiView does (CRC-8/BLUETOOTH over the bytes before the checksum): ACKNOWLEDGEMENT for SET
+CAM_TARGETING and CAM_OPTICS_AND_CONTROL, CURRENT_PARAMETERS for GETs and subscriptions (>= 100 ms, 0 cancels;
+format 0.5: GET_INTERVAL, 1.0: a GET with interval_ms), CHECKSUM_ERROR, DATA_ERROR, UNKNOWN, FORBIDDEN when told to
+refuse; QUIT closes the connection.
 
 Options:
   --host HOST            address to listen on (default 127.0.0.1)
   --port PORT            port (default 5500; 0 = any free port)
   --transport tcp|udp    default tcp
+  --format 0.5|1.0       the message format: 0.5 (80 bytes, default) or 1.0 (88 bytes, interval_ms in the header)
+  --checksum RULE        required (default) or zero_accepted: a client's checksum byte of 0 is taken unverified
+  --unfilled-checksum    send a checksum byte of 0, as a DigiView built on the published helpers (they never fill it)
   --stream NAME          a stream name (default main; repeat for more streams)
   --layout N             layout mode 0..6 (default 4: four user views)
   --rate R               rad/s a view turns at (default 1.0)
@@ -54,6 +58,21 @@ int main(int argc, char** argv)
           config.transport = emulator_main::choice(PROGRAM, value(), arg, { "tcp", "udp" }, USAGE) == "tcp" ?
                                  ptz_action_server::LinkKind::TCP :
                                  ptz_action_server::LinkKind::UDP;
+        }
+        else if (arg == "--format")
+        {
+          ptz_action_server::digiview::parseFormat(
+              emulator_main::choice(PROGRAM, value(), arg, { "0.5", "1.0" }, USAGE), config.wire.format);
+        }
+        else if (arg == "--checksum")
+        {
+          ptz_action_server::digiview::parseChecksumRule(
+              emulator_main::choice(PROGRAM, value(), arg, { "required", "zero_accepted" }, USAGE),
+              config.wire.checksum);
+        }
+        else if (arg == "--unfilled-checksum")
+        {
+          config.fill_checksum = false;
         }
         else if (arg == "--stream")
         {
@@ -97,9 +116,12 @@ int main(int argc, char** argv)
     ptz_action_server::DigiViewEmulator device(config);
     device.setSilent(silent);
     device.setRefuse(refuse);
-    std::printf("%s: listening on %s:%u (%s), stream %s, layout %u%s\n", PROGRAM, config.host.c_str(), device.port(),
-                ptz_action_server::toString(config.transport), config.streams.front().c_str(), config.layout_mode,
-                refuse ? ", refusing SETs" : "");
+    namespace digiview = ptz_action_server::digiview;
+    std::printf("%s: listening on %s:%u (%s), format %s (%zu-byte messages, checksum %s%s), stream %s, layout %u%s\n",
+                PROGRAM, config.host.c_str(), device.port(), ptz_action_server::toString(config.transport),
+                digiview::toString(config.wire.format), digiview::layoutOf(config.wire.format).size,
+                digiview::toString(config.wire.checksum), config.fill_checksum ? "" : ", sent unfilled",
+                config.streams.front().c_str(), config.layout_mode, refuse ? ", refusing SETs" : "");
     std::fflush(stdout);
     emulator_main::Hooks hooks;
     hooks.set_silent = [&device](bool value) { device.setSilent(value); };

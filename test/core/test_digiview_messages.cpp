@@ -2,10 +2,14 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
+#include <vector>
 
+#include "digiview_test_formats.h"
 #include "ptz_action_server/core/digiview/digiview_codec.h"
 
+using namespace ptz_action_server;
 using namespace ptz_action_server::digiview;
 
 namespace
@@ -46,10 +50,35 @@ std::int32_t int32At(const Bytes& bytes, std::size_t at)
   return static_cast<std::int32_t>(value);
 }
 
+std::int16_t int16At(const Bytes& bytes, std::size_t at)
+{
+  return static_cast<std::int16_t>(bytes[at] | (bytes[at + 1] << 8));
+}
+
 CameraId mainCamera(std::uint8_t cam_id = 0)
 {
   return CameraId{ "main", cam_id };
 }
+
+/// The codec tests that hold in both formats.
+class DigiViewMessages : public ::testing::TestWithParam<Format>
+{
+protected:
+  Format format() const
+  {
+    return GetParam();
+  }
+  Layout layout() const
+  {
+    return layoutOf(GetParam());
+  }
+  Message unpacked(const Bytes& bytes) const
+  {
+    Message message;
+    EXPECT_EQ(Message::unpack(bytes.data(), bytes.size(), Wire{ format() }, message), UnpackError::NONE);
+    return message;
+  }
+};
 }  // namespace
 
 TEST(DigiViewCrc, CheckValueAndAgreementWithABitwiseImplementation)
@@ -57,7 +86,7 @@ TEST(DigiViewCrc, CheckValueAndAgreementWithABitwiseImplementation)
   const std::string check = "123456789";
   EXPECT_EQ(crc8(reinterpret_cast<const std::uint8_t*>(check.data()), check.size()), 0x26);
   EXPECT_EQ(bitwiseCrc(reinterpret_cast<const std::uint8_t*>(check.data()), check.size()), 0x26);
-  std::uint8_t data[75];
+  std::uint8_t data[80];
   for (int round = 0; round < 50; ++round)
   {
     for (std::size_t index = 0; index < sizeof(data); ++index)
@@ -68,73 +97,79 @@ TEST(DigiViewCrc, CheckValueAndAgreementWithABitwiseImplementation)
   }
 }
 
-TEST(DigiViewGolden, SetCamTargetingLayout)
+TEST_P(DigiViewMessages, HeaderChecksumAndTruncatedFields)
 {
   CamTargeting targeting;
   targeting.camera = mainCamera(2);
-  targeting.targeting_mode = 0;
-  targeting.yaw = 0.5;
-  targeting.pitch = -0.2;
+  targeting.yaw = 1.2345;  // 1234.5 mrad: truncated, not rounded
+  targeting.pitch = -0.0015;
+  targeting.roll = -0.0009;  // toward zero: 0
   targeting.lock_flags = 3;
   targeting.x_offset = 0.5;
   targeting.y_offset = -1.0;
-  targeting.target_latitude = 59.3293;
-  targeting.target_longitude = 18.0686;
-  targeting.target_altitude = 120.0;
-  Message message = packTargeting(MessageType::SET_PARAMETERS, targeting);
+  targeting.target_latitude = -89.9999;
+  targeting.target_altitude = 1e12;  // far outside int32: saturated (the published cast is undefined)
+  Message message = packTargeting(format(), MessageType::SET_PARAMETERS, targeting);
   message.timestamp = 0x0102030405060708ull;
   const Bytes bytes = message.pack();
-  // Header.
+  ASSERT_EQ(bytes.size(), layout().size);
   EXPECT_EQ((std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + 11)),
             (std::vector<std::uint8_t>{ 0x08, 0x07, 0x06, 0x05, 0x04, 0x03, 0x02, 0x01, 0x00, 0x02, 0x07 }));
-  // Data at 11: stream_name[8], cam_id, targeting_mode, euler_delta, yaw, pitch, roll, lock_flags, offsets,
-  // coordinates.
-  EXPECT_EQ(std::string(reinterpret_cast<const char*>(&bytes[11]), 4), "main");
-  EXPECT_EQ(bytes[15], 0);
-  EXPECT_EQ(bytes[18], 0);
-  EXPECT_EQ(bytes[11 + 8], 2);                                                           // cam_id
-  EXPECT_EQ(bytes[11 + 9], 0);                                                           // directional
-  EXPECT_EQ(bytes[11 + 10], 0);                                                          // absolute
-  EXPECT_EQ(int32At(bytes, 11 + 11), 500);                                               // yaw, milliradians
-  EXPECT_EQ(int32At(bytes, 11 + 15), -200);                                              // pitch
-  EXPECT_EQ(int32At(bytes, 11 + 19), 0);                                                 // roll
-  EXPECT_EQ(bytes[11 + 23], 3);                                                          // lock flags
-  EXPECT_EQ(static_cast<std::int16_t>(bytes[11 + 24] | (bytes[11 + 25] << 8)), 16384);   // 0.5 x 32767, rounded
-  EXPECT_EQ(static_cast<std::int16_t>(bytes[11 + 26] | (bytes[11 + 27] << 8)), -32767);  // -1.0
-  EXPECT_EQ(int32At(bytes, 11 + 28), 59329);
-  EXPECT_EQ(int32At(bytes, 11 + 32), 18069);
-  EXPECT_EQ(int32At(bytes, 11 + 36), 120000);
-  // Checksum over 0..74, padding zero.
-  EXPECT_EQ(bytes[75], bitwiseCrc(bytes.data(), 75));
-  EXPECT_EQ(bytes[76] | bytes[77] | bytes[78] | bytes[79], 0);
+  const std::size_t data = layout().data_offset;
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(&bytes[data]), 4), "main");
+  EXPECT_EQ(bytes[data + 4] | bytes[data + 7], 0);  // NUL-padded
+  EXPECT_EQ(bytes[data + 8], 2);                    // cam_id
+  EXPECT_EQ(int32At(bytes, data + 11), 1234);
+  EXPECT_EQ(int32At(bytes, data + 15), -1);
+  EXPECT_EQ(int32At(bytes, data + 19), 0);
+  EXPECT_EQ(bytes[data + 23], 3);
+  EXPECT_EQ(int16At(bytes, data + 24), 16383);   // 0.5 x 32767 = 16383.5, truncated
+  EXPECT_EQ(int16At(bytes, data + 26), -32767);  // never -32768
+  EXPECT_EQ(int32At(bytes, data + 28), -89999);
+  EXPECT_EQ(int32At(bytes, data + (format() == Format::V1_0 ? 36 : 40)), std::numeric_limits<std::int32_t>::max());
+  // The checksum covers every byte before it; padding is zero.
+  EXPECT_EQ(bytes[layout().checksum_offset], bitwiseCrc(bytes.data(), layout().checksum_offset));
+  for (std::size_t at = layout().checksum_offset + 1; at < bytes.size(); ++at)
+  {
+    EXPECT_EQ(bytes[at], 0) << at;
+  }
+  targeting.yaw = std::nan("");
+  EXPECT_EQ(int32At(packTargeting(format(), MessageType::SET_PARAMETERS, targeting).pack(), data + 11), 0);
+  // In single precision, as the published packer: -0.511f x 1000 is -510.99997, so a yaw of -511 mrad read from
+  // DigiView goes back as -510 (the fuzzer's round trips allow that one unit).
+  targeting.yaw = -0.511;
+  EXPECT_EQ(int32At(packTargeting(format(), MessageType::SET_PARAMETERS, targeting).pack(), data + 11), -510);
 }
 
-TEST(DigiViewGolden, OpticsIntervalAndGetLayouts)
+TEST_P(DigiViewMessages, WhereEachFormatPutsTheSubscriptionInterval)
 {
-  CamOpticsAndControl optics;
-  optics.camera = mainCamera(1);
-  optics.zoom = -3;
-  optics.fov = 0.6;
-  optics.crop_mode = 2;
-  const Bytes packed = packOptics(MessageType::SET_PARAMETERS, optics).pack();
-  EXPECT_EQ(packed[10], 8);
-  EXPECT_EQ(packed[11 + 8], 1);
-  EXPECT_EQ(static_cast<std::int8_t>(packed[11 + 9]), -3);
-  EXPECT_EQ(int32At(packed, 11 + 10), 600);
-  EXPECT_EQ(packed[11 + 14], 2);
-
-  const Bytes interval = packInterval(IntervalRequest{ ParamType::CAM_TARGETING, mainCamera(), 100 }).pack();
-  EXPECT_EQ(interval[9], 4);
+  const Bytes interval =
+      packInterval(format(), IntervalRequest{ digiview::ParamType::CAM_TARGETING, mainCamera(1), 250 }).pack();
   EXPECT_EQ(interval[10], 7);
-  EXPECT_EQ(int32At(interval, 11 + 12), 100);  // our choice: the interval as uint32 at data[12]
-
-  const Bytes get = packGet(ParamType::VIDEO_OUTPUT, mainCamera()).pack();
-  EXPECT_EQ(get[9], 1);
-  EXPECT_EQ(get[10], 3);
-  EXPECT_EQ(std::string(reinterpret_cast<const char*>(&get[11]), 4), "main");
+  if (format() == Format::V0_5)
+  {
+    EXPECT_EQ(interval[9], 4);                   // GET_INTERVAL
+    EXPECT_EQ(int32At(interval, 11 + 12), 250);  // our choice: uint32 at data[12]
+  }
+  else
+  {
+    EXPECT_EQ(interval[9], 1);                 // a GET
+    EXPECT_EQ(int32At(interval, 12), 250);     // interval_ms in the header
+    EXPECT_EQ(int32At(interval, 16 + 12), 0);  // and nothing in the data
+  }
+  const Message message = unpacked(interval);
+  IntervalRequest request;
+  ASSERT_EQ(unpackInterval(message, request), UnpackError::NONE);
+  EXPECT_EQ(request.param, digiview::ParamType::CAM_TARGETING);
+  EXPECT_EQ(request.interval_ms, 250u);
+  EXPECT_EQ(request.camera.cam_id, 1);
+  // A plain GET: a subscription request with interval 0 in 1.0 (a one-shot GET), none in 0.5.
+  const Message get = unpacked(packGet(format(), digiview::ParamType::CAM_TARGETING, mainCamera()).pack());
+  EXPECT_EQ(unpackInterval(get, request), format() == Format::V1_0 ? UnpackError::NONE : UnpackError::BAD_DATA);
+  EXPECT_EQ(request.interval_ms, 0u);
 }
 
-TEST(DigiViewRoundTrip, EveryMessageAPtzClientNeeds)
+TEST_P(DigiViewMessages, RoundTripOfEveryMessageAPtzClientNeeds)
 {
   CamTargeting targeting;
   targeting.camera = CameraId{ "stream8c", 3 };
@@ -149,12 +184,11 @@ TEST(DigiViewRoundTrip, EveryMessageAPtzClientNeeds)
   targeting.target_latitude = -90.0;
   targeting.target_longitude = 179.999;
   targeting.target_altitude = -1000.0;
-  Message unpacked;
-  const Bytes bytes = packTargeting(MessageType::CURRENT_PARAMETERS, targeting).pack();
-  ASSERT_EQ(Message::unpack(bytes.data(), bytes.size(), unpacked), UnpackError::NONE);
-  EXPECT_EQ(unpacked.message_type, MessageType::CURRENT_PARAMETERS);
+  Message message = unpacked(packTargeting(format(), MessageType::CURRENT_PARAMETERS, targeting).pack());
+  EXPECT_EQ(message.message_type, MessageType::CURRENT_PARAMETERS);
+  EXPECT_EQ(message.format, format());
   CamTargeting back;
-  ASSERT_EQ(unpackTargeting(unpacked, back), UnpackError::NONE);
+  ASSERT_EQ(unpackTargeting(message, back), UnpackError::NONE);
   EXPECT_EQ(back.camera.stream_name, "stream8c");
   EXPECT_EQ(back.camera.cam_id, 3);
   EXPECT_EQ(back.targeting_mode, 1);
@@ -169,78 +203,70 @@ TEST(DigiViewRoundTrip, EveryMessageAPtzClientNeeds)
   EXPECT_DOUBLE_EQ(back.target_longitude, 179.999);
   EXPECT_DOUBLE_EQ(back.target_altitude, -1000.0);
 
+  message = unpacked(
+      packOptics(format(), MessageType::SET_PARAMETERS, CamOpticsAndControl{ mainCamera(2), 127, 3.14, 1 }).pack());
   CamOpticsAndControl optics;
-  optics.camera = mainCamera(2);
-  optics.zoom = 127;
-  optics.fov = 3.14;
-  optics.crop_mode = 1;
-  const Bytes optics_bytes = packOptics(MessageType::SET_PARAMETERS, optics).pack();
-  ASSERT_EQ(Message::unpack(optics_bytes.data(), optics_bytes.size(), unpacked), UnpackError::NONE);
-  CamOpticsAndControl optics_back;
-  ASSERT_EQ(unpackOptics(unpacked, optics_back), UnpackError::NONE);
-  EXPECT_EQ(optics_back.zoom, 127);
-  EXPECT_DOUBLE_EQ(optics_back.fov, 3.14);
-  EXPECT_EQ(optics_back.camera.cam_id, 2);
+  ASSERT_EQ(unpackOptics(message, optics), UnpackError::NONE);
+  EXPECT_EQ(optics.zoom, 127);
+  EXPECT_DOUBLE_EQ(optics.fov, 3.14);
+  EXPECT_EQ(optics.camera.cam_id, 2);
 
-  const Bytes status_bytes = packSystemStatus(MessageType::CURRENT_PARAMETERS, SystemStatus{ 3, 0, 71.5f }).pack();
-  ASSERT_EQ(Message::unpack(status_bytes.data(), status_bytes.size(), unpacked), UnpackError::NONE);
+  message = unpacked(packSystemStatus(format(), MessageType::CURRENT_PARAMETERS, SystemStatus{ 3, 0, 71.5 }).pack());
   SystemStatus status;
-  ASSERT_EQ(unpackSystemStatus(unpacked, status), UnpackError::NONE);
+  ASSERT_EQ(unpackSystemStatus(message, status), UnpackError::NONE);
   EXPECT_EQ(status.status, 3);
-  EXPECT_FLOAT_EQ(status.jetson_temp, 71.5f);
+  EXPECT_DOUBLE_EQ(status.jetson_temp, 71.5);
 
+  // Two views: the overlay box follows them @32, the size @40.
   VideoOutput output;
   output.stream_name = "main";
   output.width = 1280;
   output.height = 720;
-  output.layout_mode = 4;
-  output.num_user_views = 4;
+  output.layout_mode = 2;
+  output.num_user_views = 2;
   output.detection_overlay_mode = 2;
-  output.views[3] = BoundingBox{ 640, 360, 640, 360 };
+  output.views[1] = BoundingBox{ 640, 0, 640, 720 };
+  output.views[2] = BoundingBox{ 9, 9, 9, 9 };  // not one of the two: not sent
   output.detection_overlay_box = BoundingBox{ 1, 2, 3, 4 };
   output.single_detection_size = 96;
-  const Bytes output_bytes = packVideoOutput(MessageType::CURRENT_PARAMETERS, output).pack();
-  EXPECT_EQ(output_bytes[11 + 13], 0x44);  // 4 views in the MSB, layout 4 in the LSB
-  ASSERT_EQ(Message::unpack(output_bytes.data(), output_bytes.size(), unpacked), UnpackError::NONE);
+  const Bytes output_bytes = packVideoOutput(format(), MessageType::CURRENT_PARAMETERS, output).pack();
+  const std::size_t data = layout().data_offset;
+  EXPECT_EQ(output_bytes[data + 13], 2);  // the layout, alone in its byte
+  EXPECT_EQ(output_bytes[data + 15], 2);  // num_user_views
+  EXPECT_EQ(int16At(output_bytes, data + 32), 1);
+  EXPECT_EQ(int16At(output_bytes, data + 40), 96);
   VideoOutput output_back;
-  ASSERT_EQ(unpackVideoOutput(unpacked, output_back), UnpackError::NONE);
-  EXPECT_EQ(output_back.num_user_views, 4);
-  EXPECT_EQ(output_back.layout_mode, 4);
+  ASSERT_EQ(unpackVideoOutput(unpacked(output_bytes), output_back), UnpackError::NONE);
+  EXPECT_EQ(output_back.num_user_views, 2);
+  EXPECT_EQ(output_back.layout_mode, 2);
   EXPECT_EQ(output_back.width, 1280);
-  EXPECT_EQ(output_back.views[3].x, 640);
+  EXPECT_EQ(output_back.views[1].x, 640);
+  EXPECT_EQ(output_back.views[2].x, 0);
   EXPECT_EQ(output_back.detection_overlay_box.h, 4);
   EXPECT_EQ(output_back.single_detection_size, 96);
-
-  const Bytes interval_bytes =
-      packInterval(IntervalRequest{ ParamType::CAM_OPTICS_AND_CONTROL, mainCamera(1), 250 }).pack();
-  ASSERT_EQ(Message::unpack(interval_bytes.data(), interval_bytes.size(), unpacked), UnpackError::NONE);
-  IntervalRequest request;
-  ASSERT_EQ(unpackInterval(unpacked, request), UnpackError::NONE);
-  EXPECT_EQ(request.param, ParamType::CAM_OPTICS_AND_CONTROL);
-  EXPECT_EQ(request.interval_ms, 250u);
-  EXPECT_EQ(request.camera.cam_id, 1);
 
   for (MessageType type : { MessageType::ACKNOWLEDGEMENT, MessageType::CHECKSUM_ERROR, MessageType::DATA_ERROR,
                             MessageType::FORBIDDEN, MessageType::UNKNOWN, MessageType::QUIT })
   {
-    const Bytes bare = packBare(type, ParamType::CAM_TARGETING).pack();
-    ASSERT_EQ(Message::unpack(bare.data(), bare.size(), unpacked), UnpackError::NONE);
-    EXPECT_EQ(unpacked.message_type, type);
-    EXPECT_EQ(unpacked.param_type, ParamType::CAM_TARGETING);
+    message = unpacked(packBare(format(), type, digiview::ParamType::CAM_TARGETING).pack());
+    EXPECT_EQ(message.message_type, type);
+    EXPECT_EQ(message.param_type, digiview::ParamType::CAM_TARGETING);
   }
 }
 
-TEST(DigiViewRejection, EveryMalformedMessageHasOneReasonAndLeavesDefinedOutputs)
+TEST_P(DigiViewMessages, EveryMalformedMessageHasOneReasonAndLeavesDefinedOutputs)
 {
+  const std::size_t data = layout().data_offset;
+  const std::size_t checksum = layout().checksum_offset;
   CamTargeting targeting;
   targeting.camera = mainCamera();
-  const Bytes good = packTargeting(MessageType::SET_PARAMETERS, targeting).pack();
+  const Bytes good = packTargeting(format(), MessageType::SET_PARAMETERS, targeting).pack();
   auto with = [&](std::size_t at, std::uint8_t value, bool fix_checksum = true) {
     Bytes bytes = good;
     bytes[at] = value;
     if (fix_checksum)
     {
-      bytes[75] = crc8(bytes.data(), 75);
+      bytes[checksum] = crc8(bytes.data(), checksum);
     }
     return bytes;
   };
@@ -248,9 +274,9 @@ TEST(DigiViewRejection, EveryMalformedMessageHasOneReasonAndLeavesDefinedOutputs
     Bytes bytes = good;
     for (std::size_t index = 0; index < 4; ++index)
     {
-      bytes[11 + at + index] = static_cast<std::uint8_t>(static_cast<std::uint32_t>(value) >> (8 * index));
+      bytes[data + at + index] = static_cast<std::uint8_t>(static_cast<std::uint32_t>(value) >> (8 * index));
     }
-    bytes[75] = crc8(bytes.data(), 75);
+    bytes[checksum] = crc8(bytes.data(), checksum);
     return bytes;
   };
   struct Case
@@ -261,31 +287,34 @@ TEST(DigiViewRejection, EveryMalformedMessageHasOneReasonAndLeavesDefinedOutputs
     UnpackError message_error;
     UnpackError data_error;
   };
+  const std::size_t size = layout().size;
   const std::vector<Case> cases = {
-    { "79 bytes", good, 79, UnpackError::BAD_SIZE, UnpackError::NONE },
-    { "bad checksum", with(75, static_cast<std::uint8_t>(good[75] ^ 0x5A), false), 80, UnpackError::BAD_CHECKSUM,
-      UnpackError::NONE },
-    { "a flipped data bit", with(20, static_cast<std::uint8_t>(good[20] ^ 0x01), false), 80, UnpackError::BAD_CHECKSUM,
-      UnpackError::NONE },
-    { "version 1", with(8, 1), 80, UnpackError::BAD_VERSION, UnpackError::NONE },
-    { "message type 10", with(9, 10), 80, UnpackError::BAD_MESSAGE_TYPE, UnpackError::NONE },
-    { "message type 254", with(9, 254), 80, UnpackError::BAD_MESSAGE_TYPE, UnpackError::NONE },
-    { "param type 13", with(10, 13), 80, UnpackError::BAD_PARAM_TYPE, UnpackError::NONE },
-    { "cam_id 4", with(11 + 8, 4), 80, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "targeting mode 4", with(11 + 9, 4), 80, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "euler_delta 2", with(11 + 10, 2), 80, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "lock flags 8", with(11 + 23, 8), 80, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "a control character in the stream name", with(11 + 1, 0x07), 80, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "yaw 3.2 rad", withInt32(11, 3200), 80, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "pitch -1.6 rad", withInt32(15, -1600), 80, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "latitude 91", withInt32(28, 91000), 80, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "longitude 180", withInt32(32, 180000), 80, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "one byte short", good, size - 1, UnpackError::BAD_SIZE, UnpackError::NONE },
+    { "bad checksum", with(checksum, static_cast<std::uint8_t>(good[checksum] ^ 0x5A), false), size,
+      UnpackError::BAD_CHECKSUM, UnpackError::NONE },
+    { "a flipped data bit", with(data + 9, static_cast<std::uint8_t>(good[data + 9] ^ 0x01), false), size,
+      UnpackError::BAD_CHECKSUM, UnpackError::NONE },
+    { "version 1", with(8, 1), size, UnpackError::BAD_VERSION, UnpackError::NONE },
+    { "message type 10", with(9, 10), size, UnpackError::BAD_MESSAGE_TYPE, UnpackError::NONE },
+    { "message type 254", with(9, 254), size, UnpackError::BAD_MESSAGE_TYPE, UnpackError::NONE },
+    { "param type 13", with(10, 13), size, UnpackError::BAD_PARAM_TYPE, UnpackError::NONE },
+    { "cam_id 4", with(data + 8, 4), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "targeting mode 4", with(data + 9, 4), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "euler_delta 2", with(data + 10, 2), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "lock flags 8", with(data + 23, 8), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "a control character in the stream name", with(data + 1, 0x07), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "yaw 3.2 rad", withInt32(11, 3200), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "pitch -1.6 rad", withInt32(15, -1600), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "latitude 91", withInt32(28, 91000), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "longitude 180", withInt32(format() == Format::V1_0 ? 32 : 36, 180000), size, UnpackError::NONE,
+      UnpackError::BAD_DATA },
   };
   for (const Case& item : cases)
   {
     Message message;
     message.timestamp = 42;
-    EXPECT_EQ(Message::unpack(item.bytes.data(), item.size, message), item.message_error) << item.name;
+    EXPECT_EQ(Message::unpack(item.bytes.data(), item.size, Wire{ format() }, message), item.message_error)
+        << item.name;
     if (item.message_error != UnpackError::NONE)
     {
       EXPECT_EQ(message.timestamp, 0u) << item.name;  // defined: a default message
@@ -296,11 +325,17 @@ TEST(DigiViewRejection, EveryMalformedMessageHasOneReasonAndLeavesDefinedOutputs
     EXPECT_EQ(unpackTargeting(message, read), item.data_error) << item.name;
     EXPECT_EQ(read.yaw, 0.0) << item.name;
   }
-  // An optics unpack of a targeting message is refused too.
-  Message message;
-  ASSERT_EQ(Message::unpack(good.data(), good.size(), message), UnpackError::NONE);
+  // An optics unpack of a targeting message is refused too; so is a VIDEO_OUTPUT with more than four views.
+  const Message message = unpacked(good);
   CamOpticsAndControl optics;
   EXPECT_EQ(unpackOptics(message, optics), UnpackError::BAD_DATA);
+  Message output = packVideoOutput(format(), MessageType::CURRENT_PARAMETERS, VideoOutput{});
+  output.data[15] = 5;
+  VideoOutput read;
+  EXPECT_EQ(unpackVideoOutput(output, read), UnpackError::BAD_DATA);
   Message none;
-  EXPECT_EQ(Message::unpack(nullptr, 80, none), UnpackError::BAD_SIZE);
+  EXPECT_EQ(Message::unpack(nullptr, size, Wire{ format() }, none), UnpackError::BAD_SIZE);
 }
+
+INSTANTIATE_TEST_SUITE_P(Formats, DigiViewMessages, ::testing::ValuesIn(digiview_test::FORMATS),
+                         digiview_test::formatName);

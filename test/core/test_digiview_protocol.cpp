@@ -1,19 +1,21 @@
 /**
  * \file
- * \brief What only the digiview backend does, against the DigiView emulator on 127.0.0.1 (the backend contract
- * suite covers what every device does), and the emulator's own answers.
+ * \brief What only the digiview backend does, in both formats, against the DigiView emulator on 127.0.0.1 and
+ * against a DigiView that answers with the published implementations' frames (the backend contract suite covers what
+ * every device does).
  */
 #include <gtest/gtest.h>
-#include <poll.h>
 
 #include "wait_until.h"
 
-#include <boost/asio/connect.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/read.hpp>
 #include <boost/asio/write.hpp>
 
+#include "digiview_golden_frames.h"
+#include "digiview_test_formats.h"
 #include "ptz_action_server/core/digiview/digiview_protocol.h"
+#include "ptz_action_server/core/text.h"
 #include "ptz_action_server/emulators/digiview_emulator.h"
 
 using namespace ptz_action_server;
@@ -23,156 +25,249 @@ namespace
 {
 constexpr double WAIT = 10.0;
 
-DigiViewConfig backendConfig(const DigiViewEmulator& emulator, LinkKind transport = LinkKind::TCP)
+DigiViewConfig backendConfig(std::uint16_t port, Format format, LinkKind transport = LinkKind::TCP)
 {
   DigiViewConfig config;
-  config.link.port = emulator.port();
+  config.link.port = port;
   config.link.kind = transport;
+  config.digiview.wire.format = format;
   config.digiview.acceleration = 4.0;  // as the emulator turns
   config.session.startup_timeout = WAIT;
   config.session.state_timeout = 1.0;  // generous: a busy test machine may starve the I/O threads
   return config;
 }
 
-bool received(const DigiViewEmulator& emulator, MessageType type, digiview::ParamType param)
+DigiViewEmulatorConfig emulatorConfig(Format format, LinkKind transport = LinkKind::TCP)
 {
-  for (const ReceivedMessage& item : emulator.received().items())
-  {
-    if (item.error == UnpackError::NONE && item.message.message_type == type && item.message.param_type == param)
-    {
-      return true;
-    }
-  }
-  return false;
+  DigiViewEmulatorConfig config;
+  config.wire.format = format;
+  config.transport = transport;
+  return config;
 }
+
+/// A message of \p type about \p param asking for reports every \p interval ms (0: none, or a cancel).
+std::function<bool(const ReceivedMessage&)> is(MessageType type, digiview::ParamType param, std::uint32_t interval = 0)
+{
+  return [type, param, interval](const ReceivedMessage& item) {
+    IntervalRequest request;  // 0.5: GET_INTERVAL's data; 1.0: a GET's interval_ms
+    const std::uint32_t asked = unpackInterval(item.message, request) == UnpackError::NONE ? request.interval_ms : 0;
+    return item.error == UnpackError::NONE && item.message.message_type == type && item.message.param_type == param &&
+           asked == interval;
+  };
+}
+
+/// The subscription to \p param at \p interval ms in \p format: 0.5 GET_INTERVAL, 1.0 a GET with interval_ms.
+std::function<bool(const ReceivedMessage&)> subscription(Format format, digiview::ParamType param,
+                                                         std::uint32_t interval)
+{
+  return is(format == Format::V1_0 ? MessageType::GET_PARAMETERS : MessageType::GET_INTERVAL, param, interval);
+}
+
+/**
+ * A DigiView that answers GETs with the frames the published implementations print: VIDEO_OUTPUT and SYSTEM_STATUS
+ * byte for byte as published-wire-facts.md section 1.5 has them (stream "main", four views), the view's state packed
+ * by this codec. One TCP client, on its own thread.
+ */
+class PublishedDigiView
+{
+public:
+  explicit PublishedDigiView(Format format)
+    : format_(format)
+    , acceptor_(context_, boost::asio::ip::tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0))
+    , socket_(context_)
+    , request_(layoutOf(format).size)
+  {
+    acceptor_.async_accept(socket_, [this](const boost::system::error_code& error) {
+      if (!error)
+      {
+        read();
+      }
+    });
+    thread_ = std::thread([this] { context_.run(); });
+  }
+  ~PublishedDigiView()
+  {
+    context_.stop();
+    thread_.join();
+  }
+  std::uint16_t port() const
+  {
+    return acceptor_.local_endpoint().port();
+  }
+
+private:
+  void read()
+  {
+    boost::asio::async_read(socket_, boost::asio::buffer(request_),
+                            [this](const boost::system::error_code& error, std::size_t) {
+                              if (!error)
+                              {
+                                answer();
+                                read();
+                              }
+                            });
+  }
+  void answer()
+  {
+    Message request;
+    CameraId camera;
+    if (Message::unpack(request_.data(), request_.size(), Wire{ format_ }, request) != UnpackError::NONE ||
+        request.message_type != MessageType::GET_PARAMETERS || unpackCamera(request, camera) != UnpackError::NONE)
+    {
+      return;
+    }
+    Bytes reply;
+    if (request.param_type == digiview::ParamType::VIDEO_OUTPUT)
+    {
+      reply = digiview_golden::fromHex(digiview_golden::CURRENT_VIDEO_OUTPUT.in(format_));
+    }
+    else if (request.param_type == digiview::ParamType::SYSTEM_STATUS)
+    {
+      reply = digiview_golden::fromHex(digiview_golden::CURRENT_SYSTEM_STATUS.in(format_));
+    }
+    else if (request.param_type == digiview::ParamType::CAM_TARGETING)
+    {
+      CamTargeting targeting;
+      targeting.camera = camera;
+      reply = packTargeting(format_, MessageType::CURRENT_PARAMETERS, targeting).pack();
+    }
+    else if (request.param_type == digiview::ParamType::CAM_OPTICS_AND_CONTROL)
+    {
+      reply = packOptics(format_, MessageType::CURRENT_PARAMETERS, CamOpticsAndControl{ camera, 0, 1.2, 1 }).pack();
+    }
+    boost::system::error_code ignored;
+    boost::asio::write(socket_, boost::asio::buffer(reply), ignored);
+  }
+
+  const Format format_;
+  boost::asio::io_context context_;
+  boost::asio::ip::tcp::acceptor acceptor_;
+  boost::asio::ip::tcp::socket socket_;
+  Bytes request_;
+  std::thread thread_;
+};
+
+std::string startupError(DeviceBackend& backend)
+{
+  try
+  {
+    backend.start();
+  }
+  catch (const BackendError& error)
+  {
+    return error.what();
+  }
+  return "";
+}
+
+class DigiViewBackend : public ::testing::TestWithParam<Format>
+{
+};
 }  // namespace
 
-TEST(DigiViewBackend, StartupSubscribesToTheViewAndLearnsTheStream)
+TEST_P(DigiViewBackend, StartupSubscribesToTheViewAndLearnsTheStream)
 {
-  DigiViewEmulator emulator(DigiViewEmulatorConfig{});
-  auto backend = makeDigiViewBackend(backendConfig(emulator));
+  DigiViewEmulator emulator(emulatorConfig(GetParam()));
+  auto backend = makeDigiViewBackend(backendConfig(emulator.port(), GetParam()));
   backend->start();
   ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
-  EXPECT_TRUE(received(emulator, MessageType::GET_PARAMETERS, digiview::ParamType::VIDEO_OUTPUT));
-  EXPECT_TRUE(received(emulator, MessageType::GET_INTERVAL, digiview::ParamType::CAM_TARGETING));
-  EXPECT_TRUE(received(emulator, MessageType::GET_INTERVAL, digiview::ParamType::CAM_OPTICS_AND_CONTROL));
+  EXPECT_TRUE(emulator.received().waitFor(is(MessageType::GET_PARAMETERS, digiview::ParamType::VIDEO_OUTPUT), WAIT));
+  EXPECT_TRUE(emulator.received().waitFor(subscription(GetParam(), digiview::ParamType::CAM_TARGETING, 100), WAIT));
+  EXPECT_TRUE(
+      emulator.received().waitFor(subscription(GetParam(), digiview::ParamType::CAM_OPTICS_AND_CONTROL, 100), WAIT));
+  EXPECT_EQ(backend->protocol<DigiViewProtocol>().numUserViews(), 4);
   EXPECT_NEAR(backend->sample().position[ZOOM], 1.0, 1e-3);  // the emulator starts at fov 1.2 = fov_wide: zoom 1x
   // States keep coming, every 100 ms.
   const std::uint64_t states = backend->protocol<DigiViewProtocol>().counters().states;
   EXPECT_TRUE(waitUntil([&] { return backend->protocol<DigiViewProtocol>().counters().states >= states + 6; }, WAIT));
   EXPECT_DOUBLE_EQ(backend->capabilities().axes[ZOOM].range.max, 12.0);  // fov_wide / 0.1
+  for (const ReceivedMessage& item : emulator.received().items())
+  {
+    EXPECT_EQ(item.error, UnpackError::NONE) << "the emulator could not read a message of the backend's";
+  }
 }
 
-TEST(DigiViewBackend, QuitIsSentAtShutdownAndClosesTheConnection)
+TEST_P(DigiViewBackend, QuitIsSentAtShutdownAndClosesTheConnection)
 {
-  DigiViewEmulator emulator(DigiViewEmulatorConfig{});
+  DigiViewEmulator emulator(emulatorConfig(GetParam()));
   {
-    auto backend = makeDigiViewBackend(backendConfig(emulator));
+    auto backend = makeDigiViewBackend(backendConfig(emulator.port(), GetParam()));
     backend->start();
     ASSERT_TRUE(waitUntil([&] { return emulator.connections() == 1; }, WAIT));
     emulator.received().clear();
   }
   // The backend is gone; what it wrote last may still be on its way to the emulator.
-  auto is = [](MessageType type, digiview::ParamType param) {
-    return [type, param](const ReceivedMessage& item) {
-      return item.message.message_type == type && item.message.param_type == param;
-    };
-  };
-  EXPECT_TRUE(emulator.received().waitFor(is(MessageType::GET_INTERVAL, digiview::ParamType::CAM_TARGETING), WAIT));
+  EXPECT_TRUE(emulator.received().waitFor(subscription(GetParam(), digiview::ParamType::CAM_TARGETING, 0), WAIT));
   EXPECT_TRUE(emulator.received().waitFor(is(MessageType::QUIT, digiview::ParamType::SYSTEM_STATUS), WAIT));
   EXPECT_TRUE(waitUntil([&] { return emulator.connections() == 0; }, WAIT)) << "QUIT closes the connection";
 }
 
-TEST(DigiViewBackend, ACameraTheStreamDoesNotHaveFailsAtStart)
+TEST_P(DigiViewBackend, LearnsTheNumberOfViewsFromThePublishedVideoOutput)
 {
-  DigiViewEmulatorConfig emulator_config;
+  // Camera 3 exists only if the backend reads num_user_views = 4 from its own byte @15 of the published reply.
+  PublishedDigiView digiview(GetParam());
+  DigiViewConfig config = backendConfig(digiview.port(), GetParam());
+  config.digiview.cam_id = 3;
+  auto backend = makeDigiViewBackend(config);
+  ASSERT_EQ(startupError(*backend), "");
+  EXPECT_EQ(backend->protocol<DigiViewProtocol>().numUserViews(), 4);
+  EXPECT_EQ(backend->protocol<DigiViewProtocol>().counters().bad[static_cast<std::size_t>(UnpackError::BAD_CHECKSUM)],
+            0u);
+}
+
+TEST_P(DigiViewBackend, ACameraTheStreamDoesNotHaveFailsAtStart)
+{
+  DigiViewEmulatorConfig emulator_config = emulatorConfig(GetParam());
   emulator_config.layout_mode = 0;  // one user view
   DigiViewEmulator emulator(emulator_config);
-  DigiViewConfig config = backendConfig(emulator);
+  DigiViewConfig config = backendConfig(emulator.port(), GetParam());
   config.digiview.cam_id = 1;
   auto backend = makeDigiViewBackend(config);
-  try
-  {
-    backend->start();
-    FAIL() << "start() accepted a camera that does not exist";
-  }
-  catch (const BackendError& error)
-  {
-    const std::string text = error.what();
-    EXPECT_NE(text.find("DigiView view 'main' camera 1 on tcp 127.0.0.1:"), std::string::npos) << text;
-    EXPECT_NE(text.find("stream 'main' has 1 user view(s), so cam_id 1 does not exist"), std::string::npos) << text;
-  }
+  const std::string text = startupError(*backend);
+  EXPECT_NE(text.find("DigiView view 'main' camera 1 on tcp 127.0.0.1:"), std::string::npos) << text;
+  EXPECT_NE(text.find("stream 'main' has 1 user view(s), so cam_id 1 does not exist"), std::string::npos) << text;
 }
 
-TEST(DigiViewEmulator, AnswersLikeDigiView)
+TEST_P(DigiViewBackend, ADigiViewOfTheOtherFormatFailsAtStartSayingSo)
 {
-  DigiViewEmulator emulator(DigiViewEmulatorConfig{});
-  boost::asio::io_context context;
-  boost::asio::ip::tcp::socket socket(context);
-  socket.connect(boost::asio::ip::tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), emulator.port()));
-  auto read = [&]() {
-    Bytes answer{};
-    boost::asio::read(socket, boost::asio::buffer(answer));
-    Message message;
-    EXPECT_EQ(Message::unpack(answer.data(), answer.size(), message), UnpackError::NONE);
-    return message;
-  };
-  auto exchange = [&](Bytes bytes) {
-    boost::asio::write(socket, boost::asio::buffer(bytes));
-    return read();
-  };
-  const CameraId camera{ "main", 0 };
-  CamTargeting targeting;
-  targeting.camera = camera;
-  targeting.yaw = 0.1;
-  EXPECT_EQ(exchange(packTargeting(MessageType::SET_PARAMETERS, targeting).pack()).message_type,
-            MessageType::ACKNOWLEDGEMENT);
-  Bytes broken = packTargeting(MessageType::SET_PARAMETERS, targeting).pack();
-  broken[30] ^= 0x10;
-  EXPECT_EQ(exchange(broken).message_type, MessageType::CHECKSUM_ERROR);
-  Bytes unknown = packBare(MessageType::ACKNOWLEDGEMENT, digiview::ParamType::CAM_TARGETING).pack();
-  unknown[9] = 42;
-  unknown[75] = crc8(unknown.data(), 75);
-  EXPECT_EQ(exchange(unknown).message_type, MessageType::UNKNOWN);
-  Bytes out_of_range = packTargeting(MessageType::SET_PARAMETERS, targeting).pack();
-  out_of_range[11 + 8] = 9;  // cam_id 9
-  out_of_range[75] = crc8(out_of_range.data(), 75);
-  EXPECT_EQ(exchange(out_of_range).message_type, MessageType::DATA_ERROR);
-  EXPECT_EQ(exchange(packGet(digiview::ParamType::AI, camera).pack()).message_type, MessageType::UNKNOWN);
-  const Message state = exchange(packGet(digiview::ParamType::CAM_TARGETING, camera).pack());
-  EXPECT_EQ(state.message_type, MessageType::CURRENT_PARAMETERS);
-
-  // GET_INTERVAL: under 100 ms is ignored; 100 ms comes periodically; 0 cancels. The emulator stamps what it sends
-  // in microseconds: its own stamps tell the period, whatever this thread's timing.
-  boost::asio::write(
-      socket,
-      boost::asio::buffer(packInterval(IntervalRequest{ digiview::ParamType::CAM_TARGETING, camera, 50 }).pack()));
-  boost::asio::write(
-      socket,
-      boost::asio::buffer(packInterval(IntervalRequest{ digiview::ParamType::CAM_TARGETING, camera, 100 }).pack()));
-  std::vector<std::uint64_t> stamps;
-  for (int count = 0; count < 6; ++count)
+  const Format other = GetParam() == Format::V0_5 ? Format::V1_0 : Format::V0_5;
+  for (LinkKind transport : { LinkKind::TCP, LinkKind::UDP })
   {
-    stamps.push_back(read().timestamp);
+    DigiViewEmulator emulator(emulatorConfig(other, transport));
+    auto backend = makeDigiViewBackend(backendConfig(emulator.port(), GetParam(), transport));
+    const std::string text = startupError(*backend);
+    const std::string expected =
+        formatText("DigiView speaks format %s (%zu-byte messages), but format is set to "
+                   "\"%s\" (%zu-byte messages)",
+                   toString(other), layoutOf(other).size, toString(GetParam()), layoutOf(GetParam()).size);
+    EXPECT_NE(text.find(expected), std::string::npos) << toString(transport) << ": " << text;
   }
-  // On average: a late timer shortens the next interval (the schedule does not drift), never the mean.
-  EXPECT_GE((stamps.back() - stamps.front()) / (stamps.size() - 1), 75000u) << "reports every 50 ms: 50 was taken";
-  boost::asio::write(
-      socket,
-      boost::asio::buffer(packInterval(IntervalRequest{ digiview::ParamType::CAM_TARGETING, camera, 0 }).pack()));
-  // Reports sent before the cancel was read come first; the answer to this GET marks the end of them.
-  boost::asio::write(socket, boost::asio::buffer(packGet(digiview::ParamType::SYSTEM_STATUS, camera).pack()));
-  while (read().param_type != digiview::ParamType::SYSTEM_STATUS)
-  {
-  }
-  pollfd readable{ socket.native_handle(), POLLIN, 0 };
-  EXPECT_EQ(::poll(&readable, 1, 350), 0) << "the subscription went on after an interval of 0";
-
-  // QUIT closes the connection.
-  boost::asio::write(socket,
-                     boost::asio::buffer(packBare(MessageType::QUIT, digiview::ParamType::SYSTEM_STATUS).pack()));
-  Bytes after{};
-  boost::system::error_code error;
-  boost::asio::read(socket, boost::asio::buffer(after), error);
-  EXPECT_EQ(error, boost::asio::error::eof);
 }
+
+TEST_P(DigiViewBackend, ADigiViewThatLeavesTheChecksumZeroIsUsedOnlyWhenTheSettingSaysSo)
+{
+  DigiViewEmulatorConfig emulator_config = emulatorConfig(GetParam());
+  emulator_config.fill_checksum = false;
+  DigiViewEmulator emulator(emulator_config);
+
+  DigiViewConfig config = backendConfig(emulator.port(), GetParam());
+  config.session.startup_timeout = 2.0;
+  auto strict = makeDigiViewBackend(config);
+  EXPECT_NE(startupError(*strict).find("no answer from DigiView"), std::string::npos);
+  EXPECT_GT(strict->protocol<DigiViewProtocol>().counters().bad[static_cast<std::size_t>(UnpackError::BAD_CHECKSUM)],
+            0u);
+  EXPECT_EQ(strict->protocol<DigiViewProtocol>().counters().unverified, 0u);
+  strict.reset();
+
+  config.digiview.wire.checksum = ChecksumRule::ZERO_ACCEPTED;
+  config.session.startup_timeout = WAIT;
+  auto lenient = makeDigiViewBackend(config);
+  ASSERT_EQ(startupError(*lenient), "");
+  EXPECT_TRUE(waitUntil([&] { return lenient->sample().link_up; }, WAIT));
+  EXPECT_GT(lenient->protocol<DigiViewProtocol>().counters().unverified, 0u);
+  EXPECT_EQ(lenient->protocol<DigiViewProtocol>().counters().bad[static_cast<std::size_t>(UnpackError::BAD_CHECKSUM)],
+            0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, DigiViewBackend, ::testing::ValuesIn(digiview_test::FORMATS),
+                         digiview_test::formatName);

@@ -1,6 +1,7 @@
 /**
  * \file
- * \brief A DigiView emulator: answers the 0.5 messages over TCP or UDP, with virtual views that slew.
+ * \brief A DigiView emulator: answers the messages of format 0.5 or 1.0 over TCP or UDP, with virtual views that
+ * slew.
  */
 #pragma once
 
@@ -30,6 +31,11 @@ struct DigiViewEmulatorConfig
   std::string host = "127.0.0.1";
   std::uint16_t port = 0;              ///< 0: an ephemeral port (see port())
   LinkKind transport = LinkKind::TCP;  ///< TCP or UDP
+  /// The format it speaks (0.5: 80-byte messages, 1.0: 88), and what it takes for a checksum from its clients.
+  digiview::Wire wire;
+  /// false: every message it sends carries a checksum byte of 0, as from a DigiView built on the published helpers,
+  /// which never fill it.
+  bool fill_checksum = true;
   std::vector<std::string> streams{ "main" };
   std::uint8_t layout_mode = 4;  ///< 4: four user views in a 2x2 grid
   double slew_rate = 1.0;        ///< rad/s a view turns at
@@ -43,18 +49,20 @@ struct ReceivedMessage
 {
   TimePoint at;
   digiview::UnpackError error = digiview::UnpackError::NONE;
+  bool unverified = false;    ///< accepted with a checksum byte of 0 (ChecksumRule::ZERO_ACCEPTED)
   digiview::Message message;  ///< valid when error is NONE
 };
 
 /**
  * \brief Behaves as DigiView does towards a PTZ client.
  *
- * ACKNOWLEDGEMENT for accepted SETs (CAM_TARGETING in directional mode, absolute or delta; CAM_OPTICS_AND_CONTROL),
- * CURRENT_PARAMETERS for GETs (SYSTEM_STATUS, VIDEO_OUTPUT, CAM_TARGETING, CAM_OPTICS_AND_CONTROL), periodic
- * CURRENT_PARAMETERS for GET_INTERVAL (at least 100 ms; 0 cancels; less is ignored), CHECKSUM_ERROR for a bad
- * checksum, DATA_ERROR for data out of range, UNKNOWN for types it does not know or model, FORBIDDEN for SETs
- * while told to refuse, and QUIT closes the connection. Requests about an unknown stream or camera are ignored,
- * as the seed says. Owns its I/O thread.
+ * Speaks one format (config.wire), cutting a TCP stream by its size. ACKNOWLEDGEMENT for accepted SETs (CAM_TARGETING
+ * in directional mode, absolute or delta; CAM_OPTICS_AND_CONTROL), CURRENT_PARAMETERS for GETs (SYSTEM_STATUS,
+ * VIDEO_OUTPUT, CAM_TARGETING, CAM_OPTICS_AND_CONTROL), periodic CURRENT_PARAMETERS for subscriptions (0.5:
+ * GET_INTERVAL, answered by its reports only; 1.0: a GET with interval_ms, answered at once too; at least 100 ms
+ * subscribes, 0 cancels, a request with less is ignored), CHECKSUM_ERROR for a bad checksum, DATA_ERROR for data out of
+ * range, UNKNOWN for types it does not know or model, FORBIDDEN for SETs while told to refuse, and QUIT closes the
+ * connection. Requests about an unknown stream or camera are ignored, as the seed says. Owns its I/O thread.
  */
 class DigiViewEmulator
 {
@@ -107,7 +115,6 @@ private:
   /// CURRENT_PARAMETERS of \p param for \p camera, or false if there is no such view / param.
   bool current(digiview::ParamType param, const digiview::CameraId& camera, digiview::Message& message);
   SimDeviceModel* model(const digiview::CameraId& camera);
-  std::uint8_t numUserViews() const;
 
   const DigiViewEmulatorConfig config_;
   boost::asio::io_context context_;

@@ -1,6 +1,9 @@
 #include "ptz_action_server/core/digiview/digiview_codec.h"
 
 #include <algorithm>
+#include <stdexcept>
+
+#include "ptz_action_server/core/byte_order.h"
 
 namespace ptz_action_server
 {
@@ -28,10 +31,78 @@ constexpr std::array<std::uint8_t, 256> makeCrcTable()
 constexpr std::array<std::uint8_t, 256> CRC_TABLE = makeCrcTable();
 }  // namespace
 
-bool isMessageType(std::uint8_t value)
+const char* toString(Format format)
 {
-  return value <= static_cast<std::uint8_t>(MessageType::UNKNOWN) ||
-         value == static_cast<std::uint8_t>(MessageType::QUIT);
+  return format == Format::V1_0 ? "1.0" : "0.5";
+}
+
+bool parseFormat(const std::string& text, Format& format)
+{
+  if (text != "0.5" && text != "1.0")
+  {
+    return false;
+  }
+  format = text == "1.0" ? Format::V1_0 : Format::V0_5;
+  return true;
+}
+
+Layout layoutOf(Format format)
+{
+  return format == Format::V1_0 ? Layout{ 88, 16, 80, 12 } : Layout{ 80, 11, 75, 0 };
+}
+
+const char* toString(ChecksumRule rule)
+{
+  return rule == ChecksumRule::ZERO_ACCEPTED ? "zero_accepted" : "required";
+}
+
+bool parseChecksumRule(const std::string& text, ChecksumRule& rule)
+{
+  if (text != "required" && text != "zero_accepted")
+  {
+    return false;
+  }
+  rule = text == "required" ? ChecksumRule::REQUIRED : ChecksumRule::ZERO_ACCEPTED;
+  return true;
+}
+
+bool toWire(Format format, MessageType type, std::uint8_t& wire)
+{
+  const auto value = static_cast<std::uint8_t>(type);
+  if (format == Format::V0_5 || value < static_cast<std::uint8_t>(MessageType::GET_INTERVAL) ||
+      type == MessageType::QUIT)
+  {
+    wire = value;
+    return true;
+  }
+  if (type == MessageType::GET_INTERVAL)
+  {
+    return false;
+  }
+  wire = static_cast<std::uint8_t>(value - 1);  // 1.0 removed GET_INTERVAL: the replies moved down by one
+  return true;
+}
+
+bool fromWire(Format format, std::uint8_t wire, MessageType& type)
+{
+  const auto last = static_cast<std::uint8_t>(MessageType::UNKNOWN);
+  if (wire == static_cast<std::uint8_t>(MessageType::QUIT) ||
+      wire < static_cast<std::uint8_t>(MessageType::GET_INTERVAL))
+  {
+    type = static_cast<MessageType>(wire);
+    return true;
+  }
+  if (format == Format::V0_5 && wire <= last)
+  {
+    type = static_cast<MessageType>(wire);
+    return true;
+  }
+  if (format == Format::V1_0 && wire < last)
+  {
+    type = static_cast<MessageType>(wire + 1);
+    return true;
+  }
+  return false;
 }
 
 bool isParamType(std::uint8_t value)
@@ -139,35 +210,57 @@ std::uint8_t crc8(const std::uint8_t* data, std::size_t size)
 
 Bytes Message::pack() const
 {
-  Bytes bytes{};
-  for (std::size_t index = 0; index < 8; ++index)
+  const Layout layout = layoutOf(format);
+  std::uint8_t type = 0;
+  if (!toWire(format, message_type, type))
   {
-    bytes[index] = static_cast<std::uint8_t>(timestamp >> (8 * index));
+    throw std::invalid_argument(std::string("DigiView format ") + toString(format) + " has no " +
+                                toString(message_type));
   }
+  if (layout.interval_offset == 0 && interval_ms != 0)
+  {
+    throw std::invalid_argument(std::string("DigiView format ") + toString(format) + " has no interval_ms");
+  }
+  Bytes bytes(layout.size, 0);
+  putLittleEndian(&bytes[0], timestamp);
   bytes[8] = version;
-  bytes[9] = static_cast<std::uint8_t>(message_type);
+  bytes[9] = type;
   bytes[10] = static_cast<std::uint8_t>(param_type);
-  std::copy(data.begin(), data.end(), bytes.begin() + DATA_OFFSET);
-  bytes[CHECKSUM_OFFSET] = crc8(bytes.data(), CHECKSUM_OFFSET);
+  if (layout.interval_offset != 0)
+  {
+    putLittleEndian(&bytes[layout.interval_offset], interval_ms);
+  }
+  std::copy(data.begin(), data.end(), bytes.begin() + static_cast<std::ptrdiff_t>(layout.data_offset));
+  bytes[layout.checksum_offset] = crc8(bytes.data(), layout.checksum_offset);
   return bytes;
 }
 
-UnpackError Message::unpack(const std::uint8_t* bytes, std::size_t size, Message& message)
+UnpackError Message::unpack(const std::uint8_t* bytes, std::size_t size, const Wire& wire, Message& message,
+                            bool* unverified)
 {
   message = Message();
-  if (bytes == nullptr || size != MESSAGE_SIZE)
+  if (unverified != nullptr)
+  {
+    *unverified = false;
+  }
+  const Layout layout = layoutOf(wire.format);
+  if (bytes == nullptr || size != layout.size)
   {
     return UnpackError::BAD_SIZE;
   }
-  if (crc8(bytes, CHECKSUM_OFFSET) != bytes[CHECKSUM_OFFSET])
+  const std::uint8_t checksum = bytes[layout.checksum_offset];
+  const bool verified = crc8(bytes, layout.checksum_offset) == checksum;
+  const bool unfilled = !verified && checksum == 0 && wire.checksum == ChecksumRule::ZERO_ACCEPTED;
+  if (!verified && !unfilled)
   {
     return UnpackError::BAD_CHECKSUM;
   }
+  MessageType type = MessageType::EMPTY;
   if (bytes[8] != VERSION)
   {
     return UnpackError::BAD_VERSION;
   }
-  if (!isMessageType(bytes[9]))
+  if (!fromWire(wire.format, bytes[9], type))
   {
     return UnpackError::BAD_MESSAGE_TYPE;
   }
@@ -175,14 +268,20 @@ UnpackError Message::unpack(const std::uint8_t* bytes, std::size_t size, Message
   {
     return UnpackError::BAD_PARAM_TYPE;
   }
-  for (std::size_t index = 0; index < 8; ++index)
-  {
-    message.timestamp |= static_cast<std::uint64_t>(bytes[index]) << (8 * index);
-  }
+  message.format = wire.format;
+  message.timestamp = getLittleEndian<std::uint64_t>(bytes);
   message.version = bytes[8];
-  message.message_type = static_cast<MessageType>(bytes[9]);
+  message.message_type = type;
   message.param_type = static_cast<ParamType>(bytes[10]);
-  std::copy(bytes + DATA_OFFSET, bytes + DATA_OFFSET + DATA_SIZE, message.data.begin());
+  if (layout.interval_offset != 0)
+  {
+    message.interval_ms = getLittleEndian<std::uint32_t>(bytes + layout.interval_offset);
+  }
+  std::copy(bytes + layout.data_offset, bytes + layout.data_offset + DATA_SIZE, message.data.begin());
+  if (unverified != nullptr)
+  {
+    *unverified = unfilled;
+  }
   return UnpackError::NONE;
 }
 

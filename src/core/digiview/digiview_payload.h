@@ -1,7 +1,8 @@
 /**
  * \file
  * \brief Private to the DigiView codec: little-endian writes and reads into a message's 64-byte data field, the
- * scales of its fixed-point fields, and the camera id most payloads start with (digiview_payloads.cpp).
+ * scales of its fixed-point fields (truncated as the published packers do), and the camera id most payloads start with
+ * (digiview_payloads.cpp).
  */
 #pragma once
 
@@ -18,11 +19,30 @@ namespace digiview
 {
 namespace detail
 {
-// Scaled fields: angles and coordinates x 1000, offsets x 32767.
-inline constexpr double ANGLE_SCALE = 1000.0;
-inline constexpr double OFFSET_SCALE = 32767.0;
+// Scaled fields: angles, coordinates, fov and temperature x 1000, offsets x 32767, in single precision.
+inline constexpr float MILLI_SCALE = 1000.0f;
+inline constexpr float OFFSET_SCALE = 32767.0f;
 inline constexpr std::int32_t MAX_YAW = 3142;    ///< pi, in milliradians, rounded up
 inline constexpr std::int32_t MAX_PITCH = 1571;  ///< pi / 2
+
+/// The value of a scaled field (in double precision: unpacking does not change the wire).
+inline double unscaled(std::int64_t value, float scale)
+{
+  return static_cast<double>(value) / static_cast<double>(scale);
+}
+
+/// As the published packers' static_cast<Int>(value * scale) on floats: truncated toward zero; saturated at \p min
+/// and \p max, where the published cast is undefined; NaN is 0.
+template <class Int>
+Int truncated(double value, float scale, Int min, Int max)
+{
+  const float product = static_cast<float>(value) * scale;
+  if (std::isnan(product))
+  {
+    return 0;
+  }
+  return static_cast<Int>(std::clamp(static_cast<double>(product), static_cast<double>(min), static_cast<double>(max)));
+}
 
 /// Little-endian writes and reads into the 64-byte data field, by offset.
 class Payload
@@ -43,18 +63,16 @@ public:
   {
     putLittleEndian(&data_[at], value);
   }
-  void scaled32(std::size_t at, double value, double scale)
+  void scaled32(std::size_t at, double value, float scale)
   {
-    const double scaled = std::round(value * scale);
-    const double bounded =
-        std::clamp(std::isfinite(scaled) ? scaled : 0.0, static_cast<double>(std::numeric_limits<std::int32_t>::min()),
-                   static_cast<double>(std::numeric_limits<std::int32_t>::max()));
-    u32(at, static_cast<std::uint32_t>(static_cast<std::int32_t>(bounded)));
+    const std::int32_t scaled = truncated<std::int32_t>(value, scale, std::numeric_limits<std::int32_t>::min(),
+                                                        std::numeric_limits<std::int32_t>::max());
+    u32(at, static_cast<std::uint32_t>(scaled));
   }
+  /// A view offset: never -32768, as the published packer with inputs in [-1, 1].
   void scaled16(std::size_t at, double value)
   {
-    const double scaled = std::clamp(std::round(value * OFFSET_SCALE), -OFFSET_SCALE, OFFSET_SCALE);
-    u16(at, static_cast<std::uint16_t>(static_cast<std::int16_t>(std::isfinite(scaled) ? scaled : 0.0)));
+    u16(at, static_cast<std::uint16_t>(truncated<std::int16_t>(value, OFFSET_SCALE, -32767, 32767)));
   }
   void name(std::size_t at, const std::string& text)
   {
@@ -130,9 +148,10 @@ inline bool within(std::int64_t value, std::int64_t min, std::int64_t max)
   return value >= min && value <= max;
 }
 
-inline Message withPayload(MessageType type, ParamType param)
+inline Message withPayload(Format format, MessageType type, ParamType param)
 {
   Message message;
+  message.format = format;
   message.message_type = type;
   message.param_type = param;
   return message;

@@ -1,6 +1,6 @@
 #include "ptz_action_server/core/digiview/digiview_codec.h"
 
-#include <cstring>
+#include <algorithm>
 
 #include "digiview_payload.h"
 
@@ -10,22 +10,40 @@ namespace digiview
 {
 using namespace detail;
 
-Message packTargeting(MessageType type, const CamTargeting& targeting)
+/// Where a format puts CAM_TARGETING's coordinates: 0.5 as its packer writes them (latitude twice), 1.0 in order.
+struct CoordinateOffsets
 {
-  Message message = withPayload(type, ParamType::CAM_TARGETING);
+  std::size_t latitude;
+  std::size_t longitude;
+  std::size_t altitude;
+};
+
+CoordinateOffsets coordinatesOf(Format format)
+{
+  return format == Format::V1_0 ? CoordinateOffsets{ 28, 32, 36 } : CoordinateOffsets{ 28, 36, 40 };
+}
+
+Message packTargeting(Format format, MessageType type, const CamTargeting& targeting)
+{
+  Message message = withPayload(format, type, ParamType::CAM_TARGETING);
   Payload payload(message.data);
   writeCamera(payload, targeting.camera);
   payload.u8(9, targeting.targeting_mode);
   payload.u8(10, targeting.euler_delta ? 1 : 0);
-  payload.scaled32(11, targeting.yaw, ANGLE_SCALE);
-  payload.scaled32(15, targeting.pitch, ANGLE_SCALE);
-  payload.scaled32(19, targeting.roll, ANGLE_SCALE);
+  payload.scaled32(11, targeting.yaw, MILLI_SCALE);
+  payload.scaled32(15, targeting.pitch, MILLI_SCALE);
+  payload.scaled32(19, targeting.roll, MILLI_SCALE);
   payload.u8(23, targeting.lock_flags);
   payload.scaled16(24, targeting.x_offset);
   payload.scaled16(26, targeting.y_offset);
-  payload.scaled32(28, targeting.target_latitude, ANGLE_SCALE);
-  payload.scaled32(32, targeting.target_longitude, ANGLE_SCALE);
-  payload.scaled32(36, targeting.target_altitude, ANGLE_SCALE);
+  const CoordinateOffsets at = coordinatesOf(format);
+  if (format == Format::V0_5)
+  {
+    payload.scaled32(32, targeting.target_latitude, MILLI_SCALE);  // the 0.5 packer writes it twice
+  }
+  payload.scaled32(at.latitude, targeting.target_latitude, MILLI_SCALE);
+  payload.scaled32(at.longitude, targeting.target_longitude, MILLI_SCALE);
+  payload.scaled32(at.altitude, targeting.target_altitude, MILLI_SCALE);
   return message;
 }
 
@@ -42,9 +60,10 @@ UnpackError unpackTargeting(const Message& message, CamTargeting& targeting)
   const std::int32_t roll = reader.i32(19);
   const std::int16_t x_offset = reader.i16(24);
   const std::int16_t y_offset = reader.i16(26);
-  const std::int32_t latitude = reader.i32(28);
-  const std::int32_t longitude = reader.i32(32);
-  const std::int32_t altitude = reader.i32(36);
+  const CoordinateOffsets at = coordinatesOf(message.format);
+  const std::int32_t latitude = reader.i32(at.latitude);
+  const std::int32_t longitude = reader.i32(at.longitude);
+  const std::int32_t altitude = reader.i32(at.altitude);
   CamTargeting read;
   const bool valid = readCamera(reader, read.camera) && reader.u8(9) <= 3 && reader.u8(10) <= 1 &&
                      within(yaw, -MAX_YAW, MAX_YAW) && within(pitch, -MAX_PITCH, MAX_PITCH) &&
@@ -57,26 +76,26 @@ UnpackError unpackTargeting(const Message& message, CamTargeting& targeting)
   }
   read.targeting_mode = reader.u8(9);
   read.euler_delta = reader.u8(10) != 0;
-  read.yaw = yaw / ANGLE_SCALE;
-  read.pitch = pitch / ANGLE_SCALE;
-  read.roll = roll / ANGLE_SCALE;
+  read.yaw = unscaled(yaw, MILLI_SCALE);
+  read.pitch = unscaled(pitch, MILLI_SCALE);
+  read.roll = unscaled(roll, MILLI_SCALE);
   read.lock_flags = reader.u8(23);
-  read.x_offset = x_offset / OFFSET_SCALE;
-  read.y_offset = y_offset / OFFSET_SCALE;
-  read.target_latitude = latitude / ANGLE_SCALE;
-  read.target_longitude = longitude / ANGLE_SCALE;
-  read.target_altitude = altitude / ANGLE_SCALE;
+  read.x_offset = unscaled(x_offset, OFFSET_SCALE);
+  read.y_offset = unscaled(y_offset, OFFSET_SCALE);
+  read.target_latitude = unscaled(latitude, MILLI_SCALE);
+  read.target_longitude = unscaled(longitude, MILLI_SCALE);
+  read.target_altitude = unscaled(altitude, MILLI_SCALE);
   targeting = read;
   return UnpackError::NONE;
 }
 
-Message packOptics(MessageType type, const CamOpticsAndControl& optics)
+Message packOptics(Format format, MessageType type, const CamOpticsAndControl& optics)
 {
-  Message message = withPayload(type, ParamType::CAM_OPTICS_AND_CONTROL);
+  Message message = withPayload(format, type, ParamType::CAM_OPTICS_AND_CONTROL);
   Payload payload(message.data);
   writeCamera(payload, optics.camera);
   payload.u8(9, static_cast<std::uint8_t>(optics.zoom));
-  payload.scaled32(10, optics.fov, ANGLE_SCALE);
+  payload.scaled32(10, optics.fov, MILLI_SCALE);
   payload.u8(14, optics.crop_mode);
   return message;
 }
@@ -97,19 +116,19 @@ UnpackError unpackOptics(const Message& message, CamOpticsAndControl& optics)
     return UnpackError::BAD_DATA;
   }
   read.zoom = zoom;
-  read.fov = fov / ANGLE_SCALE;
+  read.fov = unscaled(fov, MILLI_SCALE);
   read.crop_mode = reader.u8(14);
   optics = read;
   return UnpackError::NONE;
 }
 
-Message packSystemStatus(MessageType type, const SystemStatus& status)
+Message packSystemStatus(Format format, MessageType type, const SystemStatus& status)
 {
-  Message message = withPayload(type, ParamType::SYSTEM_STATUS);
+  Message message = withPayload(format, type, ParamType::SYSTEM_STATUS);
   Payload payload(message.data);
   payload.u8(0, status.status);
   payload.u8(1, status.error);
-  payload.u32(2, floatBits(status.jetson_temp));
+  payload.scaled32(2, status.jetson_temp, MILLI_SCALE);
   return message;
 }
 
@@ -121,35 +140,37 @@ UnpackError unpackSystemStatus(const Message& message, SystemStatus& status)
     return UnpackError::BAD_DATA;
   }
   const Reader reader(message.data);
-  const float temperature = floatFromBits(reader.u32(2));
-  if (reader.u8(0) > 3 || reader.u8(1) != 0 || !(temperature >= 0.0f && temperature <= 105.0f))
+  const std::int32_t temperature = reader.i32(2);
+  if (reader.u8(0) > 3 || reader.u8(1) != 0 || !within(temperature, 0, 105000))
   {
     return UnpackError::BAD_DATA;
   }
   status.status = reader.u8(0);
   status.error = reader.u8(1);
-  status.jetson_temp = temperature;
+  status.jetson_temp = unscaled(temperature, MILLI_SCALE);
   return UnpackError::NONE;
 }
 
-Message packVideoOutput(MessageType type, const VideoOutput& output)
+Message packVideoOutput(Format format, MessageType type, const VideoOutput& output)
 {
-  Message message = withPayload(type, ParamType::VIDEO_OUTPUT);
+  Message message = withPayload(format, type, ParamType::VIDEO_OUTPUT);
   Payload payload(message.data);
   payload.name(0, output.stream_name);
   payload.u16(8, output.width);
   payload.u16(10, output.height);
   payload.u8(12, output.fps);
-  // A GET reply carries num_user_views in the 4 MSB of the layout byte; a SET only the layout mode.
-  const std::uint8_t views = type == MessageType::CURRENT_PARAMETERS ? output.num_user_views : 0;
-  payload.u8(13, static_cast<std::uint8_t>((views << 4) | (output.layout_mode & 0x0F)));
+  payload.u8(13, output.layout_mode);
   payload.u8(14, output.detection_overlay_mode);
-  for (std::size_t index = 0; index < output.views.size(); ++index)
+  // As the published helpers: a SET carries no views; otherwise num_user_views (at most 4), then that many boxes.
+  const std::size_t views =
+      type == MessageType::SET_PARAMETERS ? 0 : std::min<std::size_t>(output.num_user_views, output.views.size());
+  payload.u8(15, static_cast<std::uint8_t>(views));
+  for (std::size_t index = 0; index < views; ++index)
   {
-    payload.box(15 + 8 * index, output.views[index]);
+    payload.box(16 + 8 * index, output.views[index]);
   }
-  payload.box(47, output.detection_overlay_box);
-  payload.u16(55, output.single_detection_size);
+  payload.box(16 + 8 * views, output.detection_overlay_box);
+  payload.u16(24 + 8 * views, output.single_detection_size);
   return message;
 }
 
@@ -162,34 +183,33 @@ UnpackError unpackVideoOutput(const Message& message, VideoOutput& output)
   }
   const Reader reader(message.data);
   VideoOutput read;
-  const std::uint8_t layout = reader.u8(13);
-  const bool reply = message.message_type == MessageType::CURRENT_PARAMETERS;
-  read.layout_mode = layout & 0x0F;
-  read.num_user_views = layout >> 4;
   read.width = reader.u16(8);
   read.height = reader.u16(10);
+  read.layout_mode = reader.u8(13);
+  read.detection_overlay_mode = reader.u8(14);
+  read.num_user_views = reader.u8(15);
   const bool valid = reader.name(0, read.stream_name) && within(read.width, 640, 1920) &&
-                     within(read.height, 480, 1080) && read.layout_mode <= 6 &&
-                     (reply ? within(read.num_user_views, 1, 4) : read.num_user_views == 0) && reader.u8(14) <= 5;
+                     within(read.height, 480, 1080) && read.layout_mode <= 6 && read.detection_overlay_mode <= 5 &&
+                     read.num_user_views <= read.views.size();
   if (!valid)
   {
     return UnpackError::BAD_DATA;
   }
   read.fps = reader.u8(12);
-  read.detection_overlay_mode = reader.u8(14);
-  for (std::size_t index = 0; index < read.views.size(); ++index)
+  const std::size_t views = read.num_user_views;
+  for (std::size_t index = 0; index < views; ++index)
   {
-    read.views[index] = reader.box(15 + 8 * index);
+    read.views[index] = reader.box(16 + 8 * index);
   }
-  read.detection_overlay_box = reader.box(47);
-  read.single_detection_size = reader.u16(55);
+  read.detection_overlay_box = reader.box(16 + 8 * views);
+  read.single_detection_size = reader.u16(24 + 8 * views);
   output = read;
   return UnpackError::NONE;
 }
 
-Message packGet(ParamType param, const CameraId& camera)
+Message packGet(Format format, ParamType param, const CameraId& camera)
 {
-  Message message = withPayload(MessageType::GET_PARAMETERS, param);
+  Message message = withPayload(format, MessageType::GET_PARAMETERS, param);
   Payload payload(message.data);
   writeCamera(payload, camera);
   return message;
@@ -208,9 +228,15 @@ UnpackError unpackCamera(const Message& message, CameraId& camera)
   return UnpackError::NONE;
 }
 
-Message packInterval(const IntervalRequest& request)
+Message packInterval(Format format, const IntervalRequest& request)
 {
-  Message message = withPayload(MessageType::GET_INTERVAL, request.param);
+  if (format == Format::V1_0)
+  {
+    Message message = packGet(format, request.param, request.camera);
+    message.interval_ms = request.interval_ms;
+    return message;
+  }
+  Message message = withPayload(format, MessageType::GET_INTERVAL, request.param);
   Payload payload(message.data);
   writeCamera(payload, request.camera);
   payload.u32(12, request.interval_ms);
@@ -220,25 +246,23 @@ Message packInterval(const IntervalRequest& request)
 UnpackError unpackInterval(const Message& message, IntervalRequest& request)
 {
   request = IntervalRequest();
-  if (message.message_type != MessageType::GET_INTERVAL)
-  {
-    return UnpackError::BAD_DATA;
-  }
+  const bool get_interval = message.message_type == MessageType::GET_INTERVAL;  // only 0.5 has one
+  const bool get_with_interval = message.format == Format::V1_0 && message.message_type == MessageType::GET_PARAMETERS;
   const Reader reader(message.data);
   IntervalRequest read;
-  if (!readCamera(reader, read.camera))
+  if (!(get_interval || get_with_interval) || !readCamera(reader, read.camera))
   {
     return UnpackError::BAD_DATA;
   }
   read.param = message.param_type;
-  read.interval_ms = reader.u32(12);
+  read.interval_ms = get_interval ? reader.u32(12) : message.interval_ms;
   request = read;
   return UnpackError::NONE;
 }
 
-Message packBare(MessageType type, ParamType param)
+Message packBare(Format format, MessageType type, ParamType param)
 {
-  return withPayload(type, param);
+  return withPayload(format, type, param);
 }
 
 }  // namespace digiview

@@ -32,7 +32,10 @@ double DigiViewSettings::zoomMax() const
 }
 
 DigiViewProtocol::DigiViewProtocol(const DigiViewSettings& settings, DeviceSession& session)
-  : settings_(settings), session_(session), velocity_timer_(session.context())
+  : settings_(settings)
+  , session_(session)
+  , velocity_timer_(session.context())
+  , message_size_(layoutOf(settings.wire.format).size)
 {
 }
 
@@ -55,7 +58,9 @@ void DigiViewProtocol::onConnected()
 {
   described_ = false;
   targeted_ = false;
+  understood_ = false;
   buffered_ = 0;
+  opening_size_ = 0;
   pending_sets_.clear();
   subscribe();
 }
@@ -63,12 +68,16 @@ void DigiViewProtocol::onConnected()
 void DigiViewProtocol::subscribe()
 {
   heard_at_ = subscribed_at_ = session_.now();
-  send(packGet(ParamType::VIDEO_OUTPUT, settings_.camera()));
-  send(packGet(ParamType::SYSTEM_STATUS, settings_.camera()));
+  const Format format = settings_.wire.format;
+  send(packGet(format, ParamType::VIDEO_OUTPUT, settings_.camera()));
+  send(packGet(format, ParamType::SYSTEM_STATUS, settings_.camera()));
   for (ParamType param : { ParamType::CAM_TARGETING, ParamType::CAM_OPTICS_AND_CONTROL })
   {
-    send(packGet(param, settings_.camera()));
-    send(packInterval(IntervalRequest{ param, settings_.camera(), STATE_INTERVAL_MS }));
+    if (format == Format::V0_5)
+    {
+      send(packGet(format, param, settings_.camera()));  // a 0.5 GET_INTERVAL is answered only by its reports
+    }
+    send(packInterval(format, IntervalRequest{ param, settings_.camera(), STATE_INTERVAL_MS }));
   }
 }
 
@@ -95,18 +104,21 @@ void DigiViewProtocol::onReceived(const std::uint8_t* data, std::size_t size)
     handle(data, size);  // one message per datagram
     return;
   }
-  // A stream: cut it into 80-byte messages.
+  // A stream: keep its first bytes (to tell a format mismatch), cut it into messages of the format's size.
+  const std::size_t kept = std::min(size, opening_.size() - opening_size_);
+  std::copy(data, data + kept, opening_.begin() + opening_size_);
+  opening_size_ += kept;
   while (size > 0)
   {
-    const std::size_t taken = std::min(size, MESSAGE_SIZE - buffered_);
+    const std::size_t taken = std::min(size, message_size_ - buffered_);
     std::copy(data, data + taken, stream_buffer_.begin() + buffered_);
     buffered_ += taken;
     data += taken;
     size -= taken;
-    if (buffered_ == MESSAGE_SIZE)
+    if (buffered_ == message_size_)
     {
       buffered_ = 0;
-      handle(stream_buffer_.data(), MESSAGE_SIZE);
+      handle(stream_buffer_.data(), message_size_);
     }
   }
 }
@@ -114,12 +126,22 @@ void DigiViewProtocol::onReceived(const std::uint8_t* data, std::size_t size)
 void DigiViewProtocol::handle(const std::uint8_t* bytes, std::size_t size)
 {
   Message message;
-  const UnpackError error = Message::unpack(bytes, size, message);
+  bool unverified = false;
+  const UnpackError error = Message::unpack(bytes, size, settings_.wire, message, &unverified);
   ++counters_.messages;
   if (error != UnpackError::NONE)
   {
     ++counters_.bad[static_cast<std::size_t>(error)];
+    if (!understood_ && (error == UnpackError::BAD_SIZE || error == UnpackError::BAD_CHECKSUM))
+    {
+      checkOtherFormat(bytes, size);
+    }
     return;
+  }
+  understood_ = true;
+  if (unverified)
+  {
+    ++counters_.unverified;
   }
   switch (message.message_type)
   {
@@ -139,6 +161,32 @@ void DigiViewProtocol::handle(const std::uint8_t* bytes, std::size_t size)
     default:
       return;
   }
+}
+
+void DigiViewProtocol::checkOtherFormat(const std::uint8_t* bytes, std::size_t size)
+{
+  const Format other = settings_.wire.format == Format::V0_5 ? Format::V1_0 : Format::V0_5;
+  const std::size_t other_size = layoutOf(other).size;
+  // A datagram is one message. On a stream, the connection's first bytes must be two messages of the other format
+  // (one could verify by chance).
+  const bool datagrams = session_.carriesDatagrams();
+  const std::uint8_t* first = datagrams ? bytes : opening_.data();
+  const std::size_t needed = datagrams ? other_size : 2 * other_size;
+  if (datagrams ? size != other_size : opening_size_ < needed)
+  {
+    return;
+  }
+  for (std::size_t at = 0; at < needed; at += other_size)
+  {
+    Message probe;
+    if (Message::unpack(first + at, other_size, Wire{ other, ChecksumRule::REQUIRED }, probe) != UnpackError::NONE)
+    {
+      return;
+    }
+  }
+  session_.failStartup(formatText("DigiView speaks format %s (%zu-byte messages), but format is set to \"%s\" "
+                                  "(%zu-byte messages)",
+                                  toString(other), other_size, toString(settings_.wire.format), message_size_));
 }
 
 void DigiViewProtocol::handleState(const Message& message)
@@ -236,7 +284,7 @@ void DigiViewProtocol::send(const Message& message)
     }
     pending_sets_.push_back(PendingSet{ message.param_type, session_.currentCommand() });
   }
-  const Bytes bytes = stamped.pack();
+  const Bytes bytes = stamped.pack();  // the packers below made it in the configured format
   session_.write(bytes.data(), bytes.size());
 }
 
@@ -248,12 +296,12 @@ void DigiViewProtocol::sendTargets(const AxisValues& target)
   targeting.yaw = target[PAN];
   targeting.pitch = target[TILT];
   targeting.lock_flags = settings_.lock_flags;
-  send(packTargeting(MessageType::SET_PARAMETERS, targeting));
+  send(packTargeting(settings_.wire.format, MessageType::SET_PARAMETERS, targeting));
   CamOpticsAndControl optics;
   optics.camera = settings_.camera();
   optics.fov = settings_.fov_wide / std::clamp(target[ZOOM], 1.0, settings_.zoomMax());
   optics.crop_mode = settings_.crop_mode;
-  send(packOptics(MessageType::SET_PARAMETERS, optics));
+  send(packOptics(settings_.wire.format, MessageType::SET_PARAMETERS, optics));
 }
 
 void DigiViewProtocol::goTo(const AxisValues& position)
@@ -325,20 +373,23 @@ void DigiViewProtocol::shutdown()
   velocity_timer_.cancel();
   for (ParamType param : { ParamType::CAM_TARGETING, ParamType::CAM_OPTICS_AND_CONTROL })
   {
-    send(packInterval(IntervalRequest{ param, settings_.camera(), 0 }));
+    send(packInterval(settings_.wire.format, IntervalRequest{ param, settings_.camera(), 0 }));
   }
-  send(packBare(MessageType::QUIT, ParamType::SYSTEM_STATUS));
+  send(packBare(settings_.wire.format, MessageType::QUIT, ParamType::SYSTEM_STATUS));
 }
 
 void DigiViewProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   values.emplace_back("view", formatText("stream '%s' camera %u of %u", settings_.stream_name.c_str(), settings_.cam_id,
                                          num_user_views_.load()));
+  values.emplace_back("format", formatText("%s (%zu-byte messages), checksum %s", toString(settings_.wire.format),
+                                           message_size_, toString(settings_.wire.checksum)));
   values.emplace_back("system status", std::to_string(system_status_.load()));
   addCounts(values, { { "messages", counters_.messages },
                       { "states", counters_.states },
                       { "acknowledged", counters_.acknowledged },
-                      { "refused", counters_.refused } });
+                      { "refused", counters_.refused },
+                      { "accepted with checksum 0", counters_.unverified } });
   for (std::size_t index = 1; index < counters_.bad.size(); ++index)
   {
     values.emplace_back(std::string("dropped: ") + toString(static_cast<UnpackError>(index)),

@@ -142,18 +142,20 @@ private:
   PanTiltConfig config_;
 };
 
-// ---------------------------------------------------------------- DigiView: TCP and UDP
+// ---------------------------------------------------------------- DigiView: TCP and UDP, formats 0.5 and 1.0
 
 class DigiViewFixture : public DeviceFixture
 {
 public:
-  explicit DigiViewFixture(LinkKind transport)
+  DigiViewFixture(LinkKind transport, digiview::Format format)
   {
     emulator_config_.transport = transport;
+    emulator_config_.wire.format = format;
     emulator_ = std::make_unique<DigiViewEmulator>(emulator_config_);
     emulator_config_.port = emulator_->port();
     config_.link.kind = transport;
     config_.link.port = emulator_->port();
+    config_.digiview.wire.format = format;
     config_.digiview.acceleration = 4.0;  // as the emulator turns
     config_.session.state_timeout = TEST_STATE_TIMEOUT;
   }
@@ -294,8 +296,10 @@ std::vector<FixtureMaker> networkDeviceFixtures()
     { "PanTiltUdpSeed", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireFormat::SEED); } },
     { "PanTiltUdpV1_0", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireFormat::V1_0); } },
     { "PanTiltUdpV1_1", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireFormat::V1_1); } },
-    { "DigiViewTcp", [] { return std::make_unique<DigiViewFixture>(LinkKind::TCP); } },
-    { "DigiViewUdp", [] { return std::make_unique<DigiViewFixture>(LinkKind::UDP); } },
+    { "DigiViewTcpV0_5", [] { return std::make_unique<DigiViewFixture>(LinkKind::TCP, digiview::Format::V0_5); } },
+    { "DigiViewUdpV0_5", [] { return std::make_unique<DigiViewFixture>(LinkKind::UDP, digiview::Format::V0_5); } },
+    { "DigiViewTcpV1_0", [] { return std::make_unique<DigiViewFixture>(LinkKind::TCP, digiview::Format::V1_0); } },
+    { "DigiViewUdpV1_0", [] { return std::make_unique<DigiViewFixture>(LinkKind::UDP, digiview::Format::V1_0); } },
   };
 }
 

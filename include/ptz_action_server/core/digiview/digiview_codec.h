@@ -1,19 +1,55 @@
 /**
  * \file
- * \brief DigiView (Synclair Vision) message definitions, format 0.5: 80-byte messages with a CRC-8/BLUETOOTH.
+ * \brief DigiView (Synclair Vision) message definitions in the two wire formats in the field: "0.5" (80-byte
+ * messages, the seed's tables) and "1.0" (88-byte messages, the newest published msg_defs.hpp).
  *
- * Layout: timestamp uint64 @0, version uint8 @8 (0), message_type @9, param_type @10, data[64] @11..74, checksum
- * @75 (CRC-8/BLUETOOTH over bytes 0..74), padding @76..79 (zero). Multi-byte fields are little-endian. Angles and
- * coordinates travel as int32 = value x 1000 (milliradians for angles), view offsets as int16 = value x 32767,
- * strings NUL-padded to 8 bytes.
+ * A message is the published `struct message` as x86-64 lays it out and `memcpy`s it: little-endian, natural padding.
  *
- * Where the seed leaves the layout open, this library decides (and the README says so):
- * - GET_INTERVAL carries stream_name @0, cam_id @8, the parameter's request data as for a GET, and the interval in
- *   milliseconds as uint32 @12 (0 cancels, below 100 is ignored by DigiView).
- * - SYSTEM_STATUS: status @0, error @1, jetson_temp float32 @2.
- * - VIDEO_OUTPUT: stream_name @0, width uint16 @8, height uint16 @10, fps @12, layout_mode @13 (in a GET reply the
- *   4 MSB carry num_user_views), detection_overlay_mode @14, views 4 x bounding box (x, y, w, h uint16) @15,
- *   detection_overlay_box @47, single_detection_size uint16 @55.
+ * | field                          | 0.5    | 1.0    |
+ * |--------------------------------|--------|--------|
+ * | timestamp uint64               | 0..7   | 0..7   |
+ * | version uint8 (0 in both)      | 8      | 8      |
+ * | message_type uint8             | 9      | 9      |
+ * | param_type uint8               | 10     | 10     |
+ * | padding                        | -      | 11     |
+ * | interval_ms uint32             | -      | 12..15 |
+ * | data[64]                       | 11..74 | 16..79 |
+ * | checksum uint8                 | 75     | 80     |
+ * | padding                        | 76..79 | 81..87 |
+ *
+ * MessageType holds the seed's values, which are format 0.5's on the wire. Format 1.0 has no GET_INTERVAL and
+ * numbers the replies one lower: ACKNOWLEDGEMENT 4, CHECKSUM_ERROR 5, DATA_ERROR 6, FORBIDDEN 7, UNKNOWN 8. The
+ * version byte is 0 in both, so nothing in a message names its format: sender and receiver are configured with one.
+ *
+ * Where the published code is silent, this library decides (the README says the same):
+ * - Checksum: CRC-8/BLUETOOTH over bytes [0, offsetof(checksum)), i.e. 0..74 (0.5) and 0..79 (1.0), the rule of
+ *   the first published helper that fills it. Every message packed here carries it. The published helpers of both
+ *   formats never fill it, so a receiver can be told that its peer does not (ChecksumRule::ZERO_ACCEPTED): a
+ *   message whose checksum byte is 0 is then accepted unverified, and unpack() says so; any other byte must verify.
+ * - Padding bytes and data bytes a payload does not use are zero when packed and ignored when unpacked.
+ * - Subscriptions: in 0.5, GET_INTERVAL carries the GET's request data (stream_name @0, cam_id @8) and the interval in
+ *   milliseconds as uint32 @12 of data (the published 0.5 code defines no field for it). In 1.0, a GET_PARAMETERS
+ *   with interval_ms set in the header subscribes, as the published 1.0 helpers intend. In both, 100 ms
+ *   (MIN_INTERVAL_MS) or more subscribes, 0 cancels, anything between is ignored (the whole request). A 1.0 GET that
+ *   is not ignored is answered at once; a 0.5 GET_INTERVAL only by its reports.
+ * - Replies: CURRENT_PARAMETERS carries the parameter's payload as its request's packer lays it out, interval_ms 0;
+ *   ACKNOWLEDGEMENT and the error replies carry the request's param_type and no data (nothing published defines more).
+ * - Scaled fields are packed as the published packers do: the value as a float, times 1000 (angles in milliradians,
+ *   latitude and longitude in 1/1000 degree, altitude in mm, fov in milliradians, temperature in 1/1000 degree C)
+ *   or times 32767 (view offsets), in single precision, truncated toward zero. Outside the integer's range the
+ *   published cast is undefined: here it saturates (NaN packs 0). Unpacking divides.
+ * - CAM_TARGETING: stream_name @0, cam_id @8, targeting_mode @9, euler_delta @10, yaw int32 @11, pitch @15, roll @19,
+ *   lock_flags @23, x_offset int16 @24, y_offset @26; then in 0.5 what its packer writes, latitude @28 and again
+ *   @32, longitude @36, altitude @40 (44 bytes: what every 0.5 sender sends; the published 0.5 unpacker reads
+ *   longitude @32 and altitude @36 instead, which its own packer never wrote); in 1.0 latitude @28, longitude @32,
+ *   altitude @36 (40 bytes).
+ * - SYSTEM_STATUS: status @0, error @1, jetson_temp int32 (x 1000) @2. The first 0.5 revision sent no temperature:
+ *   its zero bytes read as 0 degrees.
+ * - VIDEO_OUTPUT: stream_name @0, width uint16 @8, height @10, fps @12, layout_mode @13, detection_overlay_mode @14,
+ *   num_user_views @15, then that many view boxes (x, y, w, h uint16) @16, detection_overlay_box @16 + 8n,
+ *   single_detection_size uint16 @24 + 8n. A SET carries n = 0 and no boxes, as the published SET helper.
+ * - Ranges checked on unpacking: lock_flags 0..7 (three flag bits; the seed's table says 0..4), targeting_mode 0..3,
+ *   crop_mode 0..2 (the table says 0..1, the text 1..2), num_user_views 0..4; the others as the seed's tables.
  * No ROS here.
  */
 #pragma once
@@ -21,26 +57,62 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace ptz_action_server
 {
 namespace digiview
 {
-constexpr std::size_t MESSAGE_SIZE = 80;
-constexpr std::size_t DATA_OFFSET = 11;
 constexpr std::size_t DATA_SIZE = 64;
-constexpr std::size_t CHECKSUM_OFFSET = 75;
+constexpr std::size_t MAX_MESSAGE_SIZE = 88;
 constexpr std::uint8_t VERSION = 0;
 constexpr std::size_t NAME_SIZE = 8;
 constexpr std::uint32_t MIN_INTERVAL_MS = 100;
 
+/// The wire formats in the field.
+enum class Format : std::uint8_t
+{
+  V0_5,  ///< "0.5": 80-byte messages, the seed's tables
+  V1_0,  ///< "1.0": 88-byte messages, interval_ms in the header, no GET_INTERVAL, replies renumbered
+};
+const char* toString(Format format);  ///< "0.5", "1.0"
+/// "0.5" or "1.0" into \p format; false for anything else.
+bool parseFormat(const std::string& text, Format& format);
+
+/// Where a format puts the parts of a message (offsets in bytes).
+struct Layout
+{
+  std::size_t size;
+  std::size_t data_offset;
+  std::size_t checksum_offset;  ///< also the number of bytes the checksum covers
+  std::size_t interval_offset;  ///< 0: the format has no interval_ms
+};
+Layout layoutOf(Format format);
+
+/// What a receiver takes for a checksum.
+enum class ChecksumRule : std::uint8_t
+{
+  REQUIRED,       ///< every message must carry its CRC
+  ZERO_ACCEPTED,  ///< the peer may not fill it: a checksum byte of 0 is accepted unverified, any other must verify
+};
+const char* toString(ChecksumRule rule);  ///< "required", "zero_accepted"
+bool parseChecksumRule(const std::string& text, ChecksumRule& rule);
+
+/// How one side of a DigiView link reads the wire.
+struct Wire
+{
+  Format format = Format::V0_5;
+  ChecksumRule checksum = ChecksumRule::REQUIRED;
+};
+
+/// The seed's message types (their values are format 0.5's wire values; see toWire()).
 enum class MessageType : std::uint8_t
 {
   EMPTY = 0,
   GET_PARAMETERS = 1,
   SET_PARAMETERS = 2,
   CURRENT_PARAMETERS = 3,
-  GET_INTERVAL = 4,
+  GET_INTERVAL = 4,  ///< 0.5 only
   ACKNOWLEDGEMENT = 5,
   CHECKSUM_ERROR = 6,
   DATA_ERROR = 7,
@@ -66,7 +138,10 @@ enum class ParamType : std::uint8_t
   SINGLE_TARGET_TRACKING = 12,
 };
 
-bool isMessageType(std::uint8_t value);
+/// The byte \p type is in \p format; false for GET_INTERVAL in 1.0, which has none.
+bool toWire(Format format, MessageType type, std::uint8_t& wire);
+/// The message type the byte \p wire is in \p format; false if it is none.
+bool fromWire(Format format, std::uint8_t wire, MessageType& type);
 bool isParamType(std::uint8_t value);
 const char* toString(MessageType type);
 const char* toString(ParamType type);
@@ -77,34 +152,39 @@ const char* describeError(MessageType type);
 enum class UnpackError
 {
   NONE = 0,
-  BAD_SIZE,
+  BAD_SIZE,  ///< not the format's size (also what a message of the other format is)
   BAD_CHECKSUM,
   BAD_VERSION,
-  BAD_MESSAGE_TYPE,
+  BAD_MESSAGE_TYPE,  ///< not a message type of the format
   BAD_PARAM_TYPE,
-  BAD_DATA,  ///< a field outside its valid range, or the wrong param type for this unpack
+  BAD_DATA,  ///< a field outside its valid range, or the wrong param or message type for this unpack
 };
 const char* toString(UnpackError error);
 
 /// CRC-8/BLUETOOTH: poly 0xA7, init 0, reflected in and out, xorout 0. Check value ("123456789"): 0x26.
 std::uint8_t crc8(const std::uint8_t* data, std::size_t size);
 
-/// The 80 bytes of one message.
-using Bytes = std::array<std::uint8_t, MESSAGE_SIZE>;
+/// The bytes of one message: layoutOf(format).size of them.
+using Bytes = std::vector<std::uint8_t>;
 
 /// The base message: header fields and the raw data.
 struct Message
 {
+  Format format = Format::V0_5;
   std::uint64_t timestamp = 0;
   std::uint8_t version = VERSION;
   MessageType message_type = MessageType::EMPTY;
   ParamType param_type = ParamType::SYSTEM_STATUS;
+  std::uint32_t interval_ms = 0;  ///< 1.0 only: a GET with it subscribes (0.5 has no such field)
   std::array<std::uint8_t, DATA_SIZE> data{};
 
-  /// The message with its checksum, padding zero.
+  /// The message in its format, with its checksum, padding zero. Throws std::invalid_argument for what the format
+  /// cannot carry (GET_INTERVAL in 1.0, an interval_ms in 0.5).
   Bytes pack() const;
-  /// Checks size, checksum, version and types; never reads outside [bytes, bytes + size).
-  static UnpackError unpack(const std::uint8_t* bytes, std::size_t size, Message& message);
+  /// Checks size, checksum (by \p wire's rule), version and types; never reads outside [bytes, bytes + size).
+  /// \p unverified (if given) tells whether a checksum byte of 0 was accepted without verifying.
+  static UnpackError unpack(const std::uint8_t* bytes, std::size_t size, const Wire& wire, Message& message,
+                            bool* unverified = nullptr);
 };
 
 /// Which user-controllable camera of which stream a message is about.
@@ -142,7 +222,7 @@ struct SystemStatus
 {
   std::uint8_t status = 0;  ///< 0 idle, 1 running, 2 finished, 3 error
   std::uint8_t error = 0;
-  float jetson_temp = 0.0f;
+  double jetson_temp = 0.0;  ///< degrees C
 };
 
 struct BoundingBox
@@ -159,15 +239,15 @@ struct VideoOutput
   std::uint16_t width = 1920;
   std::uint16_t height = 1080;
   std::uint8_t fps = 0;
-  std::uint8_t layout_mode = 0;     ///< [0, 6]
-  std::uint8_t num_user_views = 1;  ///< GET replies only: the 4 MSB of the layout byte, [1, 4]
+  std::uint8_t layout_mode = 0;  ///< [0, 6]
   std::uint8_t detection_overlay_mode = 0;
-  std::array<BoundingBox, 4> views{};
+  std::uint8_t num_user_views = 1;     ///< [0, 4]: the views of the layout (a SET carries 0)
+  std::array<BoundingBox, 4> views{};  ///< the first num_user_views travel
   BoundingBox detection_overlay_box;
   std::uint16_t single_detection_size = 0;
 };
 
-/// A GET_INTERVAL request: periodic CURRENT_PARAMETERS of \p param for one camera (0 ms cancels).
+/// A subscription request: periodic CURRENT_PARAMETERS of \p param for one camera (0 ms cancels).
 struct IntervalRequest
 {
   ParamType param = ParamType::CAM_TARGETING;
@@ -175,16 +255,17 @@ struct IntervalRequest
   std::uint32_t interval_ms = 0;
 };
 
-// Packing: build the message of the given type around the payload.
-Message packTargeting(MessageType type, const CamTargeting& targeting);
-Message packOptics(MessageType type, const CamOpticsAndControl& optics);
-Message packSystemStatus(MessageType type, const SystemStatus& status);
-Message packVideoOutput(MessageType type, const VideoOutput& output);
+// Packing: build the message of the given format and type around the payload.
+Message packTargeting(Format format, MessageType type, const CamTargeting& targeting);
+Message packOptics(Format format, MessageType type, const CamOpticsAndControl& optics);
+Message packSystemStatus(Format format, MessageType type, const SystemStatus& status);
+Message packVideoOutput(Format format, MessageType type, const VideoOutput& output);
 /// A GET_PARAMETERS request for \p param about \p camera (stream_name @0, cam_id @8).
-Message packGet(ParamType param, const CameraId& camera);
-Message packInterval(const IntervalRequest& request);
-/// A reply without payload (ACKNOWLEDGEMENT, an error, QUIT) about \p param.
-Message packBare(MessageType type, ParamType param);
+Message packGet(Format format, ParamType param, const CameraId& camera);
+/// 0.5: a GET_INTERVAL (interval @12 of data); 1.0: a GET_PARAMETERS with interval_ms.
+Message packInterval(Format format, const IntervalRequest& request);
+/// A message without payload (ACKNOWLEDGEMENT, an error, QUIT) about \p param.
+Message packBare(Format format, MessageType type, ParamType param);
 
 // Unpacking the payload of an unpacked message; BAD_DATA when the param type differs or a field is out of range.
 UnpackError unpackTargeting(const Message& message, CamTargeting& targeting);
@@ -192,6 +273,7 @@ UnpackError unpackOptics(const Message& message, CamOpticsAndControl& optics);
 UnpackError unpackSystemStatus(const Message& message, SystemStatus& status);
 UnpackError unpackVideoOutput(const Message& message, VideoOutput& output);
 UnpackError unpackCamera(const Message& message, CameraId& camera);
+/// A 0.5 GET_INTERVAL, or a 1.0 GET_PARAMETERS (whose interval_ms may be 0: a plain GET).
 UnpackError unpackInterval(const Message& message, IntervalRequest& request);
 
 }  // namespace digiview

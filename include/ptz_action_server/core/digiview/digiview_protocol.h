@@ -19,6 +19,7 @@ namespace ptz_action_server
 /// What only the DigiView protocol needs to know.
 struct DigiViewSettings
 {
+  digiview::Wire wire;  ///< the format DigiView speaks ("0.5" by default) and whether it fills the checksum
   std::string stream_name = "main";
   std::uint8_t cam_id = 0;
   double fov_wide = 1.2;        ///< rad: the field of view that zoom 1x maps to (fov = fov_wide / X)
@@ -58,6 +59,7 @@ struct DigiViewCounters
   Counter states;  ///< CURRENT_PARAMETERS of our camera
   Counter acknowledged;
   Counter refused;             ///< CHECKSUM_ERROR, DATA_ERROR, FORBIDDEN, UNKNOWN replies
+  Counter unverified;          ///< accepted with a checksum byte of 0 (checksum rule zero_accepted)
   std::array<Counter, 7> bad;  ///< messages dropped, by UnpackError
 };
 
@@ -67,8 +69,9 @@ struct DigiViewCounters
  * Goals become SET CAM_TARGETING in directional mode (yaw = pan, pitch = tilt: DigiView's Tait-Bryan yaw is
  * clockwise from north and its pitch positive up, the same signs as the contract) and SET CAM_OPTICS_AND_CONTROL
  * (fov = fov_wide / zoom). DigiView has no velocity command: a velocity goal is a target moved every
- * velocity_period. State comes from GET_INTERVAL subscriptions (100 ms) to CAM_TARGETING and
- * CAM_OPTICS_AND_CONTROL. A SET that DigiView refuses is a device fault with DigiView's reason. After a loss the
+ * velocity_period. State comes from subscriptions (100 ms) to CAM_TARGETING and CAM_OPTICS_AND_CONTROL: GET_INTERVAL
+ * in format 0.5, a GET with interval_ms in 1.0. Both formats are cut from a TCP stream by their own size. A SET that
+ * DigiView refuses is a device fault with DigiView's reason. After a loss the
  * view is held where it is; at shutdown the subscriptions are cancelled and QUIT is sent.
  */
 class DigiViewProtocol : public DeviceProtocol
@@ -85,7 +88,8 @@ public:
   Capabilities capabilities() const override;
   /// GET VIDEO_OUTPUT (the number of views), SYSTEM_STATUS, and the view's state, then every 100 ms.
   void onConnected() override;
-  /// 80-byte messages: cut from the stream on TCP, one per datagram on UDP.
+  /// Messages of the configured format's size: cut from the stream on TCP, one per datagram on UDP. When nothing
+  /// unpacked yet and the first message is one of the other format, start() fails saying so.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   void onDisconnected() override;
   /// Subscribes again after three missed states (over UDP nothing else tells that DigiView restarted), and asks
@@ -99,13 +103,18 @@ public:
   void stop() override;
   /// A target where the view is.
   void hold() override;
-  /// GET_INTERVAL 0 for both subscriptions, then QUIT.
+  /// Cancels both subscriptions (interval 0), then QUIT.
   void shutdown() override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 
   const DigiViewCounters& counters() const
   {
     return counters_;
+  }
+  /// The user views of the stream, as its VIDEO_OUTPUT said (0 before it came).
+  std::uint8_t numUserViews() const
+  {
+    return num_user_views_;
   }
 
 private:
@@ -119,6 +128,8 @@ private:
   /// Describe the stream, report the view every 100 ms.
   void subscribe();
   void handle(const std::uint8_t* bytes, std::size_t size);
+  /// Nothing unpacked on this connection: if what came is the other format's, start() fails saying so.
+  void checkOtherFormat(const std::uint8_t* bytes, std::size_t size);
   void handleState(const digiview::Message& message);
   void handleAnswer(const digiview::Message& message);
   void send(const digiview::Message& message);
@@ -133,10 +144,14 @@ private:
   std::atomic<std::uint8_t> system_status_{ 0 };
 
   // I/O thread only.
-  bool described_ = false;  ///< VIDEO_OUTPUT of the stream arrived on this connection
-  bool targeted_ = false;   ///< CAM_TARGETING of the view arrived on this connection
-  std::array<std::uint8_t, 2 * digiview::MESSAGE_SIZE> stream_buffer_{};
+  bool described_ = false;   ///< VIDEO_OUTPUT of the stream arrived on this connection
+  bool targeted_ = false;    ///< CAM_TARGETING of the view arrived on this connection
+  bool understood_ = false;  ///< a message unpacked on this connection
+  const std::size_t message_size_;
+  std::array<std::uint8_t, digiview::MAX_MESSAGE_SIZE> stream_buffer_{};
   std::size_t buffered_ = 0;
+  std::array<std::uint8_t, 2 * digiview::MAX_MESSAGE_SIZE> opening_{};  ///< TCP: the first bytes of the connection
+  std::size_t opening_size_ = 0;
   std::deque<PendingSet> pending_sets_;  ///< oldest first
   TimePoint heard_at_{};                 ///< the last state of the view, or the last subscription
   TimePoint subscribed_at_{};
