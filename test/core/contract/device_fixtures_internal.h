@@ -22,7 +22,7 @@ std::vector<DeviceCommand> withoutQueries(const std::vector<DeviceCommand>& comm
 /// FLIR (serial, TCP) and Pelco-D (serial in both tilt encodings, TCP).
 std::vector<FixtureMaker> lineDeviceFixtures();
 
-/// PanTilt over UDP (both wire formats) and DigiView (TCP, UDP; formats 0.5 and 1.0).
+/// PanTilt over UDP (every wire format) and DigiView (TCP, UDP; formats 0.5 and 1.0).
 std::vector<FixtureMaker> networkDeviceFixtures();
 
 /// s without a state before a link is lost: generous, a busy test machine may starve the I/O threads for a while
