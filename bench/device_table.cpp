@@ -91,7 +91,7 @@ const std::vector<DeviceRow>& deviceTable()
     pantilt.name = "pantilt_udp";
     pantilt.plugin = "pantilt_udp";
     pantilt.params = { value("pantilt_udp/device_host", "127.0.0.1"), emulatorPort("pantilt_udp/device_port"),
-                       value("pantilt_udp/local_host", "127.0.0.1"), value("pantilt_udp/wire_version", "1.0") };
+                       value("pantilt_udp/local_host", "127.0.0.1"), value("pantilt_udp/format", "seed") };
     pantilt.emulator = panTiltEmulator();
     table.push_back(pantilt);
 

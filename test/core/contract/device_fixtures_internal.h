@@ -25,7 +25,7 @@ std::vector<DeviceCommand> withoutQueries(const std::vector<DeviceCommand>& comm
 /// FLIR (serial, TCP) and Pelco-D (serial in both tilt encodings, TCP).
 std::vector<FixtureMaker> lineDeviceFixtures();
 
-/// PanTilt over UDP (both wire formats) and DigiView (TCP, UDP; formats 0.5 and 1.0).
+/// PanTilt over UDP (every wire format) and DigiView (TCP, UDP; formats 0.5 and 1.0).
 std::vector<FixtureMaker> networkDeviceFixtures();
 
 /// The MAVLink gimbal manager over UDP and a serial line.
