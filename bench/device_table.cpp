@@ -103,6 +103,14 @@ const std::vector<DeviceRow>& deviceTable()
     digiview.emulator = digiViewEmulator();
     table.push_back(digiview);
 
+    DeviceRow gimbal;
+    gimbal.name = "mavlink_gimbal_udp";
+    gimbal.plugin = "mavlink_gimbal";
+    gimbal.params = { value("mavlink_gimbal/transport", "udp"), value("mavlink_gimbal/host", "127.0.0.1"),
+                      emulatorPort("mavlink_gimbal/port") };
+    gimbal.emulator = mavlinkGimbalEmulator();
+    table.push_back(gimbal);
+
     for (const char* protocol : { "flir", "pelco_d" })
     {
       for (unsigned baud : { 9600u, 115200u, 0u })

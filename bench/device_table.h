@@ -55,6 +55,7 @@ struct EmulatorSpec
 
 EmulatorSpec panTiltEmulator();
 EmulatorSpec digiViewEmulator();
+EmulatorSpec mavlinkGimbalEmulator();
 EmulatorSpec flirEmulator(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud);
 EmulatorSpec pelcoEmulator(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud);
 
