@@ -259,7 +259,7 @@ TEST(MavlinkMessages, AnAttitudeStatusWithoutItsExtensionsReadsThemAsZero)
   device.target_system = 1;
   device.target_component = 191;
   Payload payload{};
-  device.pack(payload);
+  pack(device, payload);
   const EncodedFrame encoded = encodeFrame(FrameHeader{ 0, 1, 154 },
                                            *findMessage(message_id::GIMBAL_DEVICE_ATTITUDE_STATUS), payload.data(), 40);
   EXPECT_EQ(encoded.bytes[1], 40);
@@ -349,7 +349,7 @@ TEST(MavlinkParser, TheWrongCrcExtraFailsTheCheck)
 {
   // The same bytes framed with another message's CRC_EXTRA: a receiver must refuse them.
   Payload payload{};
-  pitchYawGolden().pack(payload);
+  pack(pitchYawGolden(), payload);
   MessageSpec wrong = *findMessage(message_id::GIMBAL_MANAGER_SET_PITCHYAW);
   wrong.crc_extra = 2;
   const EncodedFrame encoded = encodeFrame(gcs(1), wrong, payload.data(), wrong.length);
@@ -371,7 +371,7 @@ TEST(MavlinkParser, ASignedFrameIsTakenWithItsSignatureSkipped)
 {
   // The signature is not verified (no key is configured); the CRC still covers the frame.
   Payload payload{};
-  Heartbeat().pack(payload);
+  pack(Heartbeat(), payload);
   const MessageSpec& spec = *findMessage(message_id::HEARTBEAT);
   Bytes frame = { STX_V2, 9, INCOMPAT_SIGNED, 0, 5, 1, 1, 0, 0, 0 };
   frame.insert(frame.end(), payload.begin(), payload.begin() + 9);

@@ -141,8 +141,13 @@ private:
 
   template <class Message>
   void send(const Message& message);
+  /// COMMAND_LONG to the manager, awaiting its ACK.
   void sendCommand(std::uint16_t command, const std::array<float, 7>& params);
+  void sendCommandTo(std::uint8_t system_id, std::uint8_t component_id, std::uint16_t command,
+                     const std::array<float, 7>& params);
+  /// REQUEST_MESSAGE GIMBAL_MANAGER_INFORMATION, of the manager or of a candidate.
   void requestInformation();
+  void requestInformation(std::uint8_t system_id, std::uint8_t component_id);
   void takeControl();
   void requestAttitude();
   void sendSetpoint();
@@ -157,7 +162,8 @@ private:
   MavlinkGimbalCounters counters_;
   mavlink::FrameParser parser_;
 
-  // Read by deviceName() / diagnostics() from other threads.
+  // Written on the I/O thread under names_mutex_, which deviceName() and diagnostics() take; the I/O thread reads
+  // them without it.
   mutable std::mutex names_mutex_;
   std::uint8_t manager_system_ = 0;
   std::uint8_t manager_component_ = 0;

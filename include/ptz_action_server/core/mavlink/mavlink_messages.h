@@ -10,7 +10,9 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <type_traits>
 
+#include "ptz_action_server/core/byte_order.h"
 #include "ptz_action_server/core/mavlink/mavlink_codec.h"
 
 namespace ptz_action_server
@@ -94,8 +96,17 @@ struct Heartbeat
   std::uint8_t system_status = MAV_STATE_ACTIVE;
   std::uint8_t mavlink_version = 3;
 
-  void pack(Payload& out) const;
-  static Heartbeat unpack(const Payload& in);
+  /// The wire layout: \p visit(offset, field) for every field.
+  template <class Self, class Visitor>
+  static void fields(Self& self, Visitor& visit)
+  {
+    visit(0, self.custom_mode);
+    visit(4, self.type);
+    visit(5, self.autopilot);
+    visit(6, self.base_mode);
+    visit(7, self.system_status);
+    visit(8, self.mavlink_version);
+  }
 };
 
 struct CommandLong
@@ -107,8 +118,16 @@ struct CommandLong
   std::uint8_t target_component = 0;
   std::uint8_t confirmation = 0;
 
-  void pack(Payload& out) const;
-  static CommandLong unpack(const Payload& in);
+  /// The wire layout: \p visit(offset, field) for every field.
+  template <class Self, class Visitor>
+  static void fields(Self& self, Visitor& visit)
+  {
+    visit(0, self.params);
+    visit(28, self.command);
+    visit(30, self.target_system);
+    visit(31, self.target_component);
+    visit(32, self.confirmation);
+  }
 };
 
 struct CommandAck
@@ -122,8 +141,17 @@ struct CommandAck
   std::uint8_t target_system = 0;
   std::uint8_t target_component = 0;
 
-  void pack(Payload& out) const;
-  static CommandAck unpack(const Payload& in);
+  /// The wire layout: \p visit(offset, field) for every field.
+  template <class Self, class Visitor>
+  static void fields(Self& self, Visitor& visit)
+  {
+    visit(0, self.command);
+    visit(2, self.result);
+    visit(3, self.progress);
+    visit(4, self.result_param2);
+    visit(8, self.target_system);
+    visit(9, self.target_component);
+  }
 };
 
 struct GimbalManagerInformation
@@ -136,8 +164,20 @@ struct GimbalManagerInformation
   float yaw_min = 0.0f, yaw_max = 0.0f;
   std::uint8_t gimbal_device_id = 0;
 
-  void pack(Payload& out) const;
-  static GimbalManagerInformation unpack(const Payload& in);
+  /// The wire layout: \p visit(offset, field) for every field.
+  template <class Self, class Visitor>
+  static void fields(Self& self, Visitor& visit)
+  {
+    visit(0, self.time_boot_ms);
+    visit(4, self.cap_flags);
+    visit(8, self.roll_min);
+    visit(12, self.roll_max);
+    visit(16, self.pitch_min);
+    visit(20, self.pitch_max);
+    visit(24, self.yaw_min);
+    visit(28, self.yaw_max);
+    visit(32, self.gimbal_device_id);
+  }
 };
 
 struct GimbalManagerStatus
@@ -151,8 +191,18 @@ struct GimbalManagerStatus
   std::uint8_t secondary_control_sysid = 0;
   std::uint8_t secondary_control_compid = 0;
 
-  void pack(Payload& out) const;
-  static GimbalManagerStatus unpack(const Payload& in);
+  /// The wire layout: \p visit(offset, field) for every field.
+  template <class Self, class Visitor>
+  static void fields(Self& self, Visitor& visit)
+  {
+    visit(0, self.time_boot_ms);
+    visit(4, self.flags);
+    visit(8, self.gimbal_device_id);
+    visit(9, self.primary_control_sysid);
+    visit(10, self.primary_control_compid);
+    visit(11, self.secondary_control_sysid);
+    visit(12, self.secondary_control_compid);
+  }
 };
 
 /// A rotation, w first (MAVLink's order).
@@ -168,8 +218,19 @@ struct GimbalManagerSetAttitude
   std::uint8_t target_component = 0;
   std::uint8_t gimbal_device_id = 0;
 
-  void pack(Payload& out) const;
-  static GimbalManagerSetAttitude unpack(const Payload& in);
+  /// The wire layout: \p visit(offset, field) for every field.
+  template <class Self, class Visitor>
+  static void fields(Self& self, Visitor& visit)
+  {
+    visit(0, self.flags);
+    visit(4, self.q);
+    visit(20, self.angular_velocity_x);
+    visit(24, self.angular_velocity_y);
+    visit(28, self.angular_velocity_z);
+    visit(32, self.target_system);
+    visit(33, self.target_component);
+    visit(34, self.gimbal_device_id);
+  }
 };
 
 struct GimbalDeviceAttitudeStatus
@@ -187,8 +248,23 @@ struct GimbalDeviceAttitudeStatus
   float delta_yaw_velocity = UNSET;  ///< rad/s
   std::uint8_t gimbal_device_id = 0;
 
-  void pack(Payload& out) const;
-  static GimbalDeviceAttitudeStatus unpack(const Payload& in);
+  /// The wire layout: \p visit(offset, field) for every field.
+  template <class Self, class Visitor>
+  static void fields(Self& self, Visitor& visit)
+  {
+    visit(0, self.time_boot_ms);
+    visit(4, self.q);
+    visit(20, self.angular_velocity_x);
+    visit(24, self.angular_velocity_y);
+    visit(28, self.angular_velocity_z);
+    visit(32, self.failure_flags);
+    visit(36, self.flags);
+    visit(38, self.target_system);
+    visit(39, self.target_component);
+    visit(40, self.delta_yaw);
+    visit(44, self.delta_yaw_velocity);
+    visit(48, self.gimbal_device_id);
+  }
 };
 
 struct GimbalManagerSetPitchYaw
@@ -201,16 +277,110 @@ struct GimbalManagerSetPitchYaw
   std::uint8_t target_component = 0;
   std::uint8_t gimbal_device_id = 0;
 
-  void pack(Payload& out) const;
-  static GimbalManagerSetPitchYaw unpack(const Payload& in);
+  /// The wire layout: \p visit(offset, field) for every field.
+  template <class Self, class Visitor>
+  static void fields(Self& self, Visitor& visit)
+  {
+    visit(0, self.flags);
+    visit(4, self.pitch);
+    visit(8, self.yaw);
+    visit(12, self.pitch_rate);
+    visit(16, self.yaw_rate);
+    visit(20, self.target_system);
+    visit(21, self.target_component);
+    visit(22, self.gimbal_device_id);
+  }
 };
+
+namespace detail
+{
+/// Writes fields into a payload, little-endian, floats by their bits.
+struct PayloadWriter
+{
+  Payload& out;
+  template <class Unsigned>
+  std::enable_if_t<std::is_unsigned<Unsigned>::value> operator()(std::size_t offset, Unsigned value)
+  {
+    putLittleEndian<Unsigned>(out.data() + offset, value);
+  }
+  void operator()(std::size_t offset, std::int32_t value)
+  {
+    (*this)(offset, static_cast<std::uint32_t>(value));
+  }
+  void operator()(std::size_t offset, float value)
+  {
+    (*this)(offset, floatBits(value));
+  }
+  void operator()(std::size_t offset, Result value)
+  {
+    (*this)(offset, static_cast<std::uint8_t>(value));
+  }
+  template <std::size_t N>
+  void operator()(std::size_t offset, const std::array<float, N>& values)
+  {
+    for (std::size_t index = 0; index < N; ++index)
+    {
+      (*this)(offset + 4 * index, values[index]);
+    }
+  }
+};
+
+/// Reads fields from a (zero-filled) payload.
+struct PayloadReader
+{
+  const Payload& in;
+  template <class Unsigned>
+  std::enable_if_t<std::is_unsigned<Unsigned>::value> operator()(std::size_t offset, Unsigned& value)
+  {
+    value = getLittleEndian<Unsigned>(in.data() + offset);
+  }
+  void operator()(std::size_t offset, std::int32_t& value)
+  {
+    value = static_cast<std::int32_t>(getLittleEndian<std::uint32_t>(in.data() + offset));
+  }
+  void operator()(std::size_t offset, float& value)
+  {
+    value = floatFromBits(getLittleEndian<std::uint32_t>(in.data() + offset));
+  }
+  void operator()(std::size_t offset, Result& value)
+  {
+    value = static_cast<Result>(in[offset]);
+  }
+  template <std::size_t N>
+  void operator()(std::size_t offset, std::array<float, N>& values)
+  {
+    for (std::size_t index = 0; index < N; ++index)
+    {
+      (*this)(offset + 4 * index, values[index]);
+    }
+  }
+};
+}  // namespace detail
+
+/// Writes \p message's fields at their wire offsets in \p out.
+template <class Message>
+void pack(const Message& message, Payload& out)
+{
+  detail::PayloadWriter writer{ out };
+  Message::fields(message, writer);
+}
+
+/// The message whose fields \p in holds.
+template <class Message>
+Message unpack(const Payload& in)
+{
+  Message message;
+  detail::PayloadReader reader{ in };
+  Message::fields(message, reader);
+  return message;
+}
 
 /// Frames \p message (its fields sorted as on the wire, trailing zeros cut).
 template <class Message>
 EncodedFrame encode(const FrameHeader& header, const Message& message)
 {
   Payload payload{};
-  message.pack(payload);
+  pack(message, payload);
   const MessageSpec& spec = *findMessage(Message::ID);
   return encodeFrame(header, spec, payload.data(), spec.length);
 }
@@ -219,7 +389,7 @@ EncodedFrame encode(const FrameHeader& header, const Message& message)
 template <class Message>
 Message decode(const Frame& frame)
 {
-  return Message::unpack(frame.payload);
+  return unpack<Message>(frame.payload);
 }
 
 /// Pan (yaw, positive right) and tilt (pitch, positive up) of a gimbal attitude, rad.
