@@ -12,41 +12,41 @@ using namespace cr::pantilt;
 
 void PanTiltEncodeSetParam(benchmark::State& state)
 {
-  const auto version = static_cast<WireVersion>(state.range(0));
+  const auto format = static_cast<WireFormat>(state.range(0));
   std::uint8_t frame[SET_PARAM_SIZE];
   int size = 0;
   float value = 0.0f;
   for (auto _ : state)
   {
-    PanTilt::encodeSetParamCommand(frame, size, PanTiltParam::PAN_ANGLE, value, version);
+    PanTilt::encodeSetParamCommand(frame, size, PanTiltParam::PAN_ANGLE, value, format);
     value += 0.5f;
     benchmark::DoNotOptimize(frame);
   }
   state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(PanTiltEncodeSetParam)->Arg(0)->Arg(1);
+BENCHMARK(PanTiltEncodeSetParam)->Arg(0)->Arg(1)->Arg(2);
 
 void PanTiltDecodeCommand(benchmark::State& state)
 {
-  const auto version = static_cast<WireVersion>(state.range(0));
-  std::uint8_t frame[COMMAND_SIZE_V1_1];
+  const auto format = static_cast<WireFormat>(state.range(0));
+  std::uint8_t frame[MAX_COMMAND_SIZE];
   int size = 0;
-  PanTilt::encodeCommand(frame, size, PanTiltCommand::GO_TO_PAN_TILT_ANGLE, version, 10.0f, -5.0f);
+  PanTilt::encodeCommand(frame, size, PanTiltCommand::GO_TO_PAN_TILT_ANGLE, format, 10.0f, -5.0f);
   PanTiltParam param{};
   PanTiltCommand command{};
   float value = 0.0f;
   float second = 0.0f;
   for (auto _ : state)
   {
-    benchmark::DoNotOptimize(PanTilt::decodeCommand(frame, size, param, command, value, version, &second));
+    benchmark::DoNotOptimize(PanTilt::decodeCommand(frame, size, param, command, value, format, &second));
   }
   state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(PanTiltDecodeCommand)->Arg(0)->Arg(1);
+BENCHMARK(PanTiltDecodeCommand)->Arg(0)->Arg(1)->Arg(2);
 
 void PanTiltParamsEncodeDecode(benchmark::State& state)
 {
-  const auto version = static_cast<WireVersion>(state.range(0));
+  const auto format = static_cast<WireFormat>(state.range(0));
   PanTiltParams params;
   params.panAngle = 12.5f;
   params.tiltAngle = -3.25f;
@@ -55,13 +55,13 @@ void PanTiltParamsEncodeDecode(benchmark::State& state)
   PanTiltParams decoded;
   for (auto _ : state)
   {
-    params.encode(frame, sizeof(frame), size, nullptr, version);
-    benchmark::DoNotOptimize(decoded.decode(frame, size, version));
+    params.encode(frame, sizeof(frame), size, nullptr, format);
+    benchmark::DoNotOptimize(decoded.decode(frame, size, format));
   }
   state.SetItemsProcessed(state.iterations());
   state.SetBytesProcessed(state.iterations() * size);
 }
-BENCHMARK(PanTiltParamsEncodeDecode)->Arg(0)->Arg(1);
+BENCHMARK(PanTiltParamsEncodeDecode)->Arg(0)->Arg(1)->Arg(2);
 }  // namespace
 
 BENCHMARK_MAIN();

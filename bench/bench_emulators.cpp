@@ -20,7 +20,7 @@ using PortKind = DevicePortConfig::Kind;
 class PanTiltDevice : public EmulatedDevice
 {
 public:
-  PanTiltDevice() : emulator_(PanTiltEmulatorConfig())  // 127.0.0.1, ephemeral port, wire 1.0
+  PanTiltDevice() : emulator_(PanTiltEmulatorConfig())  // 127.0.0.1, ephemeral port, format seed
   {
   }
   std::uint16_t port() const override
@@ -217,7 +217,7 @@ private:
 EmulatorSpec panTiltEmulator()
 {
   EmulatorSpec spec;
-  spec.summary = "PanTiltEmulator, UDP on 127.0.0.1, ephemeral port, wire 1.0";
+  spec.summary = "PanTiltEmulator, UDP on 127.0.0.1, ephemeral port, format seed";
   spec.goal_items = "every datagram but a params frame (state request) or STOP; no wire time";
   spec.stop_items = "a COMMAND datagram STOP";
   spec.goal_target = spec.stop_target = "p99 <= 5 ms";

@@ -91,7 +91,7 @@ const std::vector<DeviceRow>& deviceTable()
     pantilt.name = "pantilt_udp";
     pantilt.plugin = "pantilt_udp";
     pantilt.params = { value("pantilt_udp/device_host", "127.0.0.1"), emulatorPort("pantilt_udp/device_port"),
-                       value("pantilt_udp/local_host", "127.0.0.1"), value("pantilt_udp/wire_version", "1.0") };
+                       value("pantilt_udp/local_host", "127.0.0.1"), value("pantilt_udp/format", "seed") };
     pantilt.emulator = panTiltEmulator();
     table.push_back(pantilt);
 
@@ -102,6 +102,14 @@ const std::vector<DeviceRow>& deviceTable()
                         emulatorPort("digiview/port"), value("digiview/acceleration", 4.0) };
     digiview.emulator = digiViewEmulator();
     table.push_back(digiview);
+
+    DeviceRow gimbal;
+    gimbal.name = "mavlink_gimbal_udp";
+    gimbal.plugin = "mavlink_gimbal";
+    gimbal.params = { value("mavlink_gimbal/transport", "udp"), value("mavlink_gimbal/host", "127.0.0.1"),
+                      emulatorPort("mavlink_gimbal/port") };
+    gimbal.emulator = mavlinkGimbalEmulator();
+    table.push_back(gimbal);
 
     for (const char* protocol : { "flir", "pelco_d" })
     {

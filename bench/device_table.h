@@ -64,6 +64,7 @@ std::string portSummary(ptz_action_server::DevicePortConfig::Kind kind, unsigned
 
 EmulatorSpec panTiltEmulator();
 EmulatorSpec digiViewEmulator();
+EmulatorSpec mavlinkGimbalEmulator();
 EmulatorSpec flirEmulator(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud);
 EmulatorSpec pelcoEmulator(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud);
 /// A VISCA camera on a pseudo-terminal (raw), or over UDP with Sony's VISCA over IP header (\p baud unused).

@@ -21,7 +21,7 @@ SimDeviceConfig PanTiltEmulatorConfig::defaultDevice()
 }
 
 PanTiltEmulator::PanTiltEmulator(const PanTiltEmulatorConfig& config, std::shared_ptr<const Clock> clock)
-  : config_(config), clock_(std::move(clock)), pan_tilt_(config.device, clock_, config.version)
+  : config_(config), clock_(std::move(clock)), pan_tilt_(config.device, clock_, config.format)
 {
   socket_.bind(config.host, config.port);
   thread_ = std::thread(&PanTiltEmulator::run, this);
@@ -122,12 +122,10 @@ void PanTiltEmulator::handleDatagram(const std::uint8_t* data, std::size_t size,
   {
     std::lock_guard<std::mutex> lock(mutex_);
     ++counters_.dropped_by_fault;
-  }
-  if (silent_)
-  {
     return;
   }
 
+  // Only a frame of the configured format is executed (or answered): one of another format is dropped.
   const int length = static_cast<int>(size);
   DecodeError error = DecodeError::NONE;
   bool valid = false;
@@ -136,19 +134,26 @@ void PanTiltEmulator::handleDatagram(const std::uint8_t* data, std::size_t size,
   if (size > 0 && data[0] == PARAMS_HEADER)
   {
     PanTiltParams ignored;
-    valid = state_request = ignored.decode(data, length, config_.version, &error);
+    valid = state_request = ignored.decode(data, length, config_.format, &error);
   }
   else
   {
-    executed = pan_tilt_.decodeAndExecuteCommand(data, length);
-    valid = executed;
-    if (!executed)
+    PanTiltParam param{};
+    PanTiltCommand command{};
+    float value = 0.0f;
+    float second = 0.0f;
+    switch (PanTilt::decodeCommand(data, length, param, command, value, config_.format, &second, &error))
     {
-      // Refused or invalid: decode once more to tell which, and why.
-      PanTiltParam param{};
-      PanTiltCommand command{};
-      float value = 0.0f;
-      valid = PanTilt::decodeCommand(data, length, param, command, value, config_.version, nullptr, &error) >= 0;
+      case 0:
+        valid = true;
+        executed = pan_tilt_.executeCommand(command, value, second);
+        break;
+      case 1:
+        valid = true;
+        executed = pan_tilt_.setParam(param, value);
+        break;
+      default:
+        break;
     }
   }
   {
@@ -203,7 +208,7 @@ void PanTiltEmulator::sendState(const UdpEndpoint& to)
   pan_tilt_.getParams(params);
   std::uint8_t frame[MAX_PARAMS_FRAME_SIZE];
   int size = 0;
-  params.encode(frame, sizeof(frame), size, nullptr, config_.version);
+  params.encode(frame, sizeof(frame), size, nullptr, config_.format);
   if (socket_.sendTo(to, frame, static_cast<std::size_t>(size)))
   {
     std::lock_guard<std::mutex> lock(mutex_);

@@ -42,8 +42,8 @@ bool validMotorPosition(double value)
 }  // namespace
 
 SimPanTilt::SimPanTilt(const ptz_action_server::SimDeviceConfig& config,
-                       std::shared_ptr<const ptz_action_server::Clock> clock, WireVersion version)
-  : clock_(std::move(clock)), version_(version), model_(config, clock_->now())
+                       std::shared_ptr<const ptz_action_server::Clock> clock, WireFormat format)
+  : clock_(std::move(clock)), format_(format), model_(config, clock_->now())
 {
 }
 
@@ -204,7 +204,7 @@ bool SimPanTilt::executeCommand(PanTiltCommand id, float arg1, float arg2)
 {
   std::lock_guard<std::mutex> lock(mutex_);
   const TimePoint now = clock_->now();
-  const bool with_arguments = version_ == WireVersion::V1_1;
+  const bool with_arguments = hasCommandArguments(format_);
   auto max_speed = [this](Axis axis) { return model_.config().axes[axis].motion.max_speed; };
   switch (id)
   {
@@ -228,7 +228,7 @@ bool SimPanTilt::executeCommand(PanTiltCommand id, float arg1, float arg2)
       const bool tilt = id != PanTiltCommand::GO_TO_PAN_ANGLE;
       if (with_arguments)
       {
-        // 1.1: the first argument is the first axis' angle, the second (pan-tilt only) the tilt angle.
+        // v1.x: the first argument is the first axis' angle, the second (pan-tilt only) the tilt angle.
         const float tilt_value = id == PanTiltCommand::GO_TO_PAN_TILT_ANGLE ? arg2 : arg1;
         if ((pan && !setParamLocked(PanTiltParam::PAN_ANGLE, arg1, now)) ||
             (tilt && !setParamLocked(PanTiltParam::TILT_ANGLE, tilt_value, now)))
@@ -291,7 +291,7 @@ bool SimPanTilt::decodeAndExecuteCommand(const std::uint8_t* data, int size)
   PanTiltCommand command{};
   float value = 0.0f;
   float second = 0.0f;
-  switch (decodeCommand(data, size, param, command, value, version_, &second))
+  switch (decodeCommand(data, size, param, command, value, format_, &second))
   {
     case 0:
       return executeCommand(command, value, second);

@@ -5,6 +5,7 @@
 
 #include "plugin_params.h"
 #include "ptz_action_server/core/pantilt/pantilt_protocol.h"
+#include "ptz_action_server/core/types.h"
 #include "ptz_action_server/ros/backend_plugin.h"
 
 namespace ptz_action_server
@@ -26,7 +27,14 @@ public:
     readSessionTiming(params, config.session);
 
     PanTiltSettings& pantilt = config.pantilt;
-    cr::pantilt::parseWireVersion(params.choice("wire_version", "1.0", { "1.0", "1.1" }), pantilt.version);
+    if (params.has("wire_version"))
+    {
+      // "1.0" named two formats that share their version bytes (the seed's and PanTilt 1.0.x): no guessing.
+      throw ConfigError("parameter " + params.resolve("wire_version") + " is replaced by " + params.resolve("format") +
+                        ": format: seed for what wire_version 1.0 meant, v1.1 for 1.1, v1.0 for a PanTilt 1.0.x "
+                        "device");
+    }
+    cr::pantilt::parseWireFormat(params.choice("format", "seed", { "seed", "v1.0", "v1.1" }), pantilt.format);
     pantilt.state_request_period = params.number("state_request_period", pantilt.state_request_period, 0.01, 10.0);
     pantilt.pan_speed = params.number("pan_speed", pantilt.pan_speed, 1.0, 100.0);
     pantilt.tilt_speed = params.number("tilt_speed", pantilt.tilt_speed, 1.0, 100.0);

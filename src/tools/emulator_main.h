@@ -27,6 +27,8 @@ struct Hooks
   std::function<void(bool)> set_silent;
   std::function<void()> unplug;
   std::function<void()> replug;
+  /// A program's own fault, run once at Schedule::own_fault_after (e.g. another controller taking a gimbal).
+  std::function<void()> own_fault;
 };
 
 /// Timed faults, in seconds from the start (< 0: never).
@@ -35,6 +37,7 @@ struct Schedule
   double silent_after = -1.0;
   double unplug_after = -1.0;
   double replug_after = -1.0;
+  double own_fault_after = -1.0;
 };
 
 [[noreturn]] inline void fail(const char* program, const std::string& message, const char* usage)
@@ -305,7 +308,8 @@ inline void run(const char* program, const sigset_t& signals, const Hooks& hooks
   while (true)
   {
     double* next = nullptr;
-    for (double* deadline : { &schedule.silent_after, &schedule.unplug_after, &schedule.replug_after })
+    for (double* deadline :
+         { &schedule.silent_after, &schedule.unplug_after, &schedule.replug_after, &schedule.own_fault_after })
     {
       if (*deadline >= 0.0 && (next == nullptr || *deadline < *next))
       {
@@ -323,6 +327,13 @@ inline void run(const char* program, const sigset_t& signals, const Hooks& hooks
         if (next == &schedule.silent_after)
         {
           set_silent(true);
+        }
+        else if (next == &schedule.own_fault_after)
+        {
+          if (hooks.own_fault)
+          {
+            hooks.own_fault();
+          }
         }
         else
         {

@@ -18,11 +18,15 @@ const char* USAGE = R"(usage: pantilt_emulator [options]
 
 A PanTilt device controller on UDP: executes SET_PARAM / COMMAND frames on a simulated pan-tilt unit and reports
 its params (a full params frame in reply to every valid datagram, and every --state-period to the last client).
+It speaks one wire format; frames of another PanTilt format are counted and dropped, never executed.
 
 Options:
   --host HOST            address to listen on (default 127.0.0.1)
   --port PORT            UDP port (default 5000; 0 = any free port)
-  --version 1.0|1.1      wire format (default 1.0, the seed's)
+  --format FORMAT        wire format (default seed):
+                           seed   the seed's: version bytes 1 0, 7-byte commands, nine params fields
+                           v1.0   PanTilt 1.0.x: version bytes 1 0, 15-byte commands with arguments, eleven fields
+                           v1.1   PanTilt 1.1.x: as v1.0 under version bytes 1 1
   --state-period S       seconds between unsolicited params frames (default 0.1; 0 = replies only)
   --drop RATIO           drop this share of replies (0..1)
   --delay S              delay every reply by S seconds
@@ -48,12 +52,20 @@ int main(int argc, char** argv)
         {
           return true;
         }
-        if (arg == "--version")
+        if (arg == "--format")
         {
-          if (!cr::pantilt::parseWireVersion(value(), config.version))
+          if (!cr::pantilt::parseWireFormat(value(), config.format))
           {
-            emulator_main::fail(PROGRAM, "--version must be 1.0 or 1.1", USAGE);
+            emulator_main::fail(PROGRAM, "--format must be seed, v1.0 or v1.1", USAGE);
           }
+        }
+        else if (arg == "--version")
+        {
+          // "1.0" named two formats that share their version bytes: the choice must be explicit.
+          emulator_main::fail(PROGRAM,
+                              "--version is replaced by --format: --format seed for what --version 1.0 meant, "
+                              "--format v1.1 for --version 1.1, --format v1.0 for a PanTilt 1.0.x device",
+                              USAGE);
         }
         else if (arg == "--state-period")
         {
@@ -81,12 +93,26 @@ int main(int argc, char** argv)
     device.setSilent(silent);
     device.setDropRatio(drop);
     device.setReplyDelay(delay);
-    std::printf("%s: listening on %s, wire %s, state every %.2f s%s\n", PROGRAM, device.endpoint().toString().c_str(),
-                cr::pantilt::toString(config.version), config.state_period, silent ? ", silent" : "");
+    std::printf("%s: listening on %s, format %s, state every %.2f s%s\n", PROGRAM, device.endpoint().toString().c_str(),
+                cr::pantilt::toString(config.format), config.state_period, silent ? ", silent" : "");
     std::fflush(stdout);
     emulator_main::Hooks hooks;
     hooks.set_silent = [&device](bool value) { device.setSilent(value); };
     emulator_main::run(PROGRAM, signals, hooks, schedule, silent);
+    // What it did, so that a client speaking another format shows up here too.
+    const ptz_action_server::PanTiltEmulatorCounters counted = device.counters();
+    std::uint64_t invalid = 0;
+    for (std::uint64_t count : counted.invalid)
+    {
+      invalid += count;
+    }
+    const std::uint64_t foreign = counted.dropped(cr::pantilt::DecodeError::FOREIGN_FORMAT);
+    std::printf("%s: %llu commands executed, %llu refused, %llu state requests; dropped %llu frames of another "
+                "PanTilt format and %llu invalid datagrams\n",
+                PROGRAM, static_cast<unsigned long long>(counted.commands_executed),
+                static_cast<unsigned long long>(counted.commands_refused),
+                static_cast<unsigned long long>(counted.state_requests), static_cast<unsigned long long>(foreign),
+                static_cast<unsigned long long>(invalid - foreign));
   }
   catch (const std::exception& error)
   {

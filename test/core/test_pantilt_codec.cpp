@@ -15,33 +15,31 @@ using Bytes = std::vector<std::uint8_t>;
 
 namespace
 {
-const WireVersion BOTH_VERSIONS[] = { WireVersion::V1_0, WireVersion::V1_1 };
-
-Bytes setParamFrame(PanTiltParam id, float value, WireVersion version)
+Bytes setParamFrame(PanTiltParam id, float value, WireFormat format)
 {
   Bytes frame(SET_PARAM_SIZE);
   int size = -1;
-  EXPECT_TRUE(PanTilt::encodeSetParamCommand(frame.data(), size, id, value, version));
+  EXPECT_TRUE(PanTilt::encodeSetParamCommand(frame.data(), size, id, value, format));
   frame.resize(static_cast<std::size_t>(size));
   return frame;
 }
 
-Bytes commandFrame(PanTiltCommand id, WireVersion version, float arg1 = 0.0f, float arg2 = 0.0f)
+Bytes commandFrame(PanTiltCommand id, WireFormat format, float arg1 = 0.0f, float arg2 = 0.0f)
 {
-  Bytes frame(COMMAND_SIZE_V1_1);
+  Bytes frame(MAX_COMMAND_SIZE);
   int size = -1;
-  EXPECT_TRUE(PanTilt::encodeCommand(frame.data(), size, id, version, arg1, arg2));
+  EXPECT_TRUE(PanTilt::encodeCommand(frame.data(), size, id, format, arg1, arg2));
   frame.resize(static_cast<std::size_t>(size));
   return frame;
 }
 
-std::vector<PanTiltParam> paramsOf(WireVersion version)
+std::vector<PanTiltParam> paramsOf(WireFormat format)
 {
   std::vector<PanTiltParam> params;
   for (int value : { 1, 2, 3, 4, 5, 6, 7, 8, 9, 101, 102, 103, 104, 105 })
   {
     const auto param = static_cast<PanTiltParam>(value);
-    if (PanTilt::wireId(param, version) != 0)
+    if (PanTilt::wireId(param, format) != 0)
     {
       params.push_back(param);
     }
@@ -50,25 +48,53 @@ std::vector<PanTiltParam> paramsOf(WireVersion version)
 }
 }  // namespace
 
-// --- Golden frames from protocols.md
+// --- Golden frames printed by the published implementations (published-wire-facts.md 2.2, 2.3)
 
-TEST(PanTiltGolden, StopInTheSeedsFormat)
+TEST(PanTiltGolden, SeedCommands)
 {
-  EXPECT_EQ(commandFrame(PanTiltCommand::STOP, WireVersion::V1_0), (Bytes{ 0x00, 0x01, 0x00, 0x02, 0x00, 0x00, 0x00 }));
+  EXPECT_EQ(commandFrame(PanTiltCommand::STOP, WireFormat::SEED), (Bytes{ 0x00, 0x01, 0x00, 0x02, 0x00, 0x00, 0x00 }));
+  EXPECT_EQ(commandFrame(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, WireFormat::SEED, 10.0f, -5.0f),
+            (Bytes{ 0x00, 0x01, 0x00, 0x08, 0x00, 0x00, 0x00 }));  // the seed's COMMAND has no arguments
+  EXPECT_EQ(setParamFrame(PanTiltParam::PAN_ANGLE, 10.0f, WireFormat::SEED),
+            (Bytes{ 0x01, 0x01, 0x00, 0x03, 0x00, 0x00, 0x00, 0x00, 0x00, 0x20, 0x41 }));
 }
 
-TEST(PanTiltGolden, SetPanAngleInBothFormats)
+TEST(PanTiltGolden, V1_0Commands)
 {
-  EXPECT_EQ(setParamFrame(PanTiltParam::PAN_ANGLE, 10.0f, WireVersion::V1_0),
+  EXPECT_EQ(commandFrame(PanTiltCommand::STOP, WireFormat::V1_0),
+            (Bytes{ 0x00, 0x01, 0x00, 0x02, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00 }));
+  // The same bytes as the seed's: only the ids from 5 on tell the formats apart, and nothing on the wire does.
+  EXPECT_EQ(setParamFrame(PanTiltParam::PAN_ANGLE, 10.0f, WireFormat::V1_0),
             (Bytes{ 0x01, 0x01, 0x00, 0x03, 0x00, 0x00, 0x00, 0x00, 0x00, 0x20, 0x41 }));
-  EXPECT_EQ(setParamFrame(PanTiltParam::PAN_ANGLE, 10.0f, WireVersion::V1_1),
+}
+
+TEST(PanTiltGolden, V1_1Commands)
+{
+  EXPECT_EQ(commandFrame(PanTiltCommand::STOP, WireFormat::V1_1),
+            (Bytes{ 0x00, 0x01, 0x01, 0x02, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00 }));
+  EXPECT_EQ(commandFrame(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, WireFormat::V1_1, 10.0f, -5.0f),
+            (Bytes{ 0x00, 0x01, 0x01, 0x08, 0x00, 0x00, 0x00, 0x00, 0x00, 0x20, 0x41, 0x00, 0x00, 0xA0, 0xC0 }));
+  EXPECT_EQ(commandFrame(PanTiltCommand::MOVE_PAN_TILT, WireFormat::V1_1, 50.0f, -25.0f),
+            (Bytes{ 0x00, 0x01, 0x01, 0x0C, 0x00, 0x00, 0x00, 0x00, 0x00, 0x48, 0x42, 0x00, 0x00, 0xC8, 0xC1 }));
+  EXPECT_EQ(setParamFrame(PanTiltParam::PAN_ANGLE, 10.0f, WireFormat::V1_1),
             (Bytes{ 0x01, 0x01, 0x01, 0x03, 0x00, 0x00, 0x00, 0x00, 0x00, 0x20, 0x41 }));
 }
 
-TEST(PanTiltGolden, GoToPanTiltAngleWithArgumentsIn1_1)
+TEST(PanTiltGolden, FormatNames)
 {
-  EXPECT_EQ(commandFrame(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, WireVersion::V1_1, 10.0f, -5.0f),
-            (Bytes{ 0x00, 0x01, 0x01, 0x08, 0x00, 0x00, 0x00, 0x00, 0x00, 0x20, 0x41, 0x00, 0x00, 0xA0, 0xC0 }));
+  for (WireFormat format : ALL_WIRE_FORMATS)
+  {
+    WireFormat parsed = format == WireFormat::SEED ? WireFormat::V1_1 : WireFormat::SEED;
+    ASSERT_TRUE(parseWireFormat(toString(format), parsed)) << toString(format);
+    EXPECT_EQ(parsed, format);
+  }
+  EXPECT_STREQ(toString(WireFormat::SEED), "seed");
+  EXPECT_STREQ(toString(WireFormat::V1_0), "v1.0");
+  EXPECT_STREQ(toString(WireFormat::V1_1), "v1.1");
+  WireFormat format = WireFormat::V1_1;
+  EXPECT_FALSE(parseWireFormat("1.0", format));  // the old name: two formats answered to it
+  EXPECT_FALSE(parseWireFormat("1.1", format));
+  EXPECT_EQ(format, WireFormat::V1_1);
 }
 
 TEST(PanTiltGolden, VersionString)
@@ -80,65 +106,68 @@ TEST(PanTiltGolden, VersionString)
 
 TEST(PanTiltRoundTrip, EveryCommandInEveryFormat)
 {
-  for (WireVersion version : BOTH_VERSIONS)
+  for (WireFormat format : ALL_WIRE_FORMATS)
   {
-    const int last = version == WireVersion::V1_0 ? 9 : 12;
+    const bool seed = format == WireFormat::SEED;
+    const int last = seed ? 9 : 12;
     for (int id = 1; id <= last; ++id)
     {
       const auto command = static_cast<PanTiltCommand>(id);
-      const Bytes frame = commandFrame(command, version, 12.5f, -7.25f);
-      ASSERT_EQ(frame.size(), version == WireVersion::V1_0 ? 7u : 15u);
+      const Bytes frame = commandFrame(command, format, 12.5f, -7.25f);
+      ASSERT_EQ(frame.size(), seed ? 7u : 15u);
       PanTiltParam param{};
       PanTiltCommand decoded{};
       float value = -1.0f;
       float second = -1.0f;
       DecodeError error = DecodeError::BAD_ID;
-      ASSERT_EQ(PanTilt::decodeCommand(frame.data(), static_cast<int>(frame.size()), param, decoded, value, version,
+      ASSERT_EQ(PanTilt::decodeCommand(frame.data(), static_cast<int>(frame.size()), param, decoded, value, format,
                                        &second, &error),
                 0)
-          << "command " << id;
+          << toString(format) << " command " << id;
       EXPECT_EQ(decoded, command);
       EXPECT_EQ(error, DecodeError::NONE);
-      EXPECT_FLOAT_EQ(value, version == WireVersion::V1_1 ? 12.5f : 0.0f);
-      EXPECT_FLOAT_EQ(second, version == WireVersion::V1_1 ? -7.25f : 0.0f);
+      EXPECT_FLOAT_EQ(value, seed ? 0.0f : 12.5f);
+      EXPECT_FLOAT_EQ(second, seed ? 0.0f : -7.25f);
     }
   }
-  // The 1.1-only commands do not exist in 1.0.
-  std::uint8_t frame[COMMAND_SIZE_V1_1];
+  // The v1.x-only commands do not exist in the seed's format.
+  std::uint8_t frame[MAX_COMMAND_SIZE];
   int size = -1;
-  EXPECT_FALSE(PanTilt::encodeCommand(frame, size, PanTiltCommand::MOVE_PAN, WireVersion::V1_0));
+  EXPECT_FALSE(PanTilt::encodeCommand(frame, size, PanTiltCommand::MOVE_PAN, WireFormat::SEED));
   EXPECT_EQ(size, 0);
 }
 
 TEST(PanTiltRoundTrip, EveryParamInEveryFormat)
 {
-  for (WireVersion version : BOTH_VERSIONS)
+  for (WireFormat format : ALL_WIRE_FORMATS)
   {
-    const std::vector<PanTiltParam> params = paramsOf(version);
-    EXPECT_EQ(params.size(), version == WireVersion::V1_0 ? 9u : 11u);
+    const std::vector<PanTiltParam> params = paramsOf(format);
+    EXPECT_EQ(params.size(), format == WireFormat::SEED ? 9u : 11u);
     for (PanTiltParam id : params)
     {
       for (float value : { 0.0f, -180.0f, 65535.0f, 3.14159f, std::numeric_limits<float>::infinity() })
       {
-        const Bytes frame = setParamFrame(id, value, version);
+        const Bytes frame = setParamFrame(id, value, format);
         PanTiltParam decoded{};
         PanTiltCommand command{};
         float decoded_value = 0.0f;
         ASSERT_EQ(PanTilt::decodeCommand(frame.data(), static_cast<int>(frame.size()), decoded, command, decoded_value,
-                                         version),
+                                         format),
                   1);
         EXPECT_EQ(decoded, id);
         EXPECT_EQ(decoded_value, value);
       }
     }
   }
-  // 1.1 numbers its params differently: PAN_MOTOR_SPEED is 7 in 1.0 and 5 in 1.1.
-  EXPECT_EQ(setParamFrame(PanTiltParam::PAN_MOTOR_SPEED, 0.0f, WireVersion::V1_0)[3], 7);
-  EXPECT_EQ(setParamFrame(PanTiltParam::PAN_MOTOR_SPEED, 0.0f, WireVersion::V1_1)[3], 5);
+  // v1.0 and v1.1 number their params differently from the seed: PAN_MOTOR_SPEED is 7 in the seed's format, 5 in v1.x.
+  EXPECT_EQ(setParamFrame(PanTiltParam::PAN_MOTOR_SPEED, 0.0f, WireFormat::SEED)[3], 7);
+  EXPECT_EQ(setParamFrame(PanTiltParam::PAN_MOTOR_SPEED, 0.0f, WireFormat::V1_0)[3], 5);
+  EXPECT_EQ(setParamFrame(PanTiltParam::PAN_MOTOR_SPEED, 0.0f, WireFormat::V1_1)[3], 5);
   std::uint8_t frame[SET_PARAM_SIZE];
   int size = -1;
-  EXPECT_FALSE(PanTilt::encodeSetParamCommand(frame, size, PanTiltParam::PAN_TILT_ANGLE, 1.0f, WireVersion::V1_1));
-  EXPECT_FALSE(PanTilt::encodeSetParamCommand(frame, size, PanTiltParam::IS_OPEN, 1.0f, WireVersion::V1_0));
+  EXPECT_FALSE(PanTilt::encodeSetParamCommand(frame, size, PanTiltParam::PAN_TILT_ANGLE, 1.0f, WireFormat::V1_0));
+  EXPECT_FALSE(PanTilt::encodeSetParamCommand(frame, size, PanTiltParam::PAN_TILT_ANGLE, 1.0f, WireFormat::V1_1));
+  EXPECT_FALSE(PanTilt::encodeSetParamCommand(frame, size, PanTiltParam::IS_OPEN, 1.0f, WireFormat::SEED));
   EXPECT_EQ(size, 0);
 }
 
@@ -150,51 +179,59 @@ TEST(PanTiltDecoder, RejectsMalformedCommandsWithOneReasonAndDefinedOutputs)
   {
     const char* name;
     Bytes bytes;
-    WireVersion version;
+    WireFormat format;
     DecodeError error;
   };
-  const Bytes stop = commandFrame(PanTiltCommand::STOP, WireVersion::V1_0);
-  const Bytes set = setParamFrame(PanTiltParam::TILT_ANGLE, 1.0f, WireVersion::V1_0);
+  const Bytes stop = commandFrame(PanTiltCommand::STOP, WireFormat::SEED);
+  const Bytes set = setParamFrame(PanTiltParam::TILT_ANGLE, 1.0f, WireFormat::SEED);
   Bytes longer_stop = stop;
   longer_stop.push_back(0);
   Bytes short_set = set;
   short_set.pop_back();
   Bytes bad_major = stop;
   bad_major[1] = 2;
+  Bytes minor_seven = stop;
+  minor_seven[2] = 7;
   Bytes command_id_zero = stop;
   command_id_zero[3] = 0;
   Bytes command_id_ten = stop;
-  command_id_ten[3] = 10;  // MOVE_PAN: 1.1 only
+  command_id_ten[3] = 10;  // MOVE_PAN: v1.x only, and a v1.x command is 15 bytes
   Bytes command_id_negative = stop;
   command_id_negative[6] = 0x80;
-  Bytes param_id_ten = set;
-  param_id_ten[3] = 10;
+  Bytes param_id_twelve = set;
+  param_id_twelve[3] = 12;
   Bytes param_id_huge = set;
   param_id_huge[5] = 0x01;
-  const Bytes move_pan_tilt = commandFrame(PanTiltCommand::MOVE_PAN_TILT, WireVersion::V1_1);
+  const Bytes move_pan_tilt = commandFrame(PanTiltCommand::MOVE_PAN_TILT, WireFormat::V1_1);
   Bytes command_id_thirteen = move_pan_tilt;
   command_id_thirteen[3] = 13;
-  Bytes param_v11_id_twelve = setParamFrame(PanTiltParam::CUSTOM_3, 1.0f, WireVersion::V1_1);
+  Bytes v1_0_command_id_thirteen = command_id_thirteen;
+  v1_0_command_id_thirteen[2] = 0;
+  const Bytes short_move(move_pan_tilt.begin(), move_pan_tilt.end() - 1);
+  Bytes param_v11_id_twelve = setParamFrame(PanTiltParam::CUSTOM_3, 1.0f, WireFormat::V1_1);
   param_v11_id_twelve[3] = 12;
   const std::vector<Case> cases = {
-    { "empty", {}, WireVersion::V1_0, DecodeError::BAD_SIZE },
-    { "two bytes", { 0x00, 0x01 }, WireVersion::V1_0, DecodeError::BAD_SIZE },
-    { "params header", { 0x02, 0x01, 0x00, 0x00, 0x00 }, WireVersion::V1_0, DecodeError::BAD_HEADER },
-    { "header 0xFF", { 0xFF, 0x01, 0x00, 0x02, 0, 0, 0 }, WireVersion::V1_0, DecodeError::BAD_HEADER },
-    { "1.0 frame to a 1.1 decoder", stop, WireVersion::V1_1, DecodeError::BAD_VERSION },
-    { "1.1 frame to a 1.0 decoder", move_pan_tilt, WireVersion::V1_0, DecodeError::BAD_VERSION },
-    { "major 2", bad_major, WireVersion::V1_0, DecodeError::BAD_VERSION },
-    { "command one byte long", longer_stop, WireVersion::V1_0, DecodeError::BAD_SIZE },
-    { "1.0 command of 1.1 size", Bytes(move_pan_tilt.begin(), move_pan_tilt.end()), WireVersion::V1_0,
-      DecodeError::BAD_VERSION },
-    { "set param one byte short", short_set, WireVersion::V1_0, DecodeError::BAD_SIZE },
-    { "command id 0", command_id_zero, WireVersion::V1_0, DecodeError::BAD_ID },
-    { "command id 10 in 1.0", command_id_ten, WireVersion::V1_0, DecodeError::BAD_ID },
-    { "negative command id", command_id_negative, WireVersion::V1_0, DecodeError::BAD_ID },
-    { "command id 13 in 1.1", command_id_thirteen, WireVersion::V1_1, DecodeError::BAD_ID },
-    { "param id 10 in 1.0", param_id_ten, WireVersion::V1_0, DecodeError::BAD_ID },
-    { "param id 65539", param_id_huge, WireVersion::V1_0, DecodeError::BAD_ID },
-    { "param id 12 in 1.1", param_v11_id_twelve, WireVersion::V1_1, DecodeError::BAD_ID },
+    { "empty", {}, WireFormat::SEED, DecodeError::BAD_SIZE },
+    { "two bytes", { 0x00, 0x01 }, WireFormat::SEED, DecodeError::BAD_SIZE },
+    { "params header", { 0x02, 0x01, 0x00, 0x00, 0x00 }, WireFormat::SEED, DecodeError::BAD_HEADER },
+    { "header 0xFF", { 0xFF, 0x01, 0x00, 0x02, 0, 0, 0 }, WireFormat::SEED, DecodeError::BAD_HEADER },
+    { "major 2", bad_major, WireFormat::SEED, DecodeError::BAD_VERSION },
+    { "minor 7", minor_seven, WireFormat::V1_0, DecodeError::BAD_VERSION },
+    { "command one byte long", longer_stop, WireFormat::SEED, DecodeError::BAD_SIZE },
+    { "v1.1 command one byte short", short_move, WireFormat::V1_1, DecodeError::BAD_SIZE },
+    { "set param one byte short", short_set, WireFormat::SEED, DecodeError::BAD_SIZE },
+    { "command id 0", command_id_zero, WireFormat::SEED, DecodeError::BAD_ID },
+    { "command id 10 in the seed's format", command_id_ten, WireFormat::SEED, DecodeError::BAD_ID },
+    { "negative command id", command_id_negative, WireFormat::SEED, DecodeError::BAD_ID },
+    { "command id 13 in v1.1", command_id_thirteen, WireFormat::V1_1, DecodeError::BAD_ID },
+    { "15-byte command with id 13 to a seed decoder", v1_0_command_id_thirteen, WireFormat::SEED,
+      DecodeError::BAD_SIZE },
+    { "param id 12 in the seed's format", param_id_twelve, WireFormat::SEED, DecodeError::BAD_ID },
+    { "param id 65539", param_id_huge, WireFormat::SEED, DecodeError::BAD_ID },
+    { "param id 12 in v1.1", param_v11_id_twelve, WireFormat::V1_1, DecodeError::BAD_ID },
+    // Valid frames, but of another format (test_pantilt_formats.cpp has every pair).
+    { "seed frame to a v1.1 decoder", stop, WireFormat::V1_1, DecodeError::FOREIGN_FORMAT },
+    { "v1.1 frame to a seed decoder", move_pan_tilt, WireFormat::SEED, DecodeError::FOREIGN_FORMAT },
   };
   for (const Case& item : cases)
   {
@@ -204,7 +241,7 @@ TEST(PanTiltDecoder, RejectsMalformedCommandsWithOneReasonAndDefinedOutputs)
     float second = 99.0f;
     DecodeError error = DecodeError::NONE;
     EXPECT_EQ(PanTilt::decodeCommand(item.bytes.data(), static_cast<int>(item.bytes.size()), param, command, value,
-                                     item.version, &second, &error),
+                                     item.format, &second, &error),
               -1)
         << item.name;
     EXPECT_EQ(error, item.error) << item.name << ": " << toString(error);
@@ -225,9 +262,9 @@ TEST(SimPanTilt, ExecutesSeedStyleSetParamThenCommand)
 {
   auto clock = std::make_shared<ptz_action_server::ManualClock>();
   SimPanTilt device(ptz_action_server::SimDeviceConfig::defaults(), clock);
-  const Bytes pan = setParamFrame(PanTiltParam::PAN_ANGLE, 30.0f, WireVersion::V1_0);
-  const Bytes tilt = setParamFrame(PanTiltParam::TILT_ANGLE, -10.0f, WireVersion::V1_0);
-  const Bytes go = commandFrame(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, WireVersion::V1_0);
+  const Bytes pan = setParamFrame(PanTiltParam::PAN_ANGLE, 30.0f, WireFormat::SEED);
+  const Bytes tilt = setParamFrame(PanTiltParam::TILT_ANGLE, -10.0f, WireFormat::SEED);
+  const Bytes go = commandFrame(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, WireFormat::SEED);
   EXPECT_TRUE(device.decodeAndExecuteCommand(pan.data(), static_cast<int>(pan.size())));
   EXPECT_TRUE(device.decodeAndExecuteCommand(tilt.data(), static_cast<int>(tilt.size())));
   EXPECT_EQ(device.sample().moving, false);  // targets set, nothing moves before the command
@@ -253,7 +290,7 @@ TEST(SimPanTilt, RefusesValuesOutsideTheSeedsRanges)
   EXPECT_FALSE(device.setParam(PanTiltParam::TILT_MOTOR_POSITION, 65536.0f));
   EXPECT_FALSE(device.setParam(PanTiltParam::PAN_ANGLE, std::numeric_limits<float>::quiet_NaN()));
   EXPECT_FALSE(device.setParam(PanTiltParam::IS_CONNECTED, 1.0f));
-  EXPECT_FALSE(device.executeCommand(PanTiltCommand::MOVE_PAN, 50.0f));  // a 1.1 command on a 1.0 device
+  EXPECT_FALSE(device.executeCommand(PanTiltCommand::MOVE_PAN, 50.0f));  // a v1.x command on a seed device
   EXPECT_TRUE(device.setParam(PanTiltParam::TILT_ANGLE, 90.0f));
   EXPECT_TRUE(device.setParam(PanTiltParam::CUSTOM_2, 7.0f));
   EXPECT_FLOAT_EQ(device.getParam(PanTiltParam::CUSTOM_2), 7.0f);
@@ -271,21 +308,41 @@ TEST(SimPanTilt, SpeedParamsScaleTheMove)
   EXPECT_FLOAT_EQ(device.getParam(PanTiltParam::PAN_MOTOR_SPEED), 50.0f);
 }
 
-TEST(SimPanTilt, OneOneCommandsCarryTheirTargetsAndSpeeds)
+TEST(SimPanTilt, AV1_0SpeedIsASpeedNotAMotorPosition)
 {
+  // PanTilt 1.0.x's SET_PARAM PAN_MOTOR_SPEED = 100 (id 5): the old "1.0" took it as the seed's
+  // PAN_TILT_MOTOR_POSITION, a target for both axes.
+  const Bytes speed = { 0x01, 0x01, 0x00, 0x05, 0x00, 0x00, 0x00, 0x00, 0x00, 0xC8, 0x42 };
   auto clock = std::make_shared<ptz_action_server::ManualClock>();
-  SimPanTilt device(ptz_action_server::SimDeviceConfig::defaults(), clock, WireVersion::V1_1);
-  const Bytes go = commandFrame(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, WireVersion::V1_1, -20.0f, 15.0f);
+  SimPanTilt device(ptz_action_server::SimDeviceConfig::defaults(), clock, WireFormat::V1_0);
+  ASSERT_TRUE(device.setParam(PanTiltParam::PAN_MOTOR_SPEED, 20.0f));
+  ASSERT_TRUE(device.decodeAndExecuteCommand(speed.data(), static_cast<int>(speed.size())));
+  EXPECT_FLOAT_EQ(device.getParam(PanTiltParam::PAN_MOTOR_SPEED), 100.0f);
+  const Bytes go = commandFrame(PanTiltCommand::GO_TO_PAN_TILT_POSITION, WireFormat::V1_0, 60000.0f, 30000.0f);
   ASSERT_TRUE(device.decodeAndExecuteCommand(go.data(), static_cast<int>(go.size())));
-  clock->advance(3.0);
-  EXPECT_NEAR(device.sample().position[ptz_action_server::PAN], -20.0 * M_PI / 180.0, 1e-3);
-  EXPECT_NEAR(device.sample().position[ptz_action_server::TILT], 15.0 * M_PI / 180.0, 1e-3);
-  const Bytes move = commandFrame(PanTiltCommand::MOVE_PAN, WireVersion::V1_1, -40.0f);
-  ASSERT_TRUE(device.decodeAndExecuteCommand(move.data(), static_cast<int>(move.size())));
   clock->advance(1.0);
-  EXPECT_NEAR(device.sample().velocity[ptz_action_server::PAN], -0.6, 1e-9);  // 40 % of 1.5 rad/s, anticlockwise
-  const Bytes stop = commandFrame(PanTiltCommand::STOP, WireVersion::V1_1);
-  ASSERT_TRUE(device.decodeAndExecuteCommand(stop.data(), static_cast<int>(stop.size())));
-  clock->advance(1.0);
-  EXPECT_FALSE(device.sample().moving);
+  EXPECT_NEAR(device.sample().velocity[ptz_action_server::PAN], 1.5, 1e-9);  // 100 % of 1.5 rad/s, not 20 %
+}
+
+TEST(SimPanTilt, V1CommandsCarryTheirTargetsAndSpeeds)
+{
+  for (WireFormat format : { WireFormat::V1_0, WireFormat::V1_1 })
+  {
+    SCOPED_TRACE(toString(format));
+    auto clock = std::make_shared<ptz_action_server::ManualClock>();
+    SimPanTilt device(ptz_action_server::SimDeviceConfig::defaults(), clock, format);
+    const Bytes go = commandFrame(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, format, -20.0f, 15.0f);
+    ASSERT_TRUE(device.decodeAndExecuteCommand(go.data(), static_cast<int>(go.size())));
+    clock->advance(3.0);
+    EXPECT_NEAR(device.sample().position[ptz_action_server::PAN], -20.0 * M_PI / 180.0, 1e-3);
+    EXPECT_NEAR(device.sample().position[ptz_action_server::TILT], 15.0 * M_PI / 180.0, 1e-3);
+    const Bytes move = commandFrame(PanTiltCommand::MOVE_PAN, format, -40.0f);
+    ASSERT_TRUE(device.decodeAndExecuteCommand(move.data(), static_cast<int>(move.size())));
+    clock->advance(1.0);
+    EXPECT_NEAR(device.sample().velocity[ptz_action_server::PAN], -0.6, 1e-9);  // 40 % of 1.5 rad/s, anticlockwise
+    const Bytes stop = commandFrame(PanTiltCommand::STOP, format);
+    ASSERT_TRUE(device.decodeAndExecuteCommand(stop.data(), static_cast<int>(stop.size())));
+    clock->advance(1.0);
+    EXPECT_FALSE(device.sample().moving);
+  }
 }

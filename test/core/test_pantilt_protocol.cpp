@@ -34,34 +34,34 @@ std::vector<Bytes> commandsReceived(const PanTiltEmulator& device)
   return commands;
 }
 
-Bytes setParamFrame(PanTiltParam id, float value, WireVersion version)
+Bytes setParamFrame(PanTiltParam id, float value, WireFormat format)
 {
   Bytes frame(SET_PARAM_SIZE);
   int size = 0;
-  PanTilt::encodeSetParamCommand(frame.data(), size, id, value, version);
+  PanTilt::encodeSetParamCommand(frame.data(), size, id, value, format);
   return frame;
 }
 
-Bytes commandFrame(PanTiltCommand id, WireVersion version, float arg1 = 0.0f, float arg2 = 0.0f)
+Bytes commandFrame(PanTiltCommand id, WireFormat format, float arg1 = 0.0f, float arg2 = 0.0f)
 {
-  Bytes frame(COMMAND_SIZE_V1_1);
+  Bytes frame(MAX_COMMAND_SIZE);
   int size = 0;
-  PanTilt::encodeCommand(frame.data(), size, id, version, arg1, arg2);
+  PanTilt::encodeCommand(frame.data(), size, id, format, arg1, arg2);
   frame.resize(static_cast<std::size_t>(size));
   return frame;
 }
 
-class PanTiltUdpTest : public ::testing::TestWithParam<WireVersion>
+class PanTiltUdpTest : public ::testing::TestWithParam<WireFormat>
 {
 protected:
   void SetUp() override
   {
     PanTiltEmulatorConfig device_config;
-    device_config.version = GetParam();
+    device_config.format = GetParam();
     device_config.state_period = 0.05;
     device_ = std::make_unique<PanTiltEmulator>(device_config);
     PanTiltConfig config;
-    config.pantilt.version = GetParam();
+    config.pantilt.format = GetParam();
     config.link.port = device_->endpoint().port();
     config.link.local_host = "127.0.0.1";
     config.link.local_port = localPort();
@@ -109,23 +109,23 @@ protected:
 
 TEST_P(PanTiltUdpTest, VelocityGoalsMoveAndStop)
 {
-  const WireVersion version = GetParam();
+  const WireFormat format = GetParam();
   device_->received().clear();
   backend_->moveAtVelocity({ -0.75, 0.0, 0.0 });
   ASSERT_TRUE(waitUntil([&] { return backend_->sample().velocity[PAN] < -0.7; }, 10.0))
       << backend_->sample().velocity[PAN];
   const std::vector<Bytes> commands = commandsReceived(*device_);
-  if (version == WireVersion::V1_1)
+  if (hasCommandArguments(format))
   {
-    EXPECT_EQ(commands.front(), commandFrame(PanTiltCommand::MOVE_PAN_TILT, version, -50.0f, 0.0f));
+    EXPECT_EQ(commands.front(), commandFrame(PanTiltCommand::MOVE_PAN_TILT, format, -50.0f, 0.0f));
   }
   else
   {
-    // 1.0: the speed as a motor-speed param, and a move towards the limit.
-    EXPECT_EQ(commands.front(), setParamFrame(PanTiltParam::PAN_MOTOR_SPEED, 50.0f, version));
-    EXPECT_EQ(commands[1], setParamFrame(PanTiltParam::PAN_ANGLE, -180.0f, version));
-    EXPECT_EQ(commands[2], setParamFrame(PanTiltParam::TILT_MOTOR_SPEED, 100.0f, version));  // tilt holds
-    EXPECT_EQ(commands[4], commandFrame(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, version));
+    // The seed's format: the speed as a motor-speed param, and a move towards the limit.
+    EXPECT_EQ(commands.front(), setParamFrame(PanTiltParam::PAN_MOTOR_SPEED, 50.0f, format));
+    EXPECT_EQ(commands[1], setParamFrame(PanTiltParam::PAN_ANGLE, -180.0f, format));
+    EXPECT_EQ(commands[2], setParamFrame(PanTiltParam::TILT_MOTOR_SPEED, 100.0f, format));  // tilt holds
+    EXPECT_EQ(commands[4], commandFrame(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, format));
   }
   backend_->stop();
   EXPECT_TRUE(waitUntil([&] { return !backend_->sample().moving; }, 10.0));
@@ -136,7 +136,7 @@ TEST_P(PanTiltUdpTest, VelocityGoalsMoveAndStop)
 
 TEST_P(PanTiltUdpTest, MalformedDatagramsAreCountedOnceAndDropped)
 {
-  const WireVersion version = GetParam();
+  const WireFormat format = GetParam();
   const UdpEndpoint backend_endpoint = UdpEndpoint::resolve("127.0.0.1", local_port_);
   UdpSocket stranger;
   stranger.bind("127.0.0.1", 0);
@@ -144,13 +144,13 @@ TEST_P(PanTiltUdpTest, MalformedDatagramsAreCountedOnceAndDropped)
   PanTiltParams params;
   Bytes valid(MAX_PARAMS_FRAME_SIZE);
   int size = 0;
-  params.encode(valid.data(), static_cast<int>(valid.size()), size, nullptr, version);
+  params.encode(valid.data(), static_cast<int>(valid.size()), size, nullptr, format);
   valid.resize(static_cast<std::size_t>(size));
   const Bytes bad_size(valid.begin(), valid.end() - 1);
   Bytes bad_header = valid;
   bad_header[0] = 0x00;
   Bytes bad_version = valid;
-  bad_version[2] ^= 0x01;
+  bad_version[2] = 0x07;  // no format's minor version (a minor byte of another format would be another format)
   Bytes bad_mask = valid;
   bad_mask[4] |= 0x01;
   const Bytes empty;
@@ -204,7 +204,10 @@ TEST_P(PanTiltUdpTest, MalformedDatagramsAreCountedOnceAndDropped)
   EXPECT_TRUE(waitForRest(0.2, 0.0));
 }
 
-INSTANTIATE_TEST_SUITE_P(BothWireVersions, PanTiltUdpTest, ::testing::Values(WireVersion::V1_0, WireVersion::V1_1),
-                         [](const ::testing::TestParamInfo<WireVersion>& info) {
-                           return info.param == WireVersion::V1_0 ? std::string("V1_0") : std::string("V1_1");
+INSTANTIATE_TEST_SUITE_P(EveryWireFormat, PanTiltUdpTest,
+                         ::testing::Values(WireFormat::SEED, WireFormat::V1_0, WireFormat::V1_1),
+                         [](const ::testing::TestParamInfo<WireFormat>& info) {
+                           return info.param == WireFormat::SEED ? std::string("Seed") :
+                                  info.param == WireFormat::V1_0 ? std::string("V1_0") :
+                                                                   std::string("V1_1");
                          });

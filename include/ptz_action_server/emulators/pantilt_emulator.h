@@ -7,7 +7,8 @@
  * - a params frame with an empty mask (`02 1 MINOR 00 00`) is the "state request": it changes nothing;
  * - every state_period the device also sends a full params frame, unasked, to the last client that sent a valid
  *   datagram.
- * Invalid datagrams are counted by reason and dropped without a reply.
+ * The device speaks one wire format, as a real one does. Invalid datagrams are counted by reason and dropped without
+ * a reply; so are frames of another PanTilt format (DecodeError::FOREIGN_FORMAT): they are never executed.
  */
 #pragma once
 
@@ -28,12 +29,12 @@
 namespace ptz_action_server
 {
 using cr::pantilt::SimPanTilt;
-using cr::pantilt::WireVersion;
+using cr::pantilt::WireFormat;
 struct PanTiltEmulatorConfig
 {
   std::string host = "127.0.0.1";
   std::uint16_t port = 0;  ///< 0: an ephemeral port (see endpoint())
-  WireVersion version = WireVersion::V1_0;
+  WireFormat format = WireFormat::SEED;
   double state_period = 0.1;  ///< s between unsolicited params frames (0: replies only)
   SimDeviceConfig device = defaultDevice();
 
@@ -44,12 +45,18 @@ struct PanTiltEmulatorConfig
 /// What the device has seen, for diagnostics and tests.
 struct PanTiltEmulatorCounters
 {
-  std::uint64_t commands_executed = 0;     ///< SET_PARAM and COMMAND frames decoded and executed
-  std::uint64_t commands_refused = 0;      ///< decoded, but the value or command was refused
-  std::uint64_t state_requests = 0;        ///< params frames received
-  std::array<std::uint64_t, 6> invalid{};  ///< indexed by DecodeError
+  std::uint64_t commands_executed = 0;  ///< SET_PARAM and COMMAND frames decoded and executed
+  std::uint64_t commands_refused = 0;   ///< decoded, but the value or command was refused
+  std::uint64_t state_requests = 0;     ///< params frames received
+  std::array<std::uint64_t, cr::pantilt::DECODE_ERROR_COUNT> invalid{};  ///< indexed by DecodeError
   std::uint64_t replies_sent = 0;
   std::uint64_t dropped_by_fault = 0;  ///< datagrams ignored while silent, replies dropped on purpose
+
+  /// Datagrams dropped for \p reason.
+  std::uint64_t dropped(cr::pantilt::DecodeError reason) const
+  {
+    return invalid[static_cast<std::size_t>(reason)];
+  }
 };
 
 /// One datagram as it reached the device.

@@ -20,14 +20,14 @@ namespace pantilt
  * Units on the PanTilt side: angles in degrees (pan -180..180, tilt -90..90, clockwise pan and upward tilt
  * positive), motor positions 0..65535 spread over the angle range, speeds in % of the model's max speed.
  * Setting PAN_ANGLE, TILT_ANGLE or the motor positions sets the target of the next GO_TO_* command; reading them
- * gives where the device is. The PAN_TILT_* params set both axes. In 1.1, GO_TO_* commands take their targets from
- * the command's arguments and MOVE_* take signed speeds in %. Thread-safe.
+ * gives where the device is. The PAN_TILT_* params set both axes. In v1.0 and v1.1, GO_TO_* commands take their
+ * targets from the command's arguments and MOVE_* take signed speeds in %. Thread-safe.
  */
 class SimPanTilt : public PanTilt
 {
 public:
   SimPanTilt(const ptz_action_server::SimDeviceConfig& config, std::shared_ptr<const ptz_action_server::Clock> clock,
-             WireVersion version = WireVersion::V1_0);
+             WireFormat format = WireFormat::SEED);
 
   bool setParam(PanTiltParam id, float value) override;
   float getParam(PanTiltParam id) const override;
@@ -35,9 +35,9 @@ public:
   bool executeCommand(PanTiltCommand id, float arg1 = 0.0f, float arg2 = 0.0f) override;
   bool decodeAndExecuteCommand(const std::uint8_t* data, int size) override;
 
-  WireVersion wireVersion() const
+  WireFormat wireFormat() const
   {
-    return version_;
+    return format_;
   }
   /// The model's state now, in the core's units (rad), for tests.
   ptz_action_server::PtzSample sample() const;
@@ -55,7 +55,7 @@ private:
   void setSpeed(ptz_action_server::Axis axis, float percent, ptz_action_server::TimePoint now);
 
   const std::shared_ptr<const ptz_action_server::Clock> clock_;
-  const WireVersion version_;
+  const WireFormat format_;
   mutable std::mutex mutex_;                         ///< guards everything below
   mutable ptz_action_server::SimDeviceModel model_;  ///< mutable: sampling applies lagged commands
   double target_pan_ = 0.0;                          ///< deg, for the next GO_TO_* command

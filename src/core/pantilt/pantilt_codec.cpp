@@ -19,8 +19,8 @@ constexpr const char* LIBRARY_VERSION = "1.0.0";
 struct ParamId
 {
   PanTiltParam param;
-  std::int32_t id_v1_0;  ///< 0: not in 1.0
-  std::int32_t id_v1_1;  ///< 0: not in 1.1
+  std::int32_t id_seed;  ///< 0: not in the seed's format
+  std::int32_t id_v1;    ///< 0: not in v1.0 and v1.1
 };
 
 const std::array<ParamId, 14> PARAM_IDS = { {
@@ -40,33 +40,106 @@ const std::array<ParamId, 14> PARAM_IDS = { {
     { PanTiltParam::CUSTOM_3, 0, 11 },
 } };
 
-constexpr std::int32_t LAST_COMMAND_V1_0 = static_cast<std::int32_t>(PanTiltCommand::GO_TO_HOME);
-constexpr std::int32_t LAST_COMMAND_V1_1 = static_cast<std::int32_t>(PanTiltCommand::MOVE_PAN_TILT);
+constexpr std::int32_t LAST_COMMAND_SEED = static_cast<std::int32_t>(PanTiltCommand::GO_TO_HOME);
+constexpr std::int32_t LAST_COMMAND_V1 = static_cast<std::int32_t>(PanTiltCommand::MOVE_PAN_TILT);
 
-int commandSize(WireVersion version)
+std::int32_t idIn(const ParamId& entry, WireFormat format)
 {
-  return version == WireVersion::V1_0 ? COMMAND_SIZE_V1_0 : COMMAND_SIZE_V1_1;
+  return format == WireFormat::SEED ? entry.id_seed : entry.id_v1;
+}
+
+/// A decoded SET_PARAM or COMMAND.
+struct DecodedCommand
+{
+  int kind = -1;  ///< 0 COMMAND, 1 SET_PARAM, -1 none
+  PanTiltParam param{};
+  PanTiltCommand command{};
+  float value = 0.0f;
+  float second_value = 0.0f;
+};
+
+/// Decodes \p data as a frame of \p format alone; NONE and \p decoded filled, or why not.
+DecodeError decodeCommandAs(const std::uint8_t* data, int size, WireFormat format, DecodedCommand& decoded)
+{
+  if (data == nullptr || size < 3)
+  {
+    return DecodeError::BAD_SIZE;
+  }
+  if (data[0] != COMMAND_HEADER && data[0] != SET_PARAM_HEADER)
+  {
+    return DecodeError::BAD_HEADER;
+  }
+  if (!versionMatches(data, format))
+  {
+    return DecodeError::BAD_VERSION;
+  }
+  const bool is_command = data[0] == COMMAND_HEADER;
+  if (size != (is_command ? commandSize(format) : SET_PARAM_SIZE))
+  {
+    return DecodeError::BAD_SIZE;
+  }
+  const std::int32_t id = readInt32(data + 3);
+  if (is_command)
+  {
+    const auto command = static_cast<PanTiltCommand>(id);
+    if (!PanTilt::commandExists(command, format))
+    {
+      return DecodeError::BAD_ID;
+    }
+    decoded.kind = 0;
+    decoded.command = command;
+    if (hasCommandArguments(format))
+    {
+      decoded.value = readFloat(data + 7);
+      decoded.second_value = readFloat(data + 11);
+    }
+    return DecodeError::NONE;
+  }
+  if (!PanTilt::paramFromWireId(id, format, decoded.param))
+  {
+    return DecodeError::BAD_ID;
+  }
+  decoded.kind = 1;
+  decoded.value = readFloat(data + 7);
+  return DecodeError::NONE;
 }
 }  // namespace
 
-bool parseWireVersion(const std::string& text, WireVersion& version)
+bool parseWireFormat(const std::string& text, WireFormat& format)
 {
-  if (text == "1.0")
+  for (WireFormat candidate : ALL_WIRE_FORMATS)
   {
-    version = WireVersion::V1_0;
-    return true;
-  }
-  if (text == "1.1")
-  {
-    version = WireVersion::V1_1;
-    return true;
+    if (text == toString(candidate))
+    {
+      format = candidate;
+      return true;
+    }
   }
   return false;
 }
 
-const char* toString(WireVersion version)
+const char* toString(WireFormat format)
 {
-  return version == WireVersion::V1_0 ? "1.0" : "1.1";
+  switch (format)
+  {
+    case WireFormat::SEED:
+      return "seed";
+    case WireFormat::V1_0:
+      return "v1.0";
+    case WireFormat::V1_1:
+      return "v1.1";
+  }
+  return "?";
+}
+
+bool hasCommandArguments(WireFormat format)
+{
+  return format != WireFormat::SEED;
+}
+
+int commandSize(WireFormat format)
+{
+  return hasCommandArguments(format) ? COMMAND_SIZE_WITH_ARGUMENTS : COMMAND_SIZE_SEED;
 }
 
 const char* toString(DecodeError error)
@@ -85,6 +158,10 @@ const char* toString(DecodeError error)
       return "bad id";
     case DecodeError::BAD_MASK:
       return "bad mask";
+    case DecodeError::BAD_VALUE:
+      return "bad value";
+    case DecodeError::FOREIGN_FORMAT:
+      return "foreign format";
   }
   return "?";
 }
@@ -98,24 +175,23 @@ std::string PanTilt::getVersion()
   return LIBRARY_VERSION;
 }
 
-std::int32_t PanTilt::wireId(PanTiltParam param, WireVersion version)
+std::int32_t PanTilt::wireId(PanTiltParam param, WireFormat format)
 {
   for (const ParamId& entry : PARAM_IDS)
   {
     if (entry.param == param)
     {
-      return version == WireVersion::V1_0 ? entry.id_v1_0 : entry.id_v1_1;
+      return idIn(entry, format);
     }
   }
   return 0;
 }
 
-bool PanTilt::paramFromWireId(std::int32_t id, WireVersion version, PanTiltParam& param)
+bool PanTilt::paramFromWireId(std::int32_t id, WireFormat format, PanTiltParam& param)
 {
   for (const ParamId& entry : PARAM_IDS)
   {
-    const std::int32_t entry_id = version == WireVersion::V1_0 ? entry.id_v1_0 : entry.id_v1_1;
-    if (entry_id != 0 && entry_id == id)
+    if (idIn(entry, format) != 0 && idIn(entry, format) == id)
     {
       param = entry.param;
       return true;
@@ -124,110 +200,75 @@ bool PanTilt::paramFromWireId(std::int32_t id, WireVersion version, PanTiltParam
   return false;
 }
 
-bool PanTilt::commandExists(PanTiltCommand command, WireVersion version)
+bool PanTilt::commandExists(PanTiltCommand command, WireFormat format)
 {
   const auto id = static_cast<std::int32_t>(command);
-  return id >= 1 && id <= (version == WireVersion::V1_0 ? LAST_COMMAND_V1_0 : LAST_COMMAND_V1_1);
+  return id >= 1 && id <= (format == WireFormat::SEED ? LAST_COMMAND_SEED : LAST_COMMAND_V1);
 }
 
-bool PanTilt::encodeSetParamCommand(std::uint8_t* data, int& size, PanTiltParam id, float value, WireVersion version)
+bool PanTilt::encodeSetParamCommand(std::uint8_t* data, int& size, PanTiltParam id, float value, WireFormat format)
 {
   size = 0;
-  const std::int32_t wire_id = wireId(id, version);
+  const std::int32_t wire_id = wireId(id, format);
   if (data == nullptr || wire_id == 0)
   {
     return false;
   }
-  writeHeader(data, SET_PARAM_HEADER, version);
+  writeHeader(data, SET_PARAM_HEADER, format);
   writeInt32(data + 3, wire_id);
   writeFloat(data + 7, value);
   size = SET_PARAM_SIZE;
   return true;
 }
 
-bool PanTilt::encodeCommand(std::uint8_t* data, int& size, PanTiltCommand id, WireVersion version, float arg1,
-                            float arg2)
+bool PanTilt::encodeCommand(std::uint8_t* data, int& size, PanTiltCommand id, WireFormat format, float arg1, float arg2)
 {
   size = 0;
-  if (data == nullptr || !commandExists(id, version))
+  if (data == nullptr || !commandExists(id, format))
   {
     return false;
   }
-  writeHeader(data, COMMAND_HEADER, version);
+  writeHeader(data, COMMAND_HEADER, format);
   writeInt32(data + 3, static_cast<std::int32_t>(id));
-  if (version == WireVersion::V1_1)
+  if (hasCommandArguments(format))
   {
     writeFloat(data + 7, arg1);
     writeFloat(data + 11, arg2);
   }
-  size = commandSize(version);
+  size = commandSize(format);
   return true;
 }
 
 int PanTilt::decodeCommand(const std::uint8_t* data, int size, PanTiltParam& paramId, PanTiltCommand& commandId,
-                           float& value, WireVersion version, float* secondValue, DecodeError* error)
+                           float& value, WireFormat format, float* secondValue, DecodeError* error)
 {
-  paramId = PanTiltParam{};
-  commandId = PanTiltCommand{};
-  value = 0.0f;
-  if (secondValue)
+  DecodedCommand decoded;
+  DecodeError result = decodeCommandAs(data, size, format, decoded);
+  if (result != DecodeError::NONE)
   {
-    *secondValue = 0.0f;
-  }
-  DecodeError ignored = DecodeError::NONE;
-  DecodeError& result = error ? *error : ignored;
-  result = DecodeError::NONE;
-
-  if (data == nullptr || size < 3)
-  {
-    result = DecodeError::BAD_SIZE;
-    return -1;
-  }
-  if (data[0] != COMMAND_HEADER && data[0] != SET_PARAM_HEADER)
-  {
-    result = DecodeError::BAD_HEADER;
-    return -1;
-  }
-  if (!versionMatches(data, version))
-  {
-    result = DecodeError::BAD_VERSION;
-    return -1;
-  }
-  const bool is_command = data[0] == COMMAND_HEADER;
-  if (size != (is_command ? commandSize(version) : SET_PARAM_SIZE))
-  {
-    result = DecodeError::BAD_SIZE;
-    return -1;
-  }
-  const std::int32_t id = readInt32(data + 3);
-  if (is_command)
-  {
-    const auto command = static_cast<PanTiltCommand>(id);
-    if (!commandExists(command, version))
+    decoded = DecodedCommand{};
+    for (WireFormat other : ALL_WIRE_FORMATS)
     {
-      result = DecodeError::BAD_ID;
-      return -1;
-    }
-    commandId = command;
-    if (version == WireVersion::V1_1)
-    {
-      value = readFloat(data + 7);
-      if (secondValue)
+      DecodedCommand ignored;
+      if (other != format && decodeCommandAs(data, size, other, ignored) == DecodeError::NONE)
       {
-        *secondValue = readFloat(data + 11);
+        result = DecodeError::FOREIGN_FORMAT;
+        break;
       }
     }
-    return 0;
   }
-  PanTiltParam param{};
-  if (!paramFromWireId(id, version, param))
+  paramId = decoded.param;
+  commandId = decoded.command;
+  value = decoded.value;
+  if (secondValue)
   {
-    result = DecodeError::BAD_ID;
-    return -1;
+    *secondValue = decoded.second_value;
   }
-  paramId = param;
-  value = readFloat(data + 7);
-  return 1;
+  if (error)
+  {
+    *error = result;
+  }
+  return decoded.kind;
 }
 
 }  // namespace pantilt

@@ -1,5 +1,6 @@
 #include "ptz_action_server/core/pantilt/pantilt_codec.h"
 
+#include <cmath>
 #include <cstring>
 
 #include "pantilt_fields.h"
@@ -13,29 +14,29 @@ using namespace detail;
 
 namespace
 {
-/// Calls \p visit(index, field) for each field of \p version's frame.
+/// Calls \p visit(index, field) for each field of \p format's frame, in mask-bit order.
 template <class Visit>
-void forEachWireField(WireVersion version, Visit visit)
+void forEachWireField(WireFormat format, Visit visit)
 {
-  if (version == WireVersion::V1_0)
+  if (format == WireFormat::SEED)
   {
-    for (std::size_t index = 0; index < FIELDS_V1_0.size(); ++index)
+    for (std::size_t index = 0; index < FIELDS_SEED.size(); ++index)
     {
-      visit(index, *FIELDS_V1_0[index]);
+      visit(index, *FIELDS_SEED[index]);
     }
   }
   else
   {
-    for (std::size_t index = 0; index < FIELDS_V1_1.size(); ++index)
+    for (std::size_t index = 0; index < FIELDS_V1.size(); ++index)
     {
-      visit(index, *FIELDS_V1_1[index]);
+      visit(index, *FIELDS_V1[index]);
     }
   }
 }
 
-std::size_t wireFieldCount(WireVersion version)
+std::size_t wireFieldCount(WireFormat format)
 {
-  return version == WireVersion::V1_0 ? FIELDS_V1_0.size() : FIELDS_V1_1.size();
+  return format == WireFormat::SEED ? FIELDS_SEED.size() : FIELDS_V1.size();
 }
 
 int fieldSize(FieldType type)
@@ -46,6 +47,87 @@ int fieldSize(FieldType type)
 bool maskBit(const std::uint8_t* mask, std::size_t index)
 {
   return (mask[index / 8] & (0x80u >> (index % 8))) != 0;
+}
+
+/// True if the bytes at \p in hold a value \p field can have (see PanTiltParams::decode).
+bool plausible(const Field& field, const std::uint8_t* in)
+{
+  switch (field.type)
+  {
+    case FieldType::INT32: {
+      const std::int32_t value = readInt32(in);
+      return value >= 0 && static_cast<float>(value) <= field.limit;
+    }
+    case FieldType::FLOAT32: {
+      const float value = readFloat(in);
+      if (std::isinf(field.limit))
+      {
+        return true;
+      }
+      // A small integer read as a float is subnormal: the sign of a field of another format.
+      return std::fpclassify(value) != FP_SUBNORMAL && std::abs(value) <= field.limit;
+    }
+    case FieldType::FLAG:
+      return in[0] <= 1;
+  }
+  return false;
+}
+
+/// Decodes \p data as a params frame of \p format alone: NONE and \p decoded filled, or why not.
+DecodeError decodeParamsAs(const std::uint8_t* data, int dataSize, WireFormat format, PanTiltParams& decoded)
+{
+  if (data == nullptr || dataSize < PARAMS_HEADER_SIZE)
+  {
+    return DecodeError::BAD_SIZE;
+  }
+  if (data[0] != PARAMS_HEADER)
+  {
+    return DecodeError::BAD_HEADER;
+  }
+  if (!versionMatches(data, format))
+  {
+    return DecodeError::BAD_VERSION;
+  }
+  const std::uint8_t* mask = data + 3;
+  for (std::size_t bit = wireFieldCount(format); bit < 16; ++bit)
+  {
+    if (maskBit(mask, bit))
+    {
+      return DecodeError::BAD_MASK;
+    }
+  }
+  int expected = PARAMS_HEADER_SIZE;
+  forEachWireField(format, [&](std::size_t index, const Field& field) {
+    expected += maskBit(mask, index) ? fieldSize(field.type) : 0;
+  });
+  if (dataSize != expected)
+  {
+    return DecodeError::BAD_SIZE;
+  }
+  bool all_plausible = true;
+  decoded = PanTiltParams();  // fields absent from the mask, and fields of the other formats, decode as 0
+  int offset = PARAMS_HEADER_SIZE;
+  forEachWireField(format, [&](std::size_t index, const Field& field) {
+    if (!maskBit(mask, index))
+    {
+      return;
+    }
+    all_plausible = all_plausible && plausible(field, data + offset);
+    switch (field.type)
+    {
+      case FieldType::INT32:
+        decoded.*field.int_member = readInt32(data + offset);
+        break;
+      case FieldType::FLOAT32:
+        decoded.*field.float_member = readFloat(data + offset);
+        break;
+      case FieldType::FLAG:
+        decoded.*field.flag_member = data[offset] != 0;
+        break;
+    }
+    offset += fieldSize(field.type);
+  });
+  return all_plausible ? DecodeError::NONE : DecodeError::BAD_VALUE;
 }
 }  // namespace
 
@@ -79,12 +161,12 @@ bool PanTiltParams::operator==(const PanTiltParams& other) const
 }
 
 bool PanTiltParams::encode(std::uint8_t* data, int bufferSize, int& size, const PanTiltParamsMask* mask,
-                           WireVersion version) const
+                           WireFormat format) const
 {
   const PanTiltParamsMask all;
   const PanTiltParamsMask& selected = mask ? *mask : all;
   int needed = PARAMS_HEADER_SIZE;
-  forEachWireField(version, [&](std::size_t, const Field& field) {
+  forEachWireField(format, [&](std::size_t, const Field& field) {
     needed += selected.*field.mask_member ? fieldSize(field.type) : 0;
   });
   size = 0;
@@ -92,11 +174,11 @@ bool PanTiltParams::encode(std::uint8_t* data, int bufferSize, int& size, const 
   {
     return false;
   }
-  writeHeader(data, PARAMS_HEADER, version);
+  writeHeader(data, PARAMS_HEADER, format);
   data[3] = 0;
   data[4] = 0;
   int offset = PARAMS_HEADER_SIZE;
-  forEachWireField(version, [&](std::size_t index, const Field& field) {
+  forEachWireField(format, [&](std::size_t index, const Field& field) {
     if (!(selected.*field.mask_member))
     {
       return;
@@ -120,65 +202,30 @@ bool PanTiltParams::encode(std::uint8_t* data, int bufferSize, int& size, const 
   return true;
 }
 
-bool PanTiltParams::decode(const std::uint8_t* data, int dataSize, WireVersion version, DecodeError* error)
+bool PanTiltParams::decode(const std::uint8_t* data, int dataSize, WireFormat format, DecodeError* error)
 {
-  DecodeError ignored = DecodeError::NONE;
-  DecodeError& result = error ? *error : ignored;
-  result = DecodeError::NONE;
-  if (data == nullptr || dataSize < PARAMS_HEADER_SIZE)
+  PanTiltParams decoded;
+  DecodeError result = decodeParamsAs(data, dataSize, format, decoded);
+  if (result != DecodeError::NONE)
   {
-    result = DecodeError::BAD_SIZE;
-    return false;
-  }
-  if (data[0] != PARAMS_HEADER)
-  {
-    result = DecodeError::BAD_HEADER;
-    return false;
-  }
-  if (!versionMatches(data, version))
-  {
-    result = DecodeError::BAD_VERSION;
-    return false;
-  }
-  const std::uint8_t* mask = data + 3;
-  for (std::size_t bit = wireFieldCount(version); bit < 16; ++bit)
-  {
-    if (maskBit(mask, bit))
+    for (WireFormat other : ALL_WIRE_FORMATS)
     {
-      result = DecodeError::BAD_MASK;
-      return false;
+      PanTiltParams ignored;
+      if (other != format && decodeParamsAs(data, dataSize, other, ignored) == DecodeError::NONE)
+      {
+        result = DecodeError::FOREIGN_FORMAT;
+        break;
+      }
     }
   }
-  int expected = PARAMS_HEADER_SIZE;
-  forEachWireField(version, [&](std::size_t index, const Field& field) {
-    expected += maskBit(mask, index) ? fieldSize(field.type) : 0;
-  });
-  if (dataSize != expected)
+  if (error)
   {
-    result = DecodeError::BAD_SIZE;
+    *error = result;
+  }
+  if (result != DecodeError::NONE)
+  {
     return false;
   }
-  PanTiltParams decoded;  // fields absent from the mask, and fields of the other format, decode as 0
-  int offset = PARAMS_HEADER_SIZE;
-  forEachWireField(version, [&](std::size_t index, const Field& field) {
-    if (!maskBit(mask, index))
-    {
-      return;
-    }
-    switch (field.type)
-    {
-      case FieldType::INT32:
-        decoded.*field.int_member = readInt32(data + offset);
-        break;
-      case FieldType::FLOAT32:
-        decoded.*field.float_member = readFloat(data + offset);
-        break;
-      case FieldType::FLAG:
-        decoded.*field.flag_member = data[offset] != 0;
-        break;
-    }
-    offset += fieldSize(field.type);
-  });
   *this = decoded;
   return true;
 }

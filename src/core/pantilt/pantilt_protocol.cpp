@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
 
 namespace ptz_action_server
@@ -12,7 +13,6 @@ using cr::pantilt::DecodeError;
 using cr::pantilt::PanTilt;
 using cr::pantilt::PanTiltCommand;
 using cr::pantilt::PanTiltParam;
-using cr::pantilt::WireVersion;
 }  // namespace
 
 PanTiltProtocol::PanTiltProtocol(const PanTiltSettings& settings, DeviceSession& session)
@@ -48,7 +48,7 @@ void PanTiltProtocol::onReceived(const std::uint8_t* data, std::size_t size)
   cr::pantilt::PanTiltParams params;
   // Longer than any params frame: a bad size, whatever its first bytes say.
   const bool oversized = size > static_cast<std::size_t>(cr::pantilt::MAX_PARAMS_FRAME_SIZE);
-  if (oversized || !params.decode(data, static_cast<int>(size), settings_.version, &error))
+  if (oversized || !params.decode(data, static_cast<int>(size), settings_.format, &error))
   {
     switch (oversized ? DecodeError::BAD_SIZE : error)
     {
@@ -60,6 +60,19 @@ void PanTiltProtocol::onReceived(const std::uint8_t* data, std::size_t size)
         break;
       case DecodeError::BAD_MASK:
         ++counters_.bad_mask;
+        break;
+      case DecodeError::BAD_VALUE:
+        ++counters_.bad_value;
+        break;
+      case DecodeError::FOREIGN_FORMAT:
+        ++counters_.foreign_format_frames;
+        if (!heard_)
+        {
+          // The device speaks another format: waiting for the start-up timeout would only hide why.
+          session_.failStartup(formatText("it answers in another PanTilt wire format than the configured %s: set "
+                                          "format to the device's (seed, v1.0 or v1.1)",
+                                          cr::pantilt::toString(settings_.format)));
+        }
         break;
       default:
         ++counters_.bad_size;
@@ -88,7 +101,7 @@ void PanTiltProtocol::poll()
 void PanTiltProtocol::goTo(const AxisValues& position)
 {
   sendSpeeds();
-  if (settings_.version == WireVersion::V1_1)
+  if (cr::pantilt::hasCommandArguments(settings_.format))
   {
     sendCommand(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, toDegrees(position[PAN]), toDegrees(position[TILT]));
     return;
@@ -102,12 +115,12 @@ void PanTiltProtocol::moveAtVelocity(const AxisValues& velocity)
 {
   const double percent[] = { 100.0 * velocity[PAN] / settings_.axes[PAN].max_speed,
                              100.0 * velocity[TILT] / settings_.axes[TILT].max_speed };
-  if (settings_.version == WireVersion::V1_1)
+  if (cr::pantilt::hasCommandArguments(settings_.format))
   {
     sendCommand(PanTiltCommand::MOVE_PAN_TILT, percent[PAN], percent[TILT]);
     return;
   }
-  // 1.0 has no velocity command: move towards the limit at that speed. An axis at 0 holds where it is.
+  // The seed's format has no velocity command: move towards the limit at that speed. An axis at 0 holds where it is.
   const PtzSample current = session_.estimate();
   const PanTiltParam speed_param[] = { PanTiltParam::PAN_MOTOR_SPEED, PanTiltParam::TILT_MOTOR_SPEED };
   const PanTiltParam angle_param[] = { PanTiltParam::PAN_ANGLE, PanTiltParam::TILT_ANGLE };
@@ -137,19 +150,21 @@ void PanTiltProtocol::hold()
 
 void PanTiltProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 {
-  values.emplace_back("wire version", cr::pantilt::toString(settings_.version));
+  values.emplace_back("format", cr::pantilt::toString(settings_.format));
   addCounts(values, { { "frames ok", counters_.frames_ok },
                       { "dropped: bad size", counters_.bad_size },
                       { "dropped: bad header", counters_.bad_header },
                       { "dropped: bad version", counters_.bad_version },
-                      { "dropped: bad mask", counters_.bad_mask } });
+                      { "dropped: bad mask", counters_.bad_mask },
+                      { "dropped: bad value", counters_.bad_value },
+                      { "dropped: foreign format", counters_.foreign_format_frames } });
 }
 
 void PanTiltProtocol::sendSetParam(PanTiltParam id, double value)
 {
   std::uint8_t frame[cr::pantilt::SET_PARAM_SIZE];
   int size = 0;
-  if (PanTilt::encodeSetParamCommand(frame, size, id, static_cast<float>(value), settings_.version))
+  if (PanTilt::encodeSetParamCommand(frame, size, id, static_cast<float>(value), settings_.format))
   {
     session_.write(frame, static_cast<std::size_t>(size));
   }
@@ -157,9 +172,9 @@ void PanTiltProtocol::sendSetParam(PanTiltParam id, double value)
 
 void PanTiltProtocol::sendCommand(PanTiltCommand id, double arg1, double arg2)
 {
-  std::uint8_t frame[cr::pantilt::COMMAND_SIZE_V1_1];
+  std::uint8_t frame[cr::pantilt::MAX_COMMAND_SIZE];
   int size = 0;
-  if (PanTilt::encodeCommand(frame, size, id, settings_.version, static_cast<float>(arg1), static_cast<float>(arg2)))
+  if (PanTilt::encodeCommand(frame, size, id, settings_.format, static_cast<float>(arg1), static_cast<float>(arg2)))
   {
     session_.write(frame, static_cast<std::size_t>(size));
   }
@@ -177,7 +192,7 @@ void PanTiltProtocol::sendStateRequest()
   const cr::pantilt::PanTiltParamsMask empty = cr::pantilt::PanTiltParamsMask::none();
   std::uint8_t frame[cr::pantilt::PARAMS_HEADER_SIZE];
   int size = 0;
-  cr::pantilt::PanTiltParams().encode(frame, sizeof(frame), size, &empty, settings_.version);
+  cr::pantilt::PanTiltParams().encode(frame, sizeof(frame), size, &empty, settings_.format);
   last_request_at_ = session_.now();
   session_.write(frame, static_cast<std::size_t>(size));
 }

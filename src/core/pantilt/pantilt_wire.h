@@ -18,9 +18,10 @@ namespace detail
 {
 inline constexpr std::uint8_t MAJOR_VERSION = 1;
 
-inline std::uint8_t minorVersion(WireVersion version)
+/// The minor version byte: 0 in the seed's format and in v1.0 alike.
+inline std::uint8_t minorVersion(WireFormat format)
 {
-  return version == WireVersion::V1_0 ? 0 : 1;
+  return format == WireFormat::V1_1 ? 1 : 0;
 }
 
 inline void writeInt32(std::uint8_t* out, std::int32_t value)
@@ -43,16 +44,16 @@ inline float readFloat(const std::uint8_t* in)
   return ptz_action_server::floatFromBits(ptz_action_server::getLittleEndian<std::uint32_t>(in));
 }
 
-inline void writeHeader(std::uint8_t* data, std::uint8_t type, WireVersion version)
+inline void writeHeader(std::uint8_t* data, std::uint8_t type, WireFormat format)
 {
   data[0] = type;
   data[1] = MAJOR_VERSION;
-  data[2] = minorVersion(version);
+  data[2] = minorVersion(format);
 }
 
-inline bool versionMatches(const std::uint8_t* data, WireVersion version)
+inline bool versionMatches(const std::uint8_t* data, WireFormat format)
 {
-  return data[1] == MAJOR_VERSION && data[2] == minorVersion(version);
+  return data[1] == MAJOR_VERSION && data[2] == minorVersion(format);
 }
 }  // namespace detail
 }  // namespace pantilt

@@ -1,5 +1,8 @@
 #include "device_fixtures.h"
 
+#include <gtest/gtest.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
@@ -18,6 +21,12 @@ std::string hex(const std::vector<std::uint8_t>& bytes)
     text << digits;
   }
   return text.str();
+}
+
+std::string uniqueLink(const char* name)
+{
+  static int counter = 0;
+  return ::testing::TempDir() + "ptz_" + name + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
 }
 
 std::vector<DeviceCommand> withoutQueries(const std::vector<DeviceCommand>& commands)
@@ -52,6 +61,8 @@ std::vector<FixtureMaker> allDeviceFixtures()
   fixtures.insert(fixtures.end(), network.begin(), network.end());
   const std::vector<FixtureMaker> visca = viscaDeviceFixtures();
   fixtures.insert(fixtures.end(), visca.begin(), visca.end());
+  const std::vector<FixtureMaker> mavlink = mavlinkDeviceFixtures();
+  fixtures.insert(fixtures.end(), mavlink.begin(), mavlink.end());
   return fixtures;
 }
 

@@ -16,17 +16,22 @@ namespace ptz_action_server
 /// \p bytes as upper-case hex pairs, each followed by a space.
 std::string hex(const std::vector<std::uint8_t>& bytes);
 
+/// A path for an emulator's pseudo-terminal link, unique in this process.
+std::string uniqueLink(const char* name);
+
 /// \p commands without the state polls.
 std::vector<DeviceCommand> withoutQueries(const std::vector<DeviceCommand>& commands);
 
 /// FLIR (serial, TCP) and Pelco-D (serial in both tilt encodings, TCP).
 std::vector<FixtureMaker> lineDeviceFixtures();
 
-/// PanTilt over UDP (both wire formats) and DigiView (TCP, UDP; formats 0.5 and 1.0).
+/// PanTilt over UDP (every wire format) and DigiView (TCP, UDP; formats 0.5 and 1.0).
 std::vector<FixtureMaker> networkDeviceFixtures();
 
 /// VISCA on a pseudo-terminal, raw over TCP, over UDP raw and with Sony's VISCA over IP header.
 std::vector<FixtureMaker> viscaDeviceFixtures();
+/// The MAVLink gimbal manager over UDP and a serial line.
+std::vector<FixtureMaker> mavlinkDeviceFixtures();
 
 /// s without a state before a link is lost: generous, a busy test machine may starve the I/O threads for a while
 /// (the deadline cases read it back).

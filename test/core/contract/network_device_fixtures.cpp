@@ -21,15 +21,15 @@ using Kind = DeviceCommand::Kind;
 class PanTiltFixture : public DeviceFixture
 {
 public:
-  explicit PanTiltFixture(cr::pantilt::WireVersion version)
+  explicit PanTiltFixture(cr::pantilt::WireFormat format)
   {
-    emulator_config_.version = version;
+    emulator_config_.format = format;
     emulator_config_.state_period = 0.05;
     emulator_ = std::make_unique<PanTiltEmulator>(emulator_config_);
     emulator_config_.port = emulator_->endpoint().port();  // a restart takes the same port
     config_.link.port = emulator_config_.port;
     config_.link.local_host = "127.0.0.1";
-    config_.pantilt.version = version;
+    config_.pantilt.format = format;
     config_.session.state_timeout = TEST_STATE_TIMEOUT;
   }
 
@@ -50,7 +50,7 @@ public:
       const int decoded = datagram.bytes.empty() || datagram.bytes[0] == PARAMS_HEADER ?
                               -1 :
                               PanTilt::decodeCommand(datagram.bytes.data(), static_cast<int>(datagram.bytes.size()),
-                                                     param, command, value, emulator_config_.version);
+                                                     param, command, value, emulator_config_.format);
       if (decoded < 0)
       {
         kind = Kind::QUERY;  // a state request (or garbage)
@@ -101,23 +101,23 @@ public:
   void expectGoalCommands(const std::vector<DeviceCommand>& commands, const AxisValues& target) const override
   {
     using namespace cr::pantilt;
-    const WireVersion version = emulator_config_.version;
-    auto set = [version](PanTiltParam id, double value) {
+    const WireFormat format = emulator_config_.format;
+    auto set = [format](PanTiltParam id, double value) {
       std::vector<std::uint8_t> frame(SET_PARAM_SIZE);
       int size = 0;
-      PanTilt::encodeSetParamCommand(frame.data(), size, id, static_cast<float>(value), version);
+      PanTilt::encodeSetParamCommand(frame.data(), size, id, static_cast<float>(value), format);
       return hex(frame);
     };
-    auto command = [version](PanTiltCommand id, double arg1 = 0.0, double arg2 = 0.0) {
-      std::vector<std::uint8_t> frame(COMMAND_SIZE_V1_1);
+    auto command = [format](PanTiltCommand id, double arg1 = 0.0, double arg2 = 0.0) {
+      std::vector<std::uint8_t> frame(MAX_COMMAND_SIZE);
       int size = 0;
-      PanTilt::encodeCommand(frame.data(), size, id, version, static_cast<float>(arg1), static_cast<float>(arg2));
+      PanTilt::encodeCommand(frame.data(), size, id, format, static_cast<float>(arg1), static_cast<float>(arg2));
       frame.resize(static_cast<std::size_t>(size));
       return hex(frame);
     };
     std::vector<std::string> expected = { set(PanTiltParam::PAN_MOTOR_SPEED, 100.0),
                                           set(PanTiltParam::TILT_MOTOR_SPEED, 100.0) };
-    if (version == WireVersion::V1_0)
+    if (format == WireFormat::SEED)
     {
       expected.push_back(set(PanTiltParam::PAN_ANGLE, toDegrees(target[PAN])));
       expected.push_back(set(PanTiltParam::TILT_ANGLE, toDegrees(target[TILT])));
@@ -293,8 +293,9 @@ private:
 std::vector<FixtureMaker> networkDeviceFixtures()
 {
   return {
-    { "PanTiltUdpV1_0", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireVersion::V1_0); } },
-    { "PanTiltUdpV1_1", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireVersion::V1_1); } },
+    { "PanTiltUdpSeed", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireFormat::SEED); } },
+    { "PanTiltUdpV1_0", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireFormat::V1_0); } },
+    { "PanTiltUdpV1_1", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireFormat::V1_1); } },
     { "DigiViewTcpV0_5", [] { return std::make_unique<DigiViewFixture>(LinkKind::TCP, digiview::Format::V0_5); } },
     { "DigiViewUdpV0_5", [] { return std::make_unique<DigiViewFixture>(LinkKind::UDP, digiview::Format::V0_5); } },
     { "DigiViewTcpV1_0", [] { return std::make_unique<DigiViewFixture>(LinkKind::TCP, digiview::Format::V1_0); } },

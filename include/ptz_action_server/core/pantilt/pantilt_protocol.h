@@ -16,7 +16,7 @@ namespace ptz_action_server
 /// What only the PanTilt protocol needs to know.
 struct PanTiltSettings
 {
-  cr::pantilt::WireVersion version = cr::pantilt::WireVersion::V1_0;
+  cr::pantilt::WireFormat format = cr::pantilt::WireFormat::SEED;
   double state_request_period = 0.2;  ///< s between state requests while no frames arrive
   double pan_speed = 100.0;           ///< % of the max speed for position goals
   double tilt_speed = 100.0;          ///< %
@@ -48,21 +48,24 @@ struct PanTiltCounters
   Counter bad_header;
   Counter bad_version;
   Counter bad_mask;
+  Counter bad_value;              ///< a field no device of the format could report (NaN angles, subnormals, ...)
+  Counter foreign_format_frames;  ///< a valid frame of another PanTilt format: never taken as state
 
   std::uint64_t dropped() const
   {
-    return bad_size + bad_header + bad_version + bad_mask;
+    return bad_size + bad_header + bad_version + bad_mask + bad_value + foreign_format_frames;
   }
 };
 
 /**
  * \brief PanTilt over a DeviceSession on UDP.
  *
- * Goals become SET_PARAM (speeds, angles in degrees) + COMMAND GO_TO_PAN_TILT_ANGLE frames (1.1: one COMMAND with
- * the angles as arguments); velocity goals become MOVE_PAN_TILT in 1.1 and, in 1.0, which has no velocity command,
- * a speed setting plus a move towards the limit; cancel becomes STOP. State comes from the device's params frames
- * (see PanTiltUdpDevice for the reporting rules), asked for while the device is quiet. After a loss the device is
- * held with STOP and the speeds are set again.
+ * Goals become SET_PARAM (speeds, angles in degrees) + COMMAND GO_TO_PAN_TILT_ANGLE frames (v1.0 and v1.1: one
+ * COMMAND with the angles as arguments); velocity goals become MOVE_PAN_TILT in v1.x and, in the seed's format, which
+ * has no velocity command, a speed setting plus a move towards the limit; cancel becomes STOP. State comes from the
+ * device's params frames of the configured format (see PanTiltEmulator for the reporting rules), asked for while the
+ * device is quiet; frames of another format are counted and never taken as state. After a loss the device is held
+ * with STOP and the speeds are set again.
  */
 class PanTiltProtocol : public DeviceProtocol
 {
@@ -81,13 +84,14 @@ public:
   Capabilities capabilities() const override;
   /// The speeds and a state request (a params frame with an empty mask).
   void onConnected() override;
-  /// One params frame per datagram; anything else is counted under its reason and dropped.
+  /// One params frame per datagram; anything else is counted under its reason and dropped. A frame of another
+  /// PanTilt format before the first valid one fails the start-up: the device speaks another format.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   /// A state request while the device is quiet (it reports on its own otherwise).
   void poll() override;
-  /// The speeds, the angles in degrees and GO_TO_PAN_TILT_ANGLE (1.1: one COMMAND with the angles).
+  /// The speeds, the angles in degrees and GO_TO_PAN_TILT_ANGLE (v1.x: one COMMAND with the angles).
   void goTo(const AxisValues& position) override;
-  /// 1.1: MOVE_PAN_TILT in % of the max speed; 1.0: a speed and a move towards the limit.
+  /// v1.x: MOVE_PAN_TILT in % of the max speed; seed: a speed and a move towards the limit.
   void moveAtVelocity(const AxisValues& velocity) override;
   /// COMMAND STOP.
   void stop() override;
