@@ -65,15 +65,20 @@ TEST_F(NodeTest, SecondGoalPreemptsWithoutAStopInBetween)
   ASSERT_TRUE(second_absolute_->waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(second_absolute_->getState(), State::SUCCEEDED) << second_absolute_->getState().getText();
 
-  // Pan kept increasing on every tick from the start until it neared the second target: no stop in between.
+  // Pan kept increasing from the start until it neared the second target: no stop in between. A device that
+  // reports at the tick's own rate (DigiView: every 100 ms) may have no new report for one tick on a busy
+  // machine, so a single unchanged tick is allowed; two in a row, or any step back, is a stop.
   const std::vector<PtzState> states = observer_->states();
   std::size_t rising = 0;
+  std::size_t unchanged_in_a_row = 0;
   for (std::size_t index = 1; index < states.size() && states[index].pan < 1.5; ++index)
   {
     if (states[index - 1].pan > -0.99)
     {
-      EXPECT_GT(states[index].pan, states[index - 1].pan) << "pan stopped at tick " << index;
-      ++rising;
+      EXPECT_GE(states[index].pan, states[index - 1].pan) << "pan went back at tick " << index;
+      unchanged_in_a_row = states[index].pan > states[index - 1].pan ? 0 : unchanged_in_a_row + 1;
+      EXPECT_LT(unchanged_in_a_row, 2u) << "pan stopped at tick " << index;
+      rising += unchanged_in_a_row == 0 ? 1 : 0;
     }
   }
   EXPECT_GE(rising, 5u);
