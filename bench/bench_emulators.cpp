@@ -1,6 +1,3 @@
-#include <unistd.h>
-
-#include <filesystem>
 #include <string>
 
 #include "bench_processes.h"
@@ -19,32 +16,6 @@ namespace
 {
 using namespace ptz_action_server;
 using PortKind = DevicePortConfig::Kind;
-
-/// Seconds a byte takes at \p baud (8N1), 0 on TCP.
-double byteTime(PortKind kind, unsigned baud)
-{
-  return kind == PortKind::TCP ? 0.0 : 10.0 / baud;
-}
-
-/// The port of a pseudo-terminal (a link named after the row and this process) or of a TCP server (port 0).
-DevicePortConfig portConfig(PortKind kind, unsigned baud, const std::string& row)
-{
-  DevicePortConfig port;
-  port.kind = kind;
-  port.baud = baud;
-  if (kind == PortKind::PTY)
-  {
-    port.link = std::filesystem::temp_directory_path() / ("ptz_bench_" + row + "_" + std::to_string(::getpid()));
-    removeOnFatalSignal(port.link);
-  }
-  return port;
-}
-
-std::string portSummary(PortKind kind, unsigned baud)
-{
-  return kind == PortKind::TCP ? "TCP server on 127.0.0.1, ephemeral port" :
-                                 formatText("pseudo-terminal at %u baud", baud);
-}
 
 class PanTiltDevice : public EmulatedDevice
 {

@@ -118,6 +118,22 @@ const std::vector<DeviceRow>& deviceTable()
         table.push_back(serialRow(protocol, baud));
       }
     }
+
+    DeviceRow visca_serial;
+    visca_serial.name = "visca_serial_9600";
+    visca_serial.plugin = "serial";
+    visca_serial.params = serialParams("visca", 9600);
+    visca_serial.emulator = viscaEmulator(PortKind::PTY, 9600);
+    visca_serial.goals = 300;
+    table.push_back(visca_serial);
+
+    DeviceRow visca_udp;
+    visca_udp.name = "visca_udp";
+    visca_udp.plugin = "visca_ip";
+    visca_udp.params = { value("visca_ip/host", "127.0.0.1"), emulatorPort("visca_ip/port"),
+                         value("visca_ip/local_host", "127.0.0.1"), value("visca_ip/framing", "sony_ip") };
+    visca_udp.emulator = viscaEmulator(PortKind::UDP, 0);
+    table.push_back(visca_udp);
     return table;
   }();
   return rows;

@@ -53,11 +53,22 @@ struct EmulatorSpec
   std::function<std::unique_ptr<EmulatedDevice>(const std::string& row)> start;
 };
 
+/// What the emulator specs share: seconds a byte takes at \p baud (8N1; 0 on a socket), ...
+double byteTime(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud);
+/// ... the port of a pseudo-terminal (a link named after the row and this process) or of a TCP server or UDP socket
+/// on 127.0.0.1 (an ephemeral port), ...
+ptz_action_server::DevicePortConfig portConfig(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud,
+                                               const std::string& row);
+/// ... and how --list names it.
+std::string portSummary(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud);
+
 EmulatorSpec panTiltEmulator();
 EmulatorSpec digiViewEmulator();
 EmulatorSpec mavlinkGimbalEmulator();
 EmulatorSpec flirEmulator(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud);
 EmulatorSpec pelcoEmulator(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud);
+/// A VISCA camera on a pseudo-terminal (raw), or over UDP with Sony's VISCA over IP header (\p baud unused).
+EmulatorSpec viscaEmulator(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud);
 
 /// A parameter a row sets under the node's private namespace before the node starts.
 struct BenchParam

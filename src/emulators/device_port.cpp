@@ -4,6 +4,7 @@
 
 #include "pty_port.h"
 #include "tcp_server_port.h"
+#include "udp_server_port.h"
 
 namespace ptz_action_server
 {
@@ -12,6 +13,10 @@ std::unique_ptr<DevicePort> DevicePort::create(const DevicePortConfig& config, H
   if (config.kind == DevicePortConfig::Kind::TCP)
   {
     return std::make_unique<TcpServerPort>(config, std::move(handlers));
+  }
+  if (config.kind == DevicePortConfig::Kind::UDP)
+  {
+    return std::make_unique<UdpServerPort>(config, std::move(handlers));
   }
   return std::make_unique<PtyPort>(config, std::move(handlers));
 }

@@ -4,6 +4,7 @@
 #include <pluginlib/class_list_macros.hpp>
 
 #include "plugin_params.h"
+#include "visca_params.h"
 #include "ptz_action_server/core/flir/flir_protocol.h"
 #include "ptz_action_server/core/pelco_d/pelco_d_protocol.h"
 #include "ptz_action_server/ros/backend_plugin.h"
@@ -11,27 +12,41 @@
 namespace ptz_action_server
 {
 /**
- * \brief Builds the serial backend from ~serial/... parameters: `protocol: flir` or `protocol: pelco_d`, on a serial
+ * \brief Builds the serial backend from ~serial/... parameters: `protocol: flir`, `pelco_d` or `visca`, on a serial
  * port (`transport: serial`) or over TCP (`transport: tcp`: FLIR E-series on port 4000, a Pelco-D camera behind a
- * serial-to-Ethernet server).
+ * serial-to-Ethernet server, a VISCA camera taking raw VISCA); VISCA also over UDP (`transport: udp`).
  */
 class SerialBackendPlugin : public BackendPlugin
 {
 public:
   std::shared_ptr<PtzBackend> create(const ParamReader& params, const BackendContext& context) override
   {
-    const std::string protocol = params.choice("protocol", "flir", { "flir", "pelco_d" });
+    const std::string protocol = params.choice("protocol", "flir", { "flir", "pelco_d", "visca" });
+    const std::string transport = params.choice("transport", "serial", { "serial", "tcp", "udp" });
     LinkConfig link;
-    if (params.choice("transport", "serial", { "serial", "tcp" }) == "serial")
+    if (transport == "serial")
     {
       readSerialLink(params, "port", link);
     }
-    else
+    else if (transport == "tcp")
     {
       link.kind = LinkKind::TCP;
+      const int default_port = protocol == "flir" ? 4000 : (protocol == "visca" ? 5678 : 4001);
       link.host = params.text("host", link.host);
-      link.port = static_cast<std::uint16_t>(params.integer("tcp_port", protocol == "flir" ? 4000 : 4001, 1, 65535));
+      link.port = static_cast<std::uint16_t>(params.integer("tcp_port", default_port, 1, 65535));
       link.connect_timeout = params.number("connect_timeout", link.connect_timeout, 0.1, 60.0);
+      readReconnect(params, link);
+    }
+    else
+    {
+      if (protocol != "visca")
+      {
+        throw ConfigError("parameter " + params.resolve("transport") + " = udp is for protocol: visca only");
+      }
+      link.kind = LinkKind::UDP;
+      link.host = params.text("host", link.host);
+      link.port = static_cast<std::uint16_t>(params.integer("udp_port", visca::SONY_IP_PORT, 1, 65535));
+      link.local_host = params.text("local_host", link.local_host);
       readReconnect(params, link);
     }
     DeviceSessionConfig session{ 0.25, 0.05, 10.0, 0.1, 0.5 };
@@ -40,6 +55,17 @@ public:
     readSessionTiming(params, session);
     const double reply_timeout = params.number("reply_timeout", 0.0, 0.0, 10.0);
 
+    if (protocol == "visca")
+    {
+      ViscaConfig config;
+      config.link = link;
+      config.session = session;
+      const ParamReader visca = params.child("visca");
+      readViscaSettings(visca, config.visca);
+      config.visca.framing = readViscaFraming(visca, link.kind);
+      config.visca.reply_timeout = reply_timeout;
+      return makeViscaBackend(config, context.clock);
+    }
     if (protocol == "flir")
     {
       FlirConfig config;

@@ -363,8 +363,8 @@ inline void run(const char* program, const sigset_t& signals, const Hooks& hooks
 }
 
 /**
- * \brief Runs a serial emulator (FlirPtuEmulator, PelcoDEmulator) on the options' port, with their faults, until
- * SIGINT or SIGTERM. \p detail is appended to the start-up line. Returns the exit code.
+ * \brief Runs a line emulator (FlirPtuEmulator, PelcoDEmulator, ViscaEmulator) on the options' port, with their faults,
+ * until SIGINT or SIGTERM. \p detail is appended to the start-up line. Returns the exit code.
  */
 template <class Device, class Config>
 int runSerialDevice(const char* program, Config config, const SerialOptions& options, const std::string& detail)
@@ -376,9 +376,10 @@ int runSerialDevice(const char* program, Config config, const SerialOptions& opt
     Device device(config);
     device.port().setSilent(options.silent);
     device.port().setGarbleRatio(options.garble);
-    if (config.port.kind == ptz_action_server::DevicePortConfig::Kind::TCP)
+    if (config.port.kind != ptz_action_server::DevicePortConfig::Kind::PTY)
     {
-      std::printf("%s: listening on tcp %s%s%s\n", program, device.path().c_str(), detail.c_str(),
+      const bool tcp = config.port.kind == ptz_action_server::DevicePortConfig::Kind::TCP;
+      std::printf("%s: listening on %s %s%s%s\n", program, tcp ? "tcp" : "udp", device.path().c_str(), detail.c_str(),
                   options.silent ? ", silent" : "");
     }
     else

@@ -23,6 +23,7 @@ struct DevicePortConfig
   {
     PTY,  ///< a pseudo-terminal (a serial line)
     TCP,  ///< a TCP server; one client at a time, a new one replaces the old
+    UDP,  ///< a UDP socket; answers go to whoever wrote last
   };
   Kind kind = Kind::PTY;
   /// pty: keep this symlink pointing at the current pseudo-terminal (so an unplug/replug keeps one path, like udev).
@@ -31,8 +32,8 @@ struct DevicePortConfig
   /// pty: open this existing tty instead of creating a pseudo-terminal (no unplug/replug then).
   std::string tty;
   unsigned baud = 9600;            ///< pty: bytes are paced at 10 bits each (8N1), as a real line does
-  std::string host = "127.0.0.1";  ///< tcp: where to listen
-  std::uint16_t port = 0;          ///< tcp: 0 = any free port (see tcpPort())
+  std::string host = "127.0.0.1";  ///< tcp, udp: where to listen
+  std::uint16_t port = 0;          ///< tcp, udp: 0 = any free port (see tcpPort(), udpPort())
   double tick_period = 0.05;       ///< s between tick handler calls, for devices that report on their own
 };
 
@@ -63,6 +64,11 @@ public:
   virtual std::string path() const = 0;
   /// tcp: the port clients connect to; 0 for a pseudo-terminal.
   virtual std::uint16_t tcpPort() const
+  {
+    return 0;
+  }
+  /// udp: the port datagrams go to; 0 otherwise.
+  virtual std::uint16_t udpPort() const
   {
     return 0;
   }

@@ -59,6 +59,8 @@ std::vector<FixtureMaker> allDeviceFixtures()
   std::vector<FixtureMaker> fixtures = lineDeviceFixtures();
   const std::vector<FixtureMaker> network = networkDeviceFixtures();
   fixtures.insert(fixtures.end(), network.begin(), network.end());
+  const std::vector<FixtureMaker> visca = viscaDeviceFixtures();
+  fixtures.insert(fixtures.end(), visca.begin(), visca.end());
   const std::vector<FixtureMaker> mavlink = mavlinkDeviceFixtures();
   fixtures.insert(fixtures.end(), mavlink.begin(), mavlink.end());
   return fixtures;

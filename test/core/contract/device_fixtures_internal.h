@@ -1,8 +1,8 @@
 /**
  * \file
  * \brief Private to the device fixtures: what the line fixtures (line_device_fixtures.cpp: FLIR, Pelco-D) and the
- * network ones (network_device_fixtures.cpp: PanTilt, DigiView) share, and their lists, which allDeviceFixtures()
- * (device_fixtures.cpp) joins.
+ * network ones (network_device_fixtures.cpp: PanTilt, DigiView), VISCA's (visca_device_fixtures.cpp) share, and their
+ * lists, which allDeviceFixtures() (device_fixtures.cpp) joins.
  */
 #pragma once
 
@@ -28,6 +28,8 @@ std::vector<FixtureMaker> lineDeviceFixtures();
 /// PanTilt over UDP (every wire format) and DigiView (TCP, UDP; formats 0.5 and 1.0).
 std::vector<FixtureMaker> networkDeviceFixtures();
 
+/// VISCA on a pseudo-terminal, raw over TCP, over UDP raw and with Sony's VISCA over IP header.
+std::vector<FixtureMaker> viscaDeviceFixtures();
 /// The MAVLink gimbal manager over UDP and a serial line.
 std::vector<FixtureMaker> mavlinkDeviceFixtures();
 

@@ -1,0 +1,150 @@
+/**
+ * \file
+ * \brief Sony VISCA cameras (and the many that copy it) on RS-232/422, over TCP, or over UDP with or without Sony's
+ * VISCA over IP header.
+ */
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+
+#include "ptz_action_server/core/device/device_backend.h"
+#include "ptz_action_server/core/device/transaction_channel.h"
+#include "ptz_action_server/core/visca/visca_codec.h"
+#include "ptz_action_server/core/visca/visca_model.h"
+
+namespace ptz_action_server
+{
+/// How VISCA packets travel on the link.
+enum class ViscaFraming
+{
+  RAW,      ///< bare packets: a serial line, and most non-Sony cameras over TCP or UDP
+  SONY_IP,  ///< Sony's VISCA over IP: each UDP datagram carries an 8-byte header with a sequence number
+};
+/// "raw" / "sony_ip" -> \p framing; false for anything else.
+bool parseViscaFraming(const std::string& text, ViscaFraming& framing);
+const char* toString(ViscaFraming framing);
+
+/// What only the VISCA protocol needs to know.
+struct ViscaSettings
+{
+  std::string backend_name = "serial/visca";  ///< "serial/visca" or "visca_ip", for messages and diagnostics
+  std::uint8_t address = 1;                   ///< the camera's address, 1..7
+  ViscaFraming framing = ViscaFraming::RAW;
+  visca::ViscaModel model;     ///< steps a degree, ranges, speed bytes, zoom table
+  double reply_timeout = 0.0;  ///< s for an ACK or an answer; 0: the exchange's wire time plus 100 ms
+};
+
+/// Everything a VISCA backend is built from.
+struct ViscaConfig
+{
+  LinkConfig link;  ///< serial, tcp, or udp (port 52381 for Sony's VISCA over IP)
+  DeviceSessionConfig session{ 0.25, 0.05, 10.0, 0.1, 0.5 };
+  ViscaSettings visca;
+};
+
+/// Counters for diagnostics (reply timeouts and late replies are the channel's).
+struct ViscaCounters
+{
+  Counter packets;             ///< packets read
+  Counter skipped_bytes;       ///< dropped: bytes outside packets
+  Counter broken_packets;      ///< dropped: packets cut short (a new start byte, overlong, a datagram's tail)
+  Counter bad_datagrams;       ///< dropped: VISCA over IP datagrams without a valid header
+  Counter other_address;       ///< dropped: replies from another camera of the chain
+  Counter unexpected_replies;  ///< well-formed replies that answer nothing asked
+  Counter completions;         ///< `z0 5y FF`: a command finished
+  Counter device_errors;       ///< error replies (each a fault of the command it answers, if still current)
+  Counter sequence_resets;     ///< VISCA over IP: sequence errors answered by a reset
+  Counter network_changes;     ///< `z0 38 FF`: the chain changed; the set-up runs again
+};
+
+/**
+ * \brief VISCA over a DeviceSession.
+ *
+ * Start-up: on a serial line the address set and IF_Clear broadcasts; over VISCA over IP the sequence reset. Then
+ * the pan-tilt and zoom position inquiries are polled for state. Every request (command or inquiry) is one exchange
+ * of the TransactionChannel: a command is answered by its ACK (or an error without a socket), an inquiry by its
+ * answer, so a reply is never guessed; completions and socket errors arrive later and are matched by socket. Position
+ * goals are the absolute pan-tilt command at the model's top speeds and zoom direct; velocity goals the pan-tilt drive
+ * and zoom drive; cancel the drive stop (the camera decelerates). Error replies are faults of the command they
+ * answer, named ("syntax error", "command not executable", ...).
+ */
+class ViscaProtocol : public DeviceProtocol
+{
+public:
+  ViscaProtocol(const ViscaSettings& settings, DeviceSession& session);
+
+  std::string name() const override
+  {
+    return settings_.backend_name;
+  }
+  std::string deviceName() const override;
+  Capabilities capabilities() const override;
+  /// Address set and IF_Clear (serial), the sequence reset (VISCA over IP), or nothing (raw over a network).
+  void onConnected() override;
+  void onReceived(const std::uint8_t* data, std::size_t size) override;
+  void onDisconnected() override;
+  /// The pan-tilt and zoom inquiries, whenever the line is free.
+  void poll() override;
+  void goTo(const AxisValues& position) override;
+  void moveAtVelocity(const AxisValues& velocity) override;
+  /// The pan-tilt drive stop at once, ahead of anything queued, then the zoom stop.
+  void stop() override;
+  void diagnostics(std::vector<DiagnosticValue>& values) const override;
+
+  const ViscaCounters& counters() const
+  {
+    return counters_;
+  }
+
+private:
+  enum Tag
+  {
+    ADDRESS_SET,
+    IF_CLEAR,
+    SEQUENCE_RESET,
+    PAN_TILT_INQUIRY,
+    ZOOM_INQUIRY,
+    COMMAND,
+  };
+  /// The command a socket runs: the node command it serves, and its bytes (for messages).
+  struct SocketUse
+  {
+    std::uint64_t command = 0;
+    std::string bytes;
+  };
+
+  void queueSetup();
+  void queuePacket(const visca::Packet& packet, Tag tag, bool poll = false);
+  /// Writes a request: bare, or in a VISCA over IP message with the next sequence number.
+  void write(const std::string& bytes);
+  void readPackets(const std::uint8_t* data, std::size_t size);
+  void handle(const visca::Packet& packet);
+  void handleAnswer(const visca::Reply& reply);
+  void handleError(const visca::Reply& reply);
+  void handleControl(const visca::Packet& payload);
+  void setUpDone();
+  void updateSplitterCounters();
+  std::string refusal(const std::string& bytes, std::uint8_t error) const;
+
+  const ViscaSettings settings_;
+  const bool serial_;
+  DeviceSession& session_;
+  TransactionChannel channel_;
+  visca::PacketSplitter splitter_;
+  ViscaCounters counters_;
+
+  // I/O thread only.
+  bool set_up_ = false;
+  std::uint32_t sequence_ = 0;
+  std::array<std::optional<SocketUse>, 16> sockets_;
+  AxisValues polled_{ { 0.0, 0.0, 1.0 } };
+  std::vector<visca::Packet> packets_;  ///< reused for every read
+};
+
+/// A VISCA backend: ViscaProtocol on a DeviceSession.
+std::unique_ptr<DeviceBackend> makeViscaBackend(const ViscaConfig& config,
+                                                std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
+
+}  // namespace ptz_action_server

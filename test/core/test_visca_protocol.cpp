@@ -1,0 +1,163 @@
+/**
+ * \file
+ * \brief What only the VISCA protocol does, against its emulator over a real pseudo-terminal and UDP on 127.0.0.1
+ * (the backend contract suite covers what every device does): the start-up of each transport, one request on the
+ * wire at a time, velocity goals as drive commands, a sequence error answered by a reset, a chain without the
+ * camera's address, garbled replies.
+ */
+#include <gtest/gtest.h>
+
+#include "line_test_support.h"
+#include "wait_until.h"
+
+#include "ptz_action_server/core/visca/visca_protocol.h"
+#include "ptz_action_server/emulators/visca_emulator.h"
+
+using namespace ptz_action_server;
+
+namespace
+{
+constexpr double WAIT = LINE_TEST_WAIT;
+
+/// A camera and its backend, on a pseudo-terminal at 9600 baud or over UDP.
+class ViscaTest : public ::testing::Test
+{
+protected:
+  void start(DevicePortConfig::Kind kind, ViscaFraming framing, std::uint8_t backend_address = 1)
+  {
+    ViscaEmulatorConfig emulator_config;
+    emulator_config.port.kind = kind;
+    emulator_config.port.link = uniqueLink("visca");
+    emulator_config.framing = framing;
+    emulator_ = std::make_unique<ViscaEmulator>(emulator_config);
+    ViscaConfig config;
+    if (kind == DevicePortConfig::Kind::PTY)
+    {
+      config.link = serialLink(emulator_config.port.link, 9600);
+    }
+    else
+    {
+      config.link.kind = LinkKind::UDP;
+      config.link.port = emulator_->port().udpPort();
+      config.link.local_host = "127.0.0.1";
+    }
+    config.session.state_timeout = LINE_TEST_STATE_TIMEOUT;
+    config.session.startup_timeout = 5.0;
+    config.visca.framing = framing;
+    config.visca.address = backend_address;
+    model_ = config.visca.model;
+    backend_ = makeViscaBackend(config);
+  }
+  void startAndWaitUp(DevicePortConfig::Kind kind, ViscaFraming framing)
+  {
+    start(kind, framing);
+    backend_->start();
+    ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT));
+  }
+  const ViscaCounters& counters() const
+  {
+    return backend_->protocol<ViscaProtocol>().counters();
+  }
+
+  visca::ViscaModel model_;
+  std::unique_ptr<ViscaEmulator> emulator_;
+  std::unique_ptr<DeviceBackend> backend_;
+};
+
+TEST_F(ViscaTest, OnASerialLineTheAddressIsSetAndTheInterfaceClearedBeforeAnyInquiry)
+{
+  startAndWaitUp(DevicePortConfig::Kind::PTY, ViscaFraming::RAW);
+  const std::vector<ReceivedPacket> received = emulator_->received().items();
+  ASSERT_GE(received.size(), 4u);
+  EXPECT_EQ(visca::toHex(received[0].packet), "88 30 01 FF");
+  EXPECT_EQ(visca::toHex(received[1].packet), "88 01 00 01 FF");
+  EXPECT_EQ(visca::toHex(received[2].packet), "81 09 06 12 FF");
+  EXPECT_EQ(visca::toHex(received[3].packet), "81 09 04 47 FF");
+}
+
+TEST_F(ViscaTest, OneRequestIsOnTheWireAtATimeAndEveryOneIsAnswered)
+{
+  startAndWaitUp(DevicePortConfig::Kind::PTY, ViscaFraming::RAW);
+  // Goals and polls interleave on a 9600 baud line; a reply matched to the wrong request would show as an unexpected
+  // reply, a late one or a timeout.
+  for (double pan : { 0.3, -0.2, 0.4, 0.1 })
+  {
+    backend_->goTo({ pan, 0.1, 3.0 });
+    ASSERT_TRUE(waitUntil([&] { return atRest(*backend_, pan, 0.1); }, WAIT)) << pan;
+  }
+  std::vector<DiagnosticValue> values;
+  backend_->diagnostics(values);
+  for (const auto& [name, value] : values)
+  {
+    if (name == "reply timeouts" || name == "late replies dropped")
+    {
+      EXPECT_EQ(value, "0") << name;
+    }
+  }
+  EXPECT_EQ(counters().unexpected_replies, 0u);
+  EXPECT_GT(counters().completions, 0u);  // the positions completed in their sockets
+  EXPECT_EQ(emulator_->counters().buffer_full, 0u);
+  EXPECT_NEAR(emulator_->sample().position[ZOOM], 3.0, 0.01);
+}
+
+TEST_F(ViscaTest, VelocityGoalsAreDriveCommandsWithTheModelsSpeedBytes)
+{
+  startAndWaitUp(DevicePortConfig::Kind::UDP, ViscaFraming::RAW);
+  emulator_->received().clear();
+  backend_->moveAtVelocity({ -0.5, 0.2, 4.0 });
+  ASSERT_TRUE(waitUntil([&] { return backend_->sample().velocity[PAN] < -0.4; }, WAIT));
+  const visca::Packet drive = visca::panTiltDrive(1, model_.speedByte(PAN, 0.5), model_.speedByte(TILT, 0.2), -1, 1);
+  const visca::Packet zoom = visca::zoomDrive(1, model_.zoomSpeed(4.0));
+  EXPECT_TRUE(emulator_->received().waitFor([&](const ReceivedPacket& item) { return item.packet == drive; }, WAIT));
+  EXPECT_TRUE(emulator_->received().waitFor([&](const ReceivedPacket& item) { return item.packet == zoom; }, WAIT));
+  EXPECT_NEAR(emulator_->sample().velocity[TILT], model_.speedOfByte(TILT, model_.speedByte(TILT, 0.2)), 1e-6);
+  backend_->stop();
+  const visca::Packet halt = visca::panTiltDrive(1, 0x18, 0x14, 0, 0);
+  EXPECT_TRUE(emulator_->received().waitFor([&](const ReceivedPacket& item) { return item.packet == halt; }, WAIT));
+  EXPECT_TRUE(waitUntil([&] { return !emulator_->sample().moving && !backend_->sample().moving; }, WAIT));
+}
+
+TEST_F(ViscaTest, OverIpTheSequenceIsResetFirstAndASequenceErrorIsAnsweredByAReset)
+{
+  startAndWaitUp(DevicePortConfig::Kind::UDP, ViscaFraming::SONY_IP);
+  const std::vector<ReceivedPacket> received = emulator_->received().items();
+  ASSERT_GE(received.size(), 3u);
+  EXPECT_TRUE(received[0].control);
+  EXPECT_EQ(received[0].sequence, 0u);
+  EXPECT_EQ(received[1].sequence, 1u);
+  EXPECT_EQ(received[2].sequence, 2u);
+
+  emulator_->skipSequence(1000000);  // another controller used the camera
+  ASSERT_TRUE(waitUntil([&] { return counters().sequence_resets > 0; }, WAIT));
+  backend_->goTo({ -0.3, 0.2, 2.0 });
+  EXPECT_TRUE(waitUntil([&] { return atRest(*backend_, -0.3, 0.2); }, WAIT));
+  EXPECT_GT(emulator_->counters().sequence_errors, 0u);
+  EXPECT_EQ(backend_->sample().fault_count, 0u);
+}
+
+TEST_F(ViscaTest, AChainWithoutTheConfiguredAddressFailsTheStartWithTheReason)
+{
+  start(DevicePortConfig::Kind::PTY, ViscaFraming::RAW, 3);
+  try
+  {
+    backend_->start();
+    FAIL() << "started without a camera at address 3";
+  }
+  catch (const std::exception& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("the VISCA chain has 1 camera(s), none at address 3"), std::string::npos)
+        << error.what();
+  }
+}
+
+TEST_F(ViscaTest, GarbledRepliesAreDroppedAndCountedAndGoalsStillSucceed)
+{
+  startAndWaitUp(DevicePortConfig::Kind::PTY, ViscaFraming::RAW);
+  emulator_->port().setGarbleRatio(0.02);
+  ASSERT_TRUE(waitUntil([&] { return counters().skipped_bytes + counters().broken_packets > 3; }, WAIT));
+  emulator_->port().setGarbleRatio(0.0);
+  backend_->goTo({ 0.2, -0.1, 1.0 });
+  EXPECT_TRUE(waitUntil([&] { return atRest(*backend_, 0.2, -0.1); }, WAIT));
+}
+
+}  // namespace
