@@ -50,6 +50,8 @@ std::vector<FixtureMaker> allDeviceFixtures()
   std::vector<FixtureMaker> fixtures = lineDeviceFixtures();
   const std::vector<FixtureMaker> network = networkDeviceFixtures();
   fixtures.insert(fixtures.end(), network.begin(), network.end());
+  const std::vector<FixtureMaker> cameras = ipCameraFixtures();
+  fixtures.insert(fixtures.end(), cameras.begin(), cameras.end());
   return fixtures;
 }
 

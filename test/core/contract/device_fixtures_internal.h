@@ -1,8 +1,8 @@
 /**
  * \file
  * \brief Private to the device fixtures: what the line fixtures (line_device_fixtures.cpp: FLIR, Pelco-D) and the
- * network ones (network_device_fixtures.cpp: PanTilt, DigiView) share, and their lists, which allDeviceFixtures()
- * (device_fixtures.cpp) joins.
+ * network ones (network_device_fixtures.cpp: PanTilt, DigiView), the IP cameras (ip_camera_fixtures.cpp) share, and
+ * their lists, which allDeviceFixtures() (device_fixtures.cpp) joins.
  */
 #pragma once
 
@@ -24,6 +24,9 @@ std::vector<FixtureMaker> lineDeviceFixtures();
 
 /// PanTilt over UDP (both wire formats) and DigiView (TCP, UDP; formats 0.5 and 1.0).
 std::vector<FixtureMaker> networkDeviceFixtures();
+
+/// The IP cameras over HTTP: Axis (VAPIX) and ONVIF, each against its emulated camera.
+std::vector<FixtureMaker> ipCameraFixtures();
 
 /// s without a state before a link is lost: generous, a busy test machine may starve the I/O threads for a while
 /// (the deadline cases read it back).
