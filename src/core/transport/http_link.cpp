@@ -43,7 +43,10 @@ long curlAuth(HttpAuth auth)
 }  // namespace
 
 HttpLink::HttpLink(boost::asio::io_context& context, const LinkConfig& config, Listener& listener)
-  : Link(context, config, listener), post_headers_(nullptr), base_url_(config.describe())
+  : Link(context, config, listener)
+  , post_headers_(nullptr)
+  , base_url_(config.describe())
+  , auth_(curlAuth(config.http.auth))
 {
   static std::once_flag global_init;
   std::call_once(global_init, [] { curl_global_init(CURL_GLOBAL_DEFAULT); });
@@ -84,6 +87,28 @@ void HttpLink::configureHandle()
   }
 }
 
+int HttpLink::performOnce(const HttpRequest& request)
+{
+  reply_.body.clear();
+  // curl opens a multi-pass authentication (Digest) of a POST with a probe that carries no body; a camera that
+  // authenticates in the message (ONVIF's WS-Security) would answer that empty request. So POSTs go without HTTP
+  // authentication until the camera has asked for it once.
+  const bool unauthenticated_post = !request.body.empty() && !challenged_ && config_.http.auth != HttpAuth::NONE;
+  curl_easy_setopt(curl_, CURLOPT_HTTPAUTH, unauthenticated_post ? CURLAUTH_NONE : auth_);
+  const CURLcode result = curl_easy_perform(curl_);
+  long status = 0;
+  curl_easy_getinfo(curl_, CURLINFO_RESPONSE_CODE, &status);
+  if (result == CURLE_OK && status == 401 && !challenged_)
+  {
+    challenged_ = true;
+    if (unauthenticated_post)
+    {
+      return performOnce(request);  // once more, authenticated
+    }
+  }
+  return result;
+}
+
 void HttpLink::startOpen()
 {
   // Nothing to connect yet: curl connects on the first request. Open from a handler of its own, as the other links do.
@@ -116,7 +141,6 @@ const HttpReply& HttpLink::perform(const HttpRequest& request)
 {
   reply_.delivered = false;
   reply_.status = 0;
-  reply_.body.clear();
   error_buffer_[0] = '\0';
   if (!isOpen())
   {
@@ -143,7 +167,7 @@ const HttpReply& HttpLink::perform(const HttpRequest& request)
     curl_easy_setopt(curl_, CURLOPT_POSTFIELDS, request.body.data());
     curl_easy_setopt(curl_, CURLOPT_POSTFIELDSIZE, static_cast<long>(request.body.size()));
   }
-  const CURLcode result = curl_easy_perform(curl_);
+  const auto result = static_cast<CURLcode>(performOnce(request));
   curl_easy_setopt(curl_, CURLOPT_FRESH_CONNECT, 0L);
   curl_easy_setopt(curl_, CURLOPT_FORBID_REUSE, 0L);
   if (!request.body.empty())
@@ -183,7 +207,7 @@ const HttpReply& HttpLink::perform(const HttpRequest& request)
     curl_easy_getinfo(curl_, CURLINFO_HTTPAUTH_AVAIL, &offered);
     if (offered != 0)
     {
-      curl_easy_setopt(curl_, CURLOPT_HTTPAUTH, (offered & CURLAUTH_DIGEST) != 0 ? CURLAUTH_DIGEST : CURLAUTH_BASIC);
+      auth_ = (offered & CURLAUTH_DIGEST) != 0 ? CURLAUTH_DIGEST : CURLAUTH_BASIC;
     }
   }
   return reply_;

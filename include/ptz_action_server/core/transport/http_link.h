@@ -83,6 +83,8 @@ protected:
 
 private:
   void configureHandle();
+  /// curl_easy_perform with the authentication this request may carry (a CURLcode).
+  int performOnce(const HttpRequest& request);
 
   void* curl_ = nullptr;      ///< CURL*: one easy handle for every request (its connection and nonce)
   curl_slist* post_headers_;  ///< Content-Type and "Expect:" of POSTs (rebuilt when the type changes)
@@ -90,6 +92,8 @@ private:
   const std::string base_url_;
   HttpReply reply_;  ///< reused: no allocation per poll once its body has grown
   char error_buffer_[256] = {};
+  long auth_;                ///< CURLAUTH_* bits to offer (AUTO narrows them to what the camera asked for)
+  bool challenged_ = false;  ///< the camera has answered 401 once: it wants HTTP authentication
   HttpCounters http_counters_;
 };
 
