@@ -164,6 +164,18 @@ TEST(OnvifCodec, BringUpReplies)
             "");
   ServicePaths paths;
   EXPECT_EQ(readCapabilities(message.content, paths), "no PTZ XAddr");
+
+  // A number no clock has (the fuzzer's): named, not cast.
+  ASSERT_EQ(parseSoap("<s:Envelope xmlns:s=\"http://www.w3.org/2003/05/soap-envelope\" "
+                      "xmlns:tt=\"http://www.onvif.org/ver10/schema\"><s:Body><r xmlns=\"http://www.onvif.org/ver10/"
+                      "device/wsdl\"><SystemDateAndTime><tt:UTCDateTime><tt:Time><tt:Hour>7</tt:Hour><tt:Minute>50"
+                      "</tt:Minute><tt:Second>4555555555555555555555</tt:Second></tt:Time><tt:Date><tt:Year>2010</"
+                      "tt:Year>"
+                      "<tt:Month>9</tt:Month><tt:Day>16</tt:Day></tt:Date></tt:UTCDateTime>"
+                      "</SystemDateAndTime></r></s:Body></s:Envelope>",
+                      message),
+            "");
+  EXPECT_EQ(readSystemTime(message.content, utc), "no UTCDateTime Second (a whole number 0..9999)");
 }
 
 TEST(OnvifCodec, TimesAndDurations)

@@ -125,6 +125,10 @@ TEST(VapixZoomTable, MapsThroughTheTableNeverLinearly)
   EXPECT_DOUBLE_EQ(table.toValue(0.5), 1.0);  // clamped into the table
   EXPECT_DOUBLE_EQ(table.toValue(40.0), 9999.0);
   EXPECT_EQ(table.toText(), "1:1,5000:4,9999:18");
+  // The ends stay the ends (the fuzzer found pow an ulp beyond them).
+  ASSERT_EQ(ZoomTable::parse("1:1,1000:1.35,2000:918", table), "");
+  EXPECT_EQ(table.toFactor(table.maxValue()), table.maxFactor());
+  EXPECT_EQ(table.toValue(table.maxFactor()), table.maxValue());
 }
 
 TEST(VapixZoomTable, RejectsTablesThatCannotMap)

@@ -239,7 +239,8 @@ double ZoomTable::toFactor(double value) const
     if (value <= high.first)
     {
       const double share = (value - low.first) / (high.first - low.first);
-      return low.second * std::pow(high.second / low.second, share);
+      // Clamped: pow may land an ulp outside the segment, and the table's ends must stay its ends.
+      return std::clamp(low.second * std::pow(high.second / low.second, share), low.second, high.second);
     }
   }
   return points_.back().second;
@@ -258,7 +259,7 @@ double ZoomTable::toValue(double factor) const
     if (factor <= high.second)
     {
       const double share = std::log(factor / low.second) / std::log(high.second / low.second);
-      return low.first + share * (high.first - low.first);
+      return std::clamp(low.first + share * (high.first - low.first), low.first, high.first);
     }
   }
   return points_.back().first;

@@ -177,9 +177,10 @@ std::string readSystemTime(const Element* response, double& utc_seconds)
                                                              { time, "Hour" }, { time, "Minute" }, { time, "Second" } };
   for (int index = 0; index < 6; ++index)
   {
-    if (!number(text(child(fields[index].first, ns::SCHEMA, fields[index].second)), values[index]))
+    if (!number(text(child(fields[index].first, ns::SCHEMA, fields[index].second)), values[index]) ||
+        values[index] < 0.0 || values[index] > 9999.0)
     {
-      return std::string("no UTCDateTime ") + fields[index].second;
+      return std::string("no UTCDateTime ") + fields[index].second + " (a whole number 0..9999)";
     }
   }
   const std::string iso =
