@@ -122,8 +122,8 @@ void HttpLink::startOpen()
 
 void HttpLink::closeHandle()
 {
-  // The next request starts on a fresh connection; the handle (and its digest state) stays.
-  curl_easy_setopt(curl_, CURLOPT_FORBID_REUSE, 1L);
+  // The next request starts on a fresh connection (the old one leaves curl's one-connection cache); the handle and
+  // its digest state stay.
   curl_easy_setopt(curl_, CURLOPT_FRESH_CONNECT, 1L);
 }
 
@@ -169,7 +169,6 @@ const HttpReply& HttpLink::perform(const HttpRequest& request)
   }
   const auto result = static_cast<CURLcode>(performOnce(request));
   curl_easy_setopt(curl_, CURLOPT_FRESH_CONNECT, 0L);
-  curl_easy_setopt(curl_, CURLOPT_FORBID_REUSE, 0L);
   if (!request.body.empty())
   {
     curl_easy_setopt(curl_, CURLOPT_HTTPHEADER, nullptr);
