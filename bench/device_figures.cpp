@@ -172,6 +172,11 @@ int runDeviceFigures(const DeviceRow& row, const EmulatedDevice& device, const B
   rows.push_back(goalFigure(client, device, row.emulator, options.goals > 0 ? options.goals : row.goals));
   rows.push_back(cancelFigure(client, device, row.emulator, options.cancels));
   rows.push_back(stateRateFigure(node_handle));
+  if (device.connectionsOpened() >= 0)
+  {
+    rows.push_back({ "TCP connections the camera accepted (start-up, every goal and cancel)",
+                     std::to_string(device.connectionsOpened()), "1" });
+  }
   printTable(row.name + " (" + row.plugin + " backend, " + row.emulator.summary + ")", rows);
   return 0;
 }

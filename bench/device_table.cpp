@@ -110,6 +110,21 @@ const std::vector<DeviceRow>& deviceTable()
                       emulatorPort("mavlink_gimbal/port") };
     gimbal.emulator = mavlinkGimbalEmulator();
     table.push_back(gimbal);
+    DeviceRow axis;
+    axis.name = "axis_http";
+    axis.plugin = "axis";
+    axis.params = { value("axis/host", "127.0.0.1"), emulatorPort("axis/port"), value("axis/username", "root"),
+                    value("axis/password", "pass") };
+    axis.emulator = axisEmulator();
+    table.push_back(axis);
+
+    DeviceRow onvif;
+    onvif.name = "onvif_http";
+    onvif.plugin = "onvif";
+    onvif.params = { value("onvif/host", "127.0.0.1"), emulatorPort("onvif/port"), value("onvif/username", "admin"),
+                     value("onvif/password", "admin") };
+    onvif.emulator = onvifEmulator();
+    table.push_back(onvif);
 
     for (const char* protocol : { "flir", "pelco_d" })
     {

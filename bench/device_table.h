@@ -38,6 +38,11 @@ public:
   virtual std::vector<Arrival> goalCommands() const = 0;
   /// Stop commands received so far, oldest first.
   virtual std::vector<Arrival> stopCommands() const = 0;
+  /// TCP connections the emulator accepted so far (IP cameras), or -1 where that is not a figure.
+  virtual long connectionsOpened() const
+  {
+    return -1;
+  }
 };
 
 /// How a row's emulator starts, and what the figures count of what it receives.
@@ -69,6 +74,8 @@ EmulatorSpec flirEmulator(ptz_action_server::DevicePortConfig::Kind kind, unsign
 EmulatorSpec pelcoEmulator(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud);
 /// A VISCA camera on a pseudo-terminal (raw), or over UDP with Sony's VISCA over IP header (\p baud unused).
 EmulatorSpec viscaEmulator(ptz_action_server::DevicePortConfig::Kind kind, unsigned baud);
+EmulatorSpec axisEmulator();
+EmulatorSpec onvifEmulator();
 
 /// A parameter a row sets under the node's private namespace before the node starts.
 struct BenchParam

@@ -24,6 +24,7 @@ PTZ_APT_PACKAGES=(
   ros-robot-state-publisher
   googletest libgtest-dev libbenchmark-dev
   nlohmann-json3-dev
+  libcurl4-openssl-dev libssl-dev libtinyxml2-dev
 )
 
 log() {

@@ -26,6 +26,27 @@ void readReconnect(const ParamReader& params, LinkConfig& link)
   link.reconnect_max = params.number("reconnect_max", link.reconnect_max, link.reconnect_min, 60.0);
 }
 
+void readHttpLink(const ParamReader& params, LinkConfig& link)
+{
+  link.kind = LinkKind::HTTP;
+  HttpLinkConfig& http = link.http;
+  link.host = params.text("host", link.host);
+  http.tls = params.flag("tls", http.tls);
+  const int port = params.integer("port", 0, 0, 65535);
+  link.port = static_cast<std::uint16_t>(port != 0 ? port : (http.tls ? 443 : 80));
+  http.verify_peer = params.flag("verify_peer", http.verify_peer);
+  const std::string auth = params.choice("auth", "digest", { "digest", "basic", "auto", "none" });
+  http.auth = auth == "digest" ? HttpAuth::DIGEST :
+              auth == "basic"  ? HttpAuth::BASIC :
+              auth == "auto"   ? HttpAuth::AUTO :
+                                 HttpAuth::NONE;
+  http.username = params.text("username", http.username);
+  http.password = params.text("password", http.password);
+  http.request_timeout = params.number("request_timeout", http.request_timeout, 0.05, 60.0);
+  link.connect_timeout = params.number("connect_timeout", link.connect_timeout, 0.05, 60.0);
+  readReconnect(params, link);
+}
+
 void readSerialLink(const ParamReader& params, const char* path_name, LinkConfig& link)
 {
   link.kind = LinkKind::SERIAL;

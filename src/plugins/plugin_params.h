@@ -13,6 +13,10 @@ namespace ptz_action_server
 /// reconnect_min, reconnect_max (s) into \p link.
 void readReconnect(const ParamReader& params, LinkConfig& link);
 
+/// An IP camera's HTTP link: host, port (0: 80, or 443 with tls), tls, verify_peer, auth, username, password (never
+/// printed), request_timeout, connect_timeout, reconnect timing.
+void readHttpLink(const ParamReader& params, LinkConfig& link);
+
 /// A serial port: the device path in \p path_name ("port"), baud (standard rates only), reconnect timing.
 void readSerialLink(const ParamReader& params, const char* path_name, LinkConfig& link);
 

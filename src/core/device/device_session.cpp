@@ -1,5 +1,7 @@
 #include "ptz_action_server/core/device/device_session.h"
 
+#include <stdexcept>
+
 #include <boost/asio/post.hpp>
 
 #include "ptz_action_server/core/device/device_protocol.h"
@@ -22,6 +24,16 @@ DeviceSession::DeviceSession(const LinkConfig& link, const DeviceSessionConfig& 
 DeviceSession::~DeviceSession()
 {
   stop();
+}
+
+HttpLink& DeviceSession::http()
+{
+  auto* http = dynamic_cast<HttpLink*>(link_.get());
+  if (http == nullptr)
+  {
+    throw std::logic_error(protocol_->name() + " needs an HTTP link, not " + link_->config().describe());
+  }
+  return *http;
 }
 
 void DeviceSession::attach(DeviceProtocol& protocol)

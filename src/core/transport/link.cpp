@@ -17,6 +17,8 @@ const char* toString(LinkKind kind)
       return "tcp";
     case LinkKind::UDP:
       return "udp";
+    case LinkKind::HTTP:
+      return "http";
   }
   return "?";
 }
@@ -32,6 +34,10 @@ std::string LinkConfig::describe() const
   {
     return path + " at " + std::to_string(baud) + " baud";
   }
+  if (kind == LinkKind::HTTP)
+  {
+    return std::string(http.tls ? "https://" : "http://") + host + ":" + std::to_string(port);
+  }
   return std::string(toString(kind)) + " " + host + ":" + std::to_string(port);
 }
 
@@ -45,6 +51,8 @@ std::unique_ptr<Link> Link::create(boost::asio::io_context& context, const LinkC
       return makeTcpLink(context, config, listener);
     case LinkKind::UDP:
       return makeUdpLink(context, config, listener);
+    case LinkKind::HTTP:
+      return makeHttpLink(context, config, listener);
   }
   throw ConfigError("unknown link kind");
 }
@@ -132,10 +140,13 @@ void Link::diagnostics(std::vector<DiagnosticValue>& values) const
   values.emplace_back("last link error", lastError());
 }
 
-void Link::opened()
+void Link::opened(bool proven)
 {
   open_ = true;
-  backoff_ = 0.0;
+  if (proven)
+  {
+    backoff_ = 0.0;
+  }
   ++counters_.opens;
   const std::uint64_t connection = connection_;
   listener_.onLinkUp();

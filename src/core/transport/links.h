@@ -16,6 +16,8 @@ namespace ptz_action_server
 std::unique_ptr<Link> makeSerialLink(boost::asio::io_context& context, const LinkConfig& config,
                                      Link::Listener& listener);
 std::unique_ptr<Link> makeTcpLink(boost::asio::io_context& context, const LinkConfig& config, Link::Listener& listener);
+std::unique_ptr<Link> makeHttpLink(boost::asio::io_context& context, const LinkConfig& config,
+                                   Link::Listener& listener);
 std::unique_ptr<Link> makeUdpLink(boost::asio::io_context& context, const LinkConfig& config, Link::Listener& listener);
 
 /// The read and write loops of a byte-stream link (Boost.Asio serial_port or tcp::socket).

@@ -63,6 +63,8 @@ std::vector<FixtureMaker> allDeviceFixtures()
   fixtures.insert(fixtures.end(), visca.begin(), visca.end());
   const std::vector<FixtureMaker> mavlink = mavlinkDeviceFixtures();
   fixtures.insert(fixtures.end(), mavlink.begin(), mavlink.end());
+  const std::vector<FixtureMaker> cameras = ipCameraFixtures();
+  fixtures.insert(fixtures.end(), cameras.begin(), cameras.end());
   return fixtures;
 }
 

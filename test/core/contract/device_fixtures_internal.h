@@ -1,8 +1,8 @@
 /**
  * \file
  * \brief Private to the device fixtures: what the line fixtures (line_device_fixtures.cpp: FLIR, Pelco-D) and the
- * network ones (network_device_fixtures.cpp: PanTilt, DigiView), VISCA's (visca_device_fixtures.cpp) share, and their
- * lists, which allDeviceFixtures() (device_fixtures.cpp) joins.
+ * network ones (network_device_fixtures.cpp: PanTilt, DigiView), VISCA's (visca_device_fixtures.cpp), the IP cameras
+ * (ip_camera_fixtures.cpp) and MAVLink's share, and their lists, which allDeviceFixtures() (device_fixtures.cpp) joins.
  */
 #pragma once
 
@@ -32,6 +32,8 @@ std::vector<FixtureMaker> networkDeviceFixtures();
 std::vector<FixtureMaker> viscaDeviceFixtures();
 /// The MAVLink gimbal manager over UDP and a serial line.
 std::vector<FixtureMaker> mavlinkDeviceFixtures();
+/// The IP cameras over HTTP: Axis (VAPIX) and ONVIF, each against its emulated camera.
+std::vector<FixtureMaker> ipCameraFixtures();
 
 /// s without a state before a link is lost: generous, a busy test machine may starve the I/O threads for a while
 /// (the deadline cases read it back).

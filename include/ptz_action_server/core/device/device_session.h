@@ -19,6 +19,7 @@
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/counter.h"
 #include "ptz_action_server/core/motion_estimator.h"
+#include "ptz_action_server/core/transport/http_link.h"
 #include "ptz_action_server/core/transport/link.h"
 
 namespace ptz_action_server
@@ -133,6 +134,8 @@ public:
   {
     link_->write(bytes);
   }
+  /// The link as an HTTP link, for protocols over HTTP (LinkKind::HTTP). Throws std::logic_error on another link.
+  HttpLink& http();
   /// Gives up on this connection (it reopens after the link's backoff).
   void disconnect(const std::string& reason)
   {

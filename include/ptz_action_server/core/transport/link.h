@@ -29,6 +29,27 @@ enum class LinkKind
   SERIAL,  ///< a serial port (8N1), a byte stream
   TCP,     ///< a TCP connection to the device, a byte stream
   UDP,     ///< datagrams to and from one peer
+  HTTP,    ///< HTTP requests to one server (libcurl): one keep-alive connection, a request at a time (HttpLink)
+};
+
+/// How an HTTP link authenticates.
+enum class HttpAuth
+{
+  DIGEST,  ///< RFC 7616 Digest (MD5, qop=auth); the nonce is reused, so a request costs one round trip
+  BASIC,   ///< RFC 7617 Basic (old or configured cameras); use it over TLS
+  AUTO,    ///< whatever the first challenge offers (Digest before Basic); then only that
+  NONE,    ///< no credentials
+};
+
+/// The HTTP side of a LinkConfig (kind HTTP). The password is never printed.
+struct HttpLinkConfig
+{
+  bool tls = false;         ///< https instead of http
+  bool verify_peer = true;  ///< tls: check the camera's certificate (self-signed cameras need false)
+  HttpAuth auth = HttpAuth::DIGEST;
+  std::string username;
+  std::string password;          ///< never in logs, messages or diagnostics
+  double request_timeout = 1.0;  ///< s a request may take from start to the last byte of its answer
 };
 
 /// "serial", "tcp", "udp".
@@ -48,10 +69,12 @@ struct LinkConfig
   double connect_timeout = 3.0;        ///< tcp: s a connection attempt may take
   double reconnect_min = 0.05;         ///< s before the first reopen attempt
   double reconnect_max = 2.0;          ///< s between attempts, at most (the wait doubles up to it)
+  HttpLinkConfig http;                 ///< http: scheme, credentials, request deadline
 
   /// Seconds \p bytes take on the wire: 10 bits a byte (8N1) on a serial port, 0 on a network.
   double wireTime(std::size_t bytes) const;
-  /// "/dev/ttyUSB0 at 9600 baud", "tcp 192.168.1.20:4000", "udp 127.0.0.1:5000".
+  /// "/dev/ttyUSB0 at 9600 baud", "tcp 192.168.1.20:4000", "udp 127.0.0.1:5000", "http://10.0.0.7:80" (never the
+  /// credentials).
   std::string describe() const;
 };
 
@@ -132,7 +155,7 @@ public:
   /// Why the link last closed or failed to open ("" if it never did). Any thread.
   std::string lastError() const;
   /// The link, its opens, failures, losses and traffic, for a backend's diagnostics. Any thread.
-  void diagnostics(std::vector<DiagnosticValue>& values) const;
+  virtual void diagnostics(std::vector<DiagnosticValue>& values) const;
 
 protected:
   Link(boost::asio::io_context& context, const LinkConfig& config, Listener& listener);
@@ -146,7 +169,14 @@ protected:
   /// Starts writing \p bytes (the queue's front, which stays alive until written); completion calls written().
   virtual void startWrite(const std::vector<std::uint8_t>& bytes) = 0;
 
-  void opened();
+  /// The handle is open. \p proven: it has carried traffic, so the reopen backoff starts afresh (an HTTP link opens
+  /// before its first request and proves itself with a reply: see provenAlive()).
+  void opened(bool proven = true);
+  /// The peer answered: the next reopen after a loss waits reconnect_min again.
+  void provenAlive()
+  {
+    backoff_ = 0.0;
+  }
   void openFailed(const std::string& reason);
   void received(const std::uint8_t* data, std::size_t size);
   void written(std::size_t size);

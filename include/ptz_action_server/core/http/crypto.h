@@ -1,0 +1,21 @@
+/**
+ * \file
+ * \brief The digests and encodings IP cameras authenticate with (OpenSSL's libcrypto): MD5 for HTTP Digest, SHA-1 and
+ * Base64 for WS-Security's UsernameToken PasswordDigest.
+ */
+#pragma once
+
+#include <string>
+
+namespace ptz_action_server
+{
+/// MD5 of \p text as 32 lower-case hex digits.
+std::string md5Hex(const std::string& text);
+/// The 20 raw bytes of SHA-1 of \p bytes.
+std::string sha1(const std::string& bytes);
+/// Standard Base64 with padding.
+std::string base64Encode(const std::string& bytes);
+/// Decodes standard Base64 (padding required); false for anything else.
+bool base64Decode(const std::string& text, std::string& bytes);
+
+}  // namespace ptz_action_server

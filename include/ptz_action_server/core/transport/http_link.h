@@ -1,0 +1,100 @@
+/**
+ * \file
+ * \brief HTTP under the device layer: a Link (kind HTTP) whose traffic is requests and answers, made with libcurl on
+ * the session's I/O thread over one keep-alive connection.
+ *
+ * Decision (see the README, "HTTP on the device layer"): HTTP is a link like the others, so reconnection with backoff,
+ * the loss reasons, the counters and the session's supervision stay in one place. A request runs to completion on the
+ * I/O thread (curl's easy interface, one handle reused for every request, so one connection and one digest nonce
+ * serve them all); its deadline (request_timeout) bounds how long the thread can be held. Commands queued meanwhile
+ * run after it, in order, as on a serial line with one request on the wire.
+ */
+#pragma once
+
+#include <string>
+
+#include "ptz_action_server/core/counter.h"
+#include "ptz_action_server/core/transport/link.h"
+
+struct curl_slist;  // libcurl's, kept out of this header
+
+namespace ptz_action_server
+{
+/// One request. GET when body is empty, POST otherwise.
+struct HttpRequest
+{
+  std::string path;          ///< from the first '/', with the query: "/axis-cgi/com/ptz.cgi?query=position"
+  std::string body;          ///< POST body
+  std::string content_type;  ///< POST content type
+};
+
+/// What came back.
+struct HttpReply
+{
+  bool delivered = false;  ///< an HTTP answer arrived; false: the link was lost (the reason is its lastError())
+  long status = 0;         ///< HTTP status code
+  std::string body;
+};
+
+/// What an HTTP link counts beyond LinkCounters.
+struct HttpCounters
+{
+  Counter requests;          ///< requests made
+  Counter connections;       ///< TCP (or TLS) connections curl had to open: 1 while the camera keeps its connection
+  Counter error_statuses;    ///< answers with a status >= 400
+  Counter timeouts;          ///< requests that hit request_timeout
+  Counter transport_errors;  ///< refused, reset, unresolvable, TLS failures
+};
+
+/**
+ * \brief The HTTP link: requests on the I/O thread, one connection kept alive, Digest or Basic authentication.
+ *
+ * "Open" means ready to send: the connection itself is curl's to make on the first request and to keep. A request
+ * that gets no answer (refused, reset, timed out) loses the link with its reason, and it reopens after the backoff;
+ * the backoff starts afresh only once an answer came (provenAlive()). Bytes cannot be written to it.
+ */
+class HttpLink : public Link
+{
+public:
+  HttpLink(boost::asio::io_context& context, const LinkConfig& config, Listener& listener);
+  ~HttpLink() override;
+
+  /// Makes one request (I/O thread, link open). Blocks for at most request_timeout. On a failure without an answer
+  /// the link is lost (the listener hears onLinkDown() before this returns) and the reply says !delivered.
+  const HttpReply& perform(const HttpRequest& request);
+
+  /// "GET /axis-cgi/com/ptz.cgi?query=position", for messages.
+  static std::string describe(const HttpRequest& request);
+
+  const HttpCounters& httpCounters() const
+  {
+    return http_counters_;
+  }
+  void diagnostics(std::vector<DiagnosticValue>& values) const override;
+
+protected:
+  void startOpen() override;
+  void closeHandle() override;
+  void startRead() override
+  {
+  }
+  /// Nothing writes bytes to an HTTP link (protocols call perform()).
+  void startWrite(const std::vector<std::uint8_t>& bytes) override;
+
+private:
+  void configureHandle();
+  /// curl_easy_perform with the authentication this request may carry (a CURLcode).
+  int performOnce(const HttpRequest& request);
+
+  void* curl_ = nullptr;      ///< CURL*: one easy handle for every request (its connection and nonce)
+  curl_slist* post_headers_;  ///< Content-Type and "Expect:" of POSTs (rebuilt when the type changes)
+  std::string post_content_type_;
+  const std::string base_url_;
+  HttpReply reply_;  ///< reused: no allocation per poll once its body has grown
+  char error_buffer_[256] = {};
+  long auth_;                ///< CURLAUTH_* bits to offer (AUTO narrows them to what the camera asked for)
+  bool challenged_ = false;  ///< the camera has answered 401 once: it wants HTTP authentication
+  HttpCounters http_counters_;
+};
+
+}  // namespace ptz_action_server

@@ -1,0 +1,148 @@
+/**
+ * \file
+ * \brief The HTTP end of the emulated IP cameras: a Boost.Beast server on 127.0.0.1 with keep-alive connections,
+ * HTTP Digest (RFC 7616, MD5, qop=auth, nonces that go stale) or Basic authentication, and faults to switch on.
+ */
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <set>
+#include <string>
+#include <thread>
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/tcp.hpp>
+
+#include "ptz_action_server/core/counter.h"
+#include "ptz_action_server/core/transport/link.h"
+#include "ptz_action_server/core/types.h"
+#include "ptz_action_server/emulators/received_log.h"
+
+namespace ptz_action_server
+{
+/// Where and how the camera's web server answers.
+struct HttpCameraServerConfig
+{
+  std::string host = "127.0.0.1";
+  std::uint16_t port = 0;            ///< 0 = any free port
+  HttpAuth auth = HttpAuth::DIGEST;  ///< DIGEST, BASIC or NONE (AUTO is a client's choice: taken as DIGEST)
+  std::string realm = "AXIS_ACCC8E000000";
+  std::string username = "root";
+  std::string password = "pass";
+  unsigned nonce_uses = 0;  ///< a nonce goes stale after this many requests (0: never), as some firmware does
+};
+
+/// A request as the server read it.
+struct HttpExchange
+{
+  TimePoint at;  ///< when it was read
+  std::string method;
+  std::string target;  ///< path and query
+  std::string body;
+  unsigned status = 0;  ///< what it was answered (0: not answered)
+};
+
+/// What a camera answers to an authenticated request.
+struct HttpAnswer
+{
+  unsigned status = 200;
+  std::string content_type = "text/plain";
+  std::string body;
+};
+
+/// What the server counts. Any thread.
+struct HttpServerCounters
+{
+  Counter connections;          ///< TCP connections accepted
+  Counter requests;             ///< requests read
+  Counter challenges;           ///< 401 answers (a request without valid credentials, or a stale nonce)
+  Counter refused_credentials;  ///< a wrong user or password (or digest response)
+};
+
+/// RFC 7616 (qop=auth, MD5): the `response` of a Digest Authorization.
+std::string httpDigestResponse(const std::string& username, const std::string& realm, const std::string& password,
+                               const std::string& method, const std::string& uri, const std::string& nonce,
+                               const std::string& nc, const std::string& cnonce);
+
+/**
+ * \brief A camera's web server. Requests that pass authentication go to the handler (on the server's thread, one at
+ * a time); which requests need none is the handler's to say.
+ */
+class HttpCameraServer
+{
+public:
+  /// Answers one authenticated request: method, target (path and query), body.
+  using Handler =
+      std::function<HttpAnswer(const std::string& method, const std::string& target, const std::string& body)>;
+  /// True for a request served without HTTP authentication (ONVIF: WS-Security is in the body).
+  using Open = std::function<bool(const std::string& target)>;
+
+  HttpCameraServer(const HttpCameraServerConfig& config, Handler handler, Open open = nullptr);
+  ~HttpCameraServer();
+  HttpCameraServer(const HttpCameraServer&) = delete;
+  HttpCameraServer& operator=(const HttpCameraServer&) = delete;
+
+  std::uint16_t port() const
+  {
+    return port_;
+  }
+  /// Reads requests and never answers them.
+  void setSilent(bool silent);
+  /// Waits \p seconds before each answer.
+  void setDelay(double seconds);
+  /// Answers every request with \p status (e.g. 500) and a short body; 0 = normally.
+  void setErrorStatus(unsigned status);
+  /// Closes every open connection (a reboot, a network cut); keeps listening unless setListening(false).
+  void dropConnections();
+  /// Stops or resumes listening on the same port (stopped: connections are refused).
+  void setListening(bool listening);
+  /// Makes every outstanding nonce stale (the next request is challenged with stale=true).
+  void renewNonce();
+
+  ReceivedLog<HttpExchange>& received()
+  {
+    return received_;
+  }
+  const HttpServerCounters& counters() const
+  {
+    return counters_;
+  }
+
+private:
+  class Connection;
+  friend class Connection;
+
+  void listen();
+  void accept();
+  /// Runs \p work on the server's thread and waits for it.
+  void runOnServerThread(const std::function<void()>& work);
+  /// The answer to one request; \p challenge set for a 401.
+  HttpAnswer answer(const std::string& method, const std::string& target, const std::string& body,
+                    const std::string& authorization, std::string& challenge);
+  bool authorised(const std::string& method, const std::string& target, const std::string& authorization, bool& stale);
+  std::string newNonce();
+
+  const HttpCameraServerConfig config_;
+  const Handler handler_;
+  const Open open_;
+  boost::asio::io_context context_;
+  boost::asio::ip::tcp::acceptor acceptor_;
+  std::uint16_t port_ = 0;
+  std::thread thread_;
+  ReceivedLog<HttpExchange> received_;
+  HttpServerCounters counters_;
+
+  mutable std::mutex mutex_;  ///< guards the fault switches
+  bool silent_ = false;
+  double delay_ = 0.0;
+  unsigned error_status_ = 0;
+
+  // Server thread only.
+  std::set<std::shared_ptr<Connection>> connections_;
+  std::string nonce_;
+  unsigned nonce_used_ = 0;
+  std::uint64_t nonce_serial_ = 0;
+};
+
+}  // namespace ptz_action_server

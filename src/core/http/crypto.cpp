@@ -1,0 +1,72 @@
+#include "ptz_action_server/core/http/crypto.h"
+
+#include <openssl/evp.h>
+
+#include <cstdio>
+
+namespace ptz_action_server
+{
+namespace
+{
+std::string digest(const EVP_MD* type, const std::string& bytes)
+{
+  unsigned char out[EVP_MAX_MD_SIZE];
+  unsigned int size = 0;
+  EVP_Digest(bytes.data(), bytes.size(), out, &size, type, nullptr);
+  return std::string(reinterpret_cast<const char*>(out), size);
+}
+}  // namespace
+
+std::string md5Hex(const std::string& text)
+{
+  const std::string raw = digest(EVP_md5(), text);
+  std::string hex;
+  hex.reserve(2 * raw.size());
+  for (unsigned char byte : raw)
+  {
+    char digits[3];
+    std::snprintf(digits, sizeof(digits), "%02x", byte);
+    hex += digits;
+  }
+  return hex;
+}
+
+std::string sha1(const std::string& bytes)
+{
+  return digest(EVP_sha1(), bytes);
+}
+
+std::string base64Encode(const std::string& bytes)
+{
+  std::string text(4 * ((bytes.size() + 2) / 3) + 1, '\0');
+  const int size =
+      EVP_EncodeBlock(reinterpret_cast<unsigned char*>(&text[0]), reinterpret_cast<const unsigned char*>(bytes.data()),
+                      static_cast<int>(bytes.size()));
+  text.resize(static_cast<std::size_t>(size));
+  return text;
+}
+
+bool base64Decode(const std::string& text, std::string& bytes)
+{
+  if (text.size() % 4 != 0)
+  {
+    return false;
+  }
+  bytes.assign(3 * text.size() / 4 + 1, '\0');
+  const int size = EVP_DecodeBlock(reinterpret_cast<unsigned char*>(&bytes[0]),
+                                   reinterpret_cast<const unsigned char*>(text.data()), static_cast<int>(text.size()));
+  if (size < 0)
+  {
+    return false;
+  }
+  // EVP_DecodeBlock counts the padding as zero bytes.
+  std::size_t padding = 0;
+  for (std::size_t index = text.size(); index > 0 && text[index - 1] == '=' && padding < 2; --index)
+  {
+    ++padding;
+  }
+  bytes.resize(static_cast<std::size_t>(size) - padding);
+  return true;
+}
+
+}  // namespace ptz_action_server

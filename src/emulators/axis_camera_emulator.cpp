@@ -1,0 +1,299 @@
+#include "ptz_action_server/emulators/axis_camera_emulator.h"
+
+#include <cmath>
+#include <map>
+
+#include "ptz_action_server/core/text.h"
+#include "ptz_action_server/core/units.h"
+
+namespace ptz_action_server
+{
+namespace
+{
+int hexDigit(char c)
+{
+  if (c >= '0' && c <= '9')
+  {
+    return c - '0';
+  }
+  if (c >= 'a' && c <= 'f')
+  {
+    return c - 'a' + 10;
+  }
+  if (c >= 'A' && c <= 'F')
+  {
+    return c - 'A' + 10;
+  }
+  return -1;
+}
+
+std::string percentDecoded(const std::string& text)
+{
+  std::string decoded;
+  for (std::size_t index = 0; index < text.size(); ++index)
+  {
+    if (text[index] == '%' && index + 2 < text.size() && hexDigit(text[index + 1]) >= 0 &&
+        hexDigit(text[index + 2]) >= 0)
+    {
+      decoded += static_cast<char>(hexDigit(text[index + 1]) * 16 + hexDigit(text[index + 2]));
+      index += 2;
+    }
+    else
+    {
+      decoded += text[index] == '+' ? ' ' : text[index];
+    }
+  }
+  return decoded;
+}
+
+/// `a=1&b=2` into an ordered list (later arguments of the same name win, as in the camera's CGI).
+std::vector<std::pair<std::string, std::string>> formArguments(const std::string& form)
+{
+  std::vector<std::pair<std::string, std::string>> arguments;
+  std::size_t start = 0;
+  while (start < form.size())
+  {
+    std::size_t end = form.find('&', start);
+    end = end == std::string::npos ? form.size() : end;
+    const std::string pair = form.substr(start, end - start);
+    start = end + 1;
+    if (pair.empty())
+    {
+      continue;
+    }
+    const std::size_t equals = pair.find('=');
+    arguments.emplace_back(percentDecoded(pair.substr(0, equals)),
+                           equals == std::string::npos ? std::string() : percentDecoded(pair.substr(equals + 1)));
+  }
+  return arguments;
+}
+
+HttpAnswer errorBody(const std::string& words)
+{
+  return HttpAnswer{ 200, "text/plain", "Error:\r\n" + words + "\r\n" };
+}
+}  // namespace
+
+SimDeviceConfig AxisCameraEmulatorConfig::defaultDevice()
+{
+  SimDeviceConfig device = SimDeviceConfig::defaults();
+  device.axes[PAN].range = { toRadians(-170.0), toRadians(170.0) };
+  device.axes[TILT].range = { toRadians(-20.0), toRadians(90.0) };
+  device.axes[ZOOM].range = { 1.0, 18.0 };
+  device.axes[PAN].resolution = 0.0;
+  device.axes[TILT].resolution = 0.0;
+  return device;
+}
+
+AxisCameraEmulator::AxisCameraEmulator(const AxisCameraEmulatorConfig& config, std::shared_ptr<const Clock> clock)
+  : config_(config), clock_(std::move(clock)), model_(config.device, clock_->now())
+{
+  if (!config_.zoom_table.empty())
+  {
+    const std::string problem = vapix::ZoomTable::parse(config_.zoom_table, zoom_table_);
+    if (!problem.empty())
+    {
+      throw ConfigError("zoom table: " + problem);
+    }
+  }
+  server_ = std::make_unique<HttpCameraServer>(
+      config_.http, [this](const std::string& method, const std::string& target, const std::string& body) {
+        return handle(method, target, body);
+      });
+}
+
+PtzSample AxisCameraEmulator::sample() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return model_.sample(clock_->now());
+}
+
+void AxisCameraEmulator::setRefuse(bool refuse)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  refuse_ = refuse;
+}
+
+HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::string& target, const std::string& body)
+{
+  const std::size_t question = target.find('?');
+  if (target.substr(0, question) != vapix::PTZ_PATH)
+  {
+    return HttpAnswer{ 404, "text/html", "<HTML><HEAD><TITLE>404 Not Found</TITLE></HEAD></HTML>\r\n" };
+  }
+  const auto arguments =
+      formArguments(method == "POST" ? body : (question == std::string::npos ? "" : target.substr(question + 1)));
+  std::map<std::string, std::string> values(arguments.begin(), arguments.end());
+  for (const auto& argument : arguments)
+  {
+    values[argument.first] = argument.second;
+  }
+
+  std::lock_guard<std::mutex> lock(mutex_);
+  const TimePoint now = clock_->now();
+  double camera = 1.0;
+  if (values.count("camera") && (!vapix::parseNumber(values["camera"], camera) || camera < 1 ||
+                                 camera > config_.cameras || camera != std::floor(camera)))
+  {
+    return errorBody("camera: invalid camera: " + values["camera"]);
+  }
+  if (values.count("query"))
+  {
+    return query(values["query"], values.count("group") ? values["group"] : "", now);
+  }
+  // Check every argument before acting on any, as the CGI does.
+  struct Move
+  {
+    double value = 0.0;
+    bool given = false;
+  };
+  std::map<std::string, Move> numbers;
+  for (const char* name : { "pan", "tilt", "zoom", "speed", "rpan", "rtilt", "rzoom", "continuouszoommove" })
+  {
+    if (values.count(name))
+    {
+      Move& move = numbers[name];
+      move.given = vapix::parseNumber(values[name], move.value);
+      if (!move.given)
+      {
+        return errorBody(std::string(name) + ": bad value: " + values[name]);
+      }
+    }
+  }
+  double pan_percent = 0.0;
+  double tilt_percent = 0.0;
+  const bool continuous = values.count("continuouspantiltmove") > 0;
+  if (continuous)
+  {
+    const std::string& text = values["continuouspantiltmove"];
+    const std::size_t comma = text.find(',');
+    if (comma == std::string::npos || !vapix::parseNumber(text.substr(0, comma), pan_percent) ||
+        !vapix::parseNumber(text.substr(comma + 1), tilt_percent) || std::abs(pan_percent) > 100 ||
+        std::abs(tilt_percent) > 100)
+    {
+      return errorBody("continuouspantiltmove: bad value: " + text);
+    }
+  }
+  for (const auto& value : values)
+  {
+    static const char* const KNOWN[] = { "camera",
+                                         "pan",
+                                         "tilt",
+                                         "zoom",
+                                         "speed",
+                                         "rpan",
+                                         "rtilt",
+                                         "rzoom",
+                                         "continuouspantiltmove",
+                                         "continuouszoommove",
+                                         "move",
+                                         "imagerotation" };
+    if (std::find_if(std::begin(KNOWN), std::end(KNOWN), [&](const char* name) { return value.first == name; }) ==
+        std::end(KNOWN))
+    {
+      return errorBody(value.first + ": unknown argument");
+    }
+  }
+  if (values.count("move") && values["move"] != "stop" && values["move"] != "home")
+  {
+    return errorBody("move: unknown value: " + values["move"]);
+  }
+  if (refuse_)
+  {
+    return errorBody(REFUSAL);
+  }
+
+  if (numbers["speed"].given)
+  {
+    speed_ = static_cast<int>(std::clamp(numbers["speed"].value, 1.0, 100.0));
+  }
+  for (Axis axis : { PAN, TILT })
+  {
+    model_.setCruiseSpeed(axis, config_.device.axes[axis].motion.max_speed * speed_ / 100.0, now);
+  }
+  const PtzSample state = model_.sample(now);
+  auto go = [&](Axis axis, const char* absolute, const char* relative) {
+    if (numbers[absolute].given)
+    {
+      model_.goToAxis(axis, toRadians(numbers[absolute].value), now);
+    }
+    else if (numbers[relative].given)
+    {
+      model_.goToAxis(axis, state.position[axis] + toRadians(numbers[relative].value), now);
+    }
+  };
+  go(PAN, "pan", "rpan");
+  go(TILT, "tilt", "rtilt");
+  if (!zoom_table_.empty() && numbers["zoom"].given)
+  {
+    model_.goToAxis(ZOOM, zoom_table_.toFactor(numbers["zoom"].value), now);
+  }
+  if (!zoom_table_.empty() && numbers["rzoom"].given)
+  {
+    model_.goToAxis(ZOOM, zoom_table_.toFactor(zoom_table_.toValue(state.position[ZOOM]) + numbers["rzoom"].value),
+                    now);
+  }
+  if (continuous)
+  {
+    model_.moveAxisAtVelocity(PAN, config_.device.axes[PAN].motion.max_speed * pan_percent / 100.0, now);
+    model_.moveAxisAtVelocity(TILT, config_.device.axes[TILT].motion.max_speed * tilt_percent / 100.0, now);
+  }
+  if (!zoom_table_.empty() && numbers["continuouszoommove"].given)
+  {
+    model_.moveAxisAtVelocity(
+        ZOOM, config_.device.axes[ZOOM].motion.max_speed * numbers["continuouszoommove"].value / 100.0, now);
+  }
+  if (values["move"] == "stop")
+  {
+    model_.stop(now);
+  }
+  else if (values["move"] == "home")
+  {
+    model_.goTo({ 0.0, 0.0, config_.device.axes[ZOOM].range.min }, now);
+  }
+  return HttpAnswer{ 204, "text/plain", "" };
+}
+
+HttpAnswer AxisCameraEmulator::query(const std::string& what, const std::string& group, TimePoint now)
+{
+  const SimDeviceConfig& device = config_.device;
+  if (what == "position")
+  {
+    const PtzSample state = model_.sample(now);
+    std::string body =
+        formatText("pan=%.4f\r\ntilt=%.4f\r\n", toDegrees(state.position[PAN]), toDegrees(state.position[TILT]));
+    if (!zoom_table_.empty())
+    {
+      body += formatText("zoom=%.0f\r\n", std::round(zoom_table_.toValue(state.position[ZOOM])));
+    }
+    return HttpAnswer{ 200, "text/plain", body + "iris=2500\r\nfocus=7000\r\nautofocus=on\r\nautoiris=on\r\n" };
+  }
+  if (what == "limits")
+  {
+    std::string body = formatText("MinPan=%g\r\nMaxPan=%g\r\nMinTilt=%g\r\nMaxTilt=%g\r\n",
+                                  toDegrees(device.axes[PAN].range.min), toDegrees(device.axes[PAN].range.max),
+                                  toDegrees(device.axes[TILT].range.min), toDegrees(device.axes[TILT].range.max));
+    if (!zoom_table_.empty())
+    {
+      body += formatText("MinZoom=%g\r\nMaxZoom=%g\r\n", zoom_table_.minValue(), zoom_table_.maxValue());
+    }
+    return HttpAnswer{ 200, "text/plain",
+                       body + "MinIris=1\r\nMaxIris=9999\r\nMinFocus=1\r\nMaxFocus=9999\r\nMinFieldAngle=22\r\n"
+                              "MaxFieldAngle=623\r\n" };
+  }
+  if (what == "speed")
+  {
+    return HttpAnswer{ 200, "text/plain", formatText("speed=%d\r\n", speed_) };
+  }
+  if (what == "attributes")
+  {
+    if (group != "zoom" || zoom_table_.empty())
+    {
+      return errorBody("group: unknown value: " + group);
+    }
+    return HttpAnswer{ 200, "text/plain", "ZoomMagnification=" + zoom_table_.toText() + "\r\n" };
+  }
+  return errorBody("query: unknown value: " + what);
+}
+
+}  // namespace ptz_action_server

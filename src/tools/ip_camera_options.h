@@ -1,0 +1,112 @@
+/**
+ * \file
+ * \brief What the emulated IP cameras' programs share: the HTTP server options and faults, and the signal loop.
+ */
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+#include "emulator_main.h"
+
+#include "ptz_action_server/emulators/http_camera_server.h"
+
+namespace emulator_main
+{
+constexpr const char* HTTP_OPTIONS_HELP = R"(HTTP options:
+  --host HOST            address to listen on (default 127.0.0.1)
+  --port PORT            port (default %u; 0 = any free port)
+  --user NAME            the user the camera knows (default root)
+  --password TEXT        its password (default pass)
+  --auth MODE            digest (default), basic or none
+  --nonce-uses N         a digest nonce goes stale after N requests (default 0: never)
+Faults:
+  --delay S              answer every request S seconds late
+  --http-error CODE      answer every request with this status (e.g. 500)
+  --silent               start silent: read requests, never answer
+  --silent-after S       fall silent S seconds after start
+Signals: SIGUSR1 toggles silence, SIGUSR2 drops every connection; SIGINT / SIGTERM end the program.
+  --pid-file PATH        write the program's pid there (for whoever sends the signals)
+)";
+
+/// Options every emulated IP camera takes.
+struct HttpCameraOptions
+{
+  ptz_action_server::HttpCameraServerConfig http;
+  Schedule schedule;
+  bool silent = false;
+  double delay = 0.0;
+  unsigned error_status = 0;
+};
+
+/// The usage of an IP camera program: its own text, then the HTTP options with its default port.
+inline std::string httpCameraUsage(const char* own, unsigned default_port)
+{
+  char help[2048];
+  std::snprintf(help, sizeof(help), HTTP_OPTIONS_HELP, default_port);
+  return std::string(own) + help;
+}
+
+/// Takes \p arg if it is an HTTP or fault option.
+inline bool parseHttpCameraOption(const std::string& arg, const Value& value, const char* program, const char* usage,
+                                  HttpCameraOptions& options)
+{
+  using ptz_action_server::HttpAuth;
+  if (parseListenOption(arg, value, program, usage, options.http.host, options.http.port) ||
+      parseFaultOption(arg, value, program, usage, options.silent, options.schedule))
+  {
+    return true;
+  }
+  if (arg == "--user")
+  {
+    options.http.username = value();
+  }
+  else if (arg == "--password")
+  {
+    options.http.password = value();
+  }
+  else if (arg == "--auth")
+  {
+    const std::string auth = choice(program, value(), arg, { "digest", "basic", "none" }, usage);
+    options.http.auth = auth == "digest" ? HttpAuth::DIGEST : auth == "basic" ? HttpAuth::BASIC : HttpAuth::NONE;
+  }
+  else if (arg == "--nonce-uses")
+  {
+    options.http.nonce_uses = static_cast<unsigned>(numberIn(program, value(), arg, 0, 1e9, usage));
+  }
+  else if (arg == "--delay")
+  {
+    options.delay = number(program, value(), arg, usage);
+  }
+  else if (arg == "--http-error")
+  {
+    options.error_status = static_cast<unsigned>(numberIn(program, value(), arg, 100, 599, usage));
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+
+/// Applies the faults, prints \p start_line, then runs the signal loop until SIGINT / SIGTERM. Returns the exit code.
+inline int runHttpCamera(const char* program, const sigset_t& signals, ptz_action_server::HttpCameraServer& server,
+                         const HttpCameraOptions& options, const std::string& start_line)
+{
+  server.setSilent(options.silent);
+  server.setDelay(options.delay);
+  server.setErrorStatus(options.error_status);
+  std::printf("%s: listening on http://%s:%u (%s, user %s)%s%s\n", program, options.http.host.c_str(), server.port(),
+              start_line.c_str(), options.http.username.c_str(), options.silent ? ", silent" : "",
+              options.error_status != 0 ? ", answering every request with an error status" : "");
+  std::fflush(stdout);
+  Hooks hooks;
+  hooks.set_silent = [&server](bool silent) { server.setSilent(silent); };
+  // SIGUSR2 drops the connections; the client reconnects, so "replug" has nothing to do.
+  hooks.unplug = [&server] { server.dropConnections(); };
+  hooks.replug = [] {};
+  run(program, signals, hooks, options.schedule, options.silent);
+  return 0;
+}
+
+}  // namespace emulator_main

@@ -1,0 +1,247 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "device_fixtures_internal.h"
+#include "ptz_action_server/core/axis/axis_protocol.h"
+#include "ptz_action_server/core/onvif/onvif_protocol.h"
+#include "ptz_action_server/core/units.h"
+#include "ptz_action_server/emulators/axis_camera_emulator.h"
+#include "ptz_action_server/emulators/onvif_camera_emulator.h"
+
+namespace ptz_action_server
+{
+namespace
+{
+using Kind = DeviceCommand::Kind;
+
+/// What the IP camera fixtures share: an emulated camera behind its HTTP server.
+class HttpCameraFixture : public DeviceFixture
+{
+public:
+  void setSilent(bool silent) override
+  {
+    server().setSilent(silent);
+  }
+  /// The camera vanishes: its connections close and nothing listens (a closed keep-alive connection alone is no
+  /// loss on HTTP: the next request opens another).
+  void breakLink() override
+  {
+    server().setListening(false);
+    server().dropConnections();
+  }
+  void restoreLink() override
+  {
+    server().setListening(true);
+  }
+  /// A connection that closes and reopens at once is ordinary HTTP: only a request that fails, or silence, is a loss.
+  bool breaksAtOnce() const override
+  {
+    return false;
+  }
+  std::string linkLossWords() const override
+  {
+    return "http://127.0.0.1";
+  }
+  void clearCommands() override
+  {
+    server().received().clear();
+  }
+  AxisValues goal(double pan, double tilt) const override
+  {
+    return AxisValues{ { pan, tilt, 2.0 } };
+  }
+
+protected:
+  virtual HttpCameraServer& server() const = 0;
+};
+
+// ---------------------------------------------------------------- Axis (VAPIX)
+
+class AxisFixture : public HttpCameraFixture
+{
+public:
+  AxisFixture()
+  {
+    emulator_ = std::make_unique<AxisCameraEmulator>(AxisCameraEmulatorConfig());
+    config_.link.host = "127.0.0.1";
+    config_.link.port = emulator_->port();
+    config_.link.http.username = "root";
+    config_.link.http.password = "pass";
+    config_.link.http.request_timeout = 2.0;  // longer than the state timeout: silence is seen as silence
+    config_.session.state_timeout = TEST_STATE_TIMEOUT;
+  }
+
+  std::unique_ptr<DeviceBackend> makeBackend() override
+  {
+    return makeAxisBackend(config_);
+  }
+  std::vector<DeviceCommand> commands() const override
+  {
+    std::vector<DeviceCommand> commands;
+    for (const HttpExchange& exchange : emulator_->server().received().items())
+    {
+      const std::string& target = exchange.target;
+      Kind kind = Kind::OTHER;
+      bool aims = false;
+      double pan = 0.0;
+      if (target.find("query=") != std::string::npos)
+      {
+        kind = Kind::QUERY;
+      }
+      else if (target.find("move=stop") != std::string::npos)
+      {
+        kind = Kind::STOP;
+      }
+      else if (target.find("&pan=") != std::string::npos)
+      {
+        kind = Kind::MOVE;
+        aims = true;
+        pan = toRadians(std::stod(target.substr(target.find("&pan=") + 5)));
+      }
+      commands.push_back(DeviceCommand{ exchange.at, kind, exchange.method + " " + target, aims, pan });
+    }
+    return commands;
+  }
+  PtzSample deviceState() const override
+  {
+    return emulator_->sample();
+  }
+  std::string prepareRefusal(AxisValues& goal) override
+  {
+    emulator_->setRefuse(true);
+    goal = AxisValues{ { 0.3, 0.0, 1.0 } };
+    return std::string("the Axis camera refused 'pan=17.1887&tilt=0.0000&zoom=1&speed=100': ") +
+           AxisCameraEmulator::REFUSAL;
+  }
+  void expectGoalCommands(const std::vector<DeviceCommand>& commands, const AxisValues& target) const override
+  {
+    const vapix::ZoomTable table = zoomTable();
+    std::string expected = "GET /axis-cgi/com/ptz.cgi?camera=1&";
+    vapix::appendAbsoluteMove(expected, toDegrees(target[PAN]), toDegrees(target[TILT]), table.toValue(target[ZOOM]),
+                              100);
+    std::vector<std::string> texts;
+    for (const DeviceCommand& sent : withoutQueries(commands))
+    {
+      texts.push_back(sent.text);
+    }
+    EXPECT_EQ(texts, std::vector<std::string>{ expected });
+  }
+
+private:
+  HttpCameraServer& server() const override
+  {
+    return emulator_->server();
+  }
+  static vapix::ZoomTable zoomTable()
+  {
+    vapix::ZoomTable table;
+    vapix::ZoomTable::parse(AxisCameraEmulatorConfig::DEFAULT_ZOOM_TABLE, table);
+    return table;
+  }
+
+  std::unique_ptr<AxisCameraEmulator> emulator_;
+  AxisConfig config_;
+};
+
+// ---------------------------------------------------------------- ONVIF
+
+class OnvifFixture : public HttpCameraFixture
+{
+public:
+  /// \p degrees: the camera lists the degree space; otherwise goals travel in the generic space.
+  explicit OnvifFixture(bool degrees)
+  {
+    OnvifCameraEmulatorConfig camera;
+    camera.degree_space = degrees;
+    camera.clock_offset = -7200.0;        // the camera's clock is two hours behind: tokens must be stamped in its time
+    camera.http.auth = HttpAuth::DIGEST;  // and it demands HTTP Digest as well
+    camera.http.username = camera.username;
+    camera.http.password = camera.password;
+    emulator_ = std::make_unique<OnvifCameraEmulator>(camera);
+    config_.link.host = "127.0.0.1";
+    config_.link.port = emulator_->port();
+    config_.link.http.username = camera.username;
+    config_.link.http.password = camera.password;
+    config_.link.http.request_timeout = 2.0;
+    config_.onvif.username = camera.username;
+    config_.onvif.password = camera.password;
+    config_.session.state_timeout = TEST_STATE_TIMEOUT;
+  }
+
+  std::unique_ptr<DeviceBackend> makeBackend() override
+  {
+    return makeOnvifBackend(config_);
+  }
+  std::vector<DeviceCommand> commands() const override
+  {
+    std::vector<DeviceCommand> commands;
+    for (const HttpExchange& exchange : emulator_->server().received().items())
+    {
+      if (exchange.status == 401)
+      {
+        continue;  // the HTTP Digest challenge of a request that follows
+      }
+      onvif::SoapMessage message;
+      if (!onvif::parseSoap(exchange.body, message).empty())
+      {
+        continue;
+      }
+      const std::string operation = onvif::localName(*message.content);
+      Kind kind = operation == "GetStatus" ? Kind::QUERY : operation == "Stop" ? Kind::STOP : Kind::OTHER;
+      bool aims = false;
+      double pan = 0.0;
+      if (operation == "AbsoluteMove")
+      {
+        kind = Kind::MOVE;
+        const onvif::Element* pan_tilt =
+            onvif::child(onvif::child(message.content, onvif::ns::PTZ, "Position"), onvif::ns::SCHEMA, "PanTilt");
+        const char* space = onvif::attribute(pan_tilt, "space");
+        aims = pan_tilt != nullptr;
+        pan = aims ? std::stod(onvif::attribute(pan_tilt, "x")) : 0.0;
+        pan = space != nullptr && std::string(space) == onvif::DEGREE_SPACE ? toRadians(pan) : pan * M_PI;
+      }
+      commands.push_back(DeviceCommand{ exchange.at, kind, operation + " " + std::to_string(pan), aims, pan });
+    }
+    return commands;
+  }
+  PtzSample deviceState() const override
+  {
+    return emulator_->sample();
+  }
+  std::string prepareRefusal(AxisValues& goal) override
+  {
+    emulator_->setRefuse(true);
+    goal = AxisValues{ { 0.3, 0.0, 1.0 } };
+    return std::string("the ONVIF camera refused AbsoluteMove: ter:InvalidArgVal: ") + OnvifCameraEmulator::REFUSAL;
+  }
+  void expectGoalCommands(const std::vector<DeviceCommand>& commands, const AxisValues& target) const override
+  {
+    const std::vector<DeviceCommand> sent = withoutQueries(commands);
+    ASSERT_EQ(sent.size(), 1u) << describe(commands);
+    EXPECT_EQ(sent[0].kind, Kind::MOVE);
+    EXPECT_NEAR(sent[0].pan, target[PAN], 1e-5);
+  }
+
+private:
+  HttpCameraServer& server() const override
+  {
+    return emulator_->server();
+  }
+
+  std::unique_ptr<OnvifCameraEmulator> emulator_;
+  OnvifConfig config_;
+};
+}  // namespace
+
+std::vector<FixtureMaker> ipCameraFixtures()
+{
+  return {
+    { "AxisHttpDigest", [] { return std::make_unique<AxisFixture>(); } },
+    { "OnvifDegreeSpace", [] { return std::make_unique<OnvifFixture>(true); } },
+    { "OnvifGenericSpace", [] { return std::make_unique<OnvifFixture>(false); } },
+  };
+}
+
+}  // namespace ptz_action_server

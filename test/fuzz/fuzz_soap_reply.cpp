@@ -1,0 +1,53 @@
+/**
+ * \file
+ * \brief libFuzzer target: the SOAP envelope reader and every ONVIF reply reader on arbitrary bytes. They never read
+ * out of bounds, never crash on a missing element, and what they accept is sane.
+ */
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+#include "ptz_action_server/core/onvif/onvif_codec.h"
+
+using namespace ptz_action_server::onvif;
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  const std::string xml(reinterpret_cast<const char*>(data), size);
+  SoapMessage message;
+  if (!parseSoap(xml, message).empty())
+  {
+    return 0;
+  }
+  if (message.content == nullptr || (message.fault && message.fault_text.empty()))
+  {
+    std::abort();
+  }
+  double seconds = 0.0;
+  readSystemTime(message.content, seconds);
+  ServicePaths paths;
+  if (readCapabilities(message.content, paths).empty() && (paths.ptz.empty() || paths.ptz[0] != '/'))
+  {
+    std::abort();
+  }
+  Profile profile;
+  readProfiles(message.content, "", profile);
+  Node node;
+  if (readNode(message.content, "", node).empty() && node.degree_space && node.degree_pan.min > node.degree_pan.max)
+  {
+    std::abort();
+  }
+  double low = 0.0;
+  double high = 0.0;
+  if (readTimeoutRange(message.content, low, high).empty() && low > high)
+  {
+    std::abort();
+  }
+  Status status;
+  if (readStatus(message.content, status).empty() && !(std::isfinite(status.x) && std::isfinite(status.y)))
+  {
+    std::abort();
+  }
+  return 0;
+}
