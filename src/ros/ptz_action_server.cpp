@@ -275,9 +275,8 @@ void PtzActionServer::onCancel(actionlib::ServerGoalHandle<Action> handle, Actio
 {
   if (waiting_frame_goal_ && waiting_frame_goal_->id == handle.getGoalID().id)
   {
-    waiting_frame_goal_->cancel("cancelled while waiting for tf to have '" + waiting_frame_goal_->frame_id + "'");
-    waiting_frame_goal_.reset();
-    frame_wait_timer_.stop();
+    const WaitingFrameGoal goal = takeWaitingFrameGoal();
+    goal.cancel("cancelled while waiting for tf to have '" + goal.frame_id + "'");
     return;
   }
   supervisor_->cancel(actionName(kind), handle.getGoalID().id);
@@ -287,21 +286,25 @@ void PtzActionServer::supersedeWaitingFrameGoal(ActionKind kind)
 {
   if (waiting_frame_goal_)
   {
-    waiting_frame_goal_->reject(std::string("superseded by a new ") + actionName(kind) +
-                                " goal while waiting for tf to have '" + waiting_frame_goal_->frame_id + "'");
-    waiting_frame_goal_.reset();
-    frame_wait_timer_.stop();
+    const WaitingFrameGoal goal = takeWaitingFrameGoal();
+    goal.reject(std::string("superseded by a new ") + actionName(kind) + " goal while waiting for tf to have '" +
+                goal.frame_id + "'");
   }
+}
+
+PtzActionServer::WaitingFrameGoal PtzActionServer::takeWaitingFrameGoal()
+{
+  WaitingFrameGoal goal = std::move(*waiting_frame_goal_);
+  waiting_frame_goal_.reset();
+  frame_wait_timer_.stop();
+  return goal;
 }
 
 void PtzActionServer::checkWaitingFrameGoal()
 {
   if (waiting_frame_goal_ && frame_listener_->ready(kinematics_.baseFrame(), waiting_frame_goal_->frame_id))
   {
-    const WaitingFrameGoal goal = std::move(*waiting_frame_goal_);
-    waiting_frame_goal_.reset();
-    frame_wait_timer_.stop();
-    goal.submit();
+    takeWaitingFrameGoal().submit();
   }
 }
 

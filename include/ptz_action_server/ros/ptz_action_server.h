@@ -110,8 +110,6 @@ private:
   void submit(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   /// Rejects the frame goal waiting for tf, if any, because a \p kind goal came after it.
   void supersedeWaitingFrameGoal(ActionKind kind);
-  /// Submits the waiting frame goal once its frame is known or the wait is over.
-  void checkWaitingFrameGoal();
 
   /// Converts a goal into what to command (a GoalConverter); returns "" or the reason to reject it.
   std::string toCommand(const PtzGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
@@ -138,6 +136,11 @@ private:
     std::function<void(const std::string&)> reject;
     std::function<void(const std::string&)> cancel;
   };
+
+  /// Submits the waiting frame goal once its frame is known or the wait is over.
+  void checkWaitingFrameGoal();
+  /// The waiting frame goal, which waits no more (there must be one).
+  WaitingFrameGoal takeWaitingFrameGoal();
 
   // Frame lookups for position_abs_tf and frame goals; the listener feeds the buffer from the main queue.
   std::unique_ptr<FrameListener> frame_listener_;
