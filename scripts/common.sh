@@ -68,6 +68,18 @@ build_package() {
   set -u
 }
 
+# Configures and builds only the given targets (for the scripts that need a few programs, not the tests).
+build_targets() {
+  log "building $* into ${BUILD_DIR}"
+  mkdir -p "$BUILD_DIR"
+  cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCATKIN_ENABLE_TESTING=ON >"$BUILD_DIR/configure.log" 2>&1 ||
+    { cat "$BUILD_DIR/configure.log"; return 1; }
+  cmake --build "$BUILD_DIR" -j "$JOBS" --target "$@"
+  set +u
+  source "$BUILD_DIR/devel/setup.bash"
+  set -u
+}
+
 # A free TCP port on 127.0.0.1, for a private rosmaster.
 free_port() {
   /usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'

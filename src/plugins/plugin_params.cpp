@@ -1,12 +1,61 @@
 #include "plugin_params.h"
 
 #include <algorithm>
+#include <fstream>
 #include <string>
 
 namespace ptz_action_server
 {
 namespace
 {
+std::string trimmed(const std::string& text)
+{
+  const std::size_t first = text.find_first_not_of(" \t\r");
+  const std::size_t last = text.find_last_not_of(" \t\r");
+  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+}
+
+/// `username: NAME` and `password: SECRET` lines of \p path into \p http. Errors name the file, never its content.
+void readCredentialsFile(const std::string& path, HttpLinkConfig& http)
+{
+  std::ifstream file(path);
+  if (!file)
+  {
+    throw ConfigError("cannot read the credentials file " + path);
+  }
+  bool has_username = false;
+  bool has_password = false;
+  std::string line;
+  while (std::getline(file, line))
+  {
+    const std::size_t colon = line.find(':');
+    if (trimmed(line).empty() || trimmed(line)[0] == '#' || colon == std::string::npos)
+    {
+      continue;
+    }
+    const std::string key = trimmed(line.substr(0, colon));
+    std::string value = trimmed(line.substr(colon + 1));
+    if (value.size() >= 2 && (value.front() == '"' || value.front() == '\'') && value.back() == value.front())
+    {
+      value = value.substr(1, value.size() - 2);
+    }
+    if (key == "username")
+    {
+      http.username = value;
+      has_username = true;
+    }
+    else if (key == "password")
+    {
+      http.password = value;
+      has_password = true;
+    }
+  }
+  if (!has_username || !has_password)
+  {
+    throw ConfigError("the credentials file " + path + " needs a 'username:' and a 'password:' line");
+  }
+}
+
 bool standardBaud(int baud)
 {
   for (int rate : { 1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600 })
@@ -42,6 +91,12 @@ void readHttpLink(const ParamReader& params, LinkConfig& link)
                                  HttpAuth::NONE;
   http.username = params.text("username", http.username);
   http.password = params.text("password", http.password);
+  // A file wins over parameters: roslaunch prints parameter values, never a file's content.
+  const std::string credentials_file = params.text("credentials_file", "");
+  if (!credentials_file.empty())
+  {
+    readCredentialsFile(credentials_file, http);
+  }
   http.request_timeout = params.number("request_timeout", http.request_timeout, 0.05, 60.0);
   link.connect_timeout = params.number("connect_timeout", link.connect_timeout, 0.05, 60.0);
   readReconnect(params, link);

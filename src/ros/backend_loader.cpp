@@ -1,5 +1,7 @@
 #include "ptz_action_server/ros/backend_loader.h"
 
+#include <ros/names.h>
+
 #include "ptz_action_server/ros/ptz_action_server.h"
 
 namespace ptz_action_server
@@ -53,6 +55,9 @@ std::shared_ptr<PtzBackend> BackendLoader::load(const std::string& backend, cons
   plugins_.push_back(plugin);
   BackendContext context;
   context.urdf_limits = PtzActionServer::urdfLimits(kinematics);
+  context.joint_names = { { kinematics.panJoint().name, kinematics.tiltJoint().name } };
+  // The private namespace's parent is the node's namespace.
+  context.node_namespace = ros::NodeHandle(ros::names::parentNamespace(params.nodeHandle().getNamespace()));
   const std::string backend_namespace = name.substr(name.find('/') + 1);
   return plugin->create(params.child(backend_namespace), context);
 }

@@ -8,37 +8,33 @@
 
 #include "ptz_action_server/core/goal_validation.h"
 #include "ptz_action_server/core/text.h"
+#include "ptz_action_server/ros/function_callback.h"
 #include "ptz_action_server/ros/state_publisher.h"
 
 namespace ptz_action_server
 {
 namespace
 {
-constexpr double FRAME_LOOKUP_CACHE_TIME = 10.0;  ///< s of tf history kept for frame goals
+constexpr double FRAME_WAIT_CHECK_PERIOD = 0.02;  ///< s between checks of tf while a frame goal waits
 
 Eigen::Isometry3d identity()
 {
   return Eigen::Isometry3d::Identity();
 }
 
-/// Hands one state sample from the state thread to the main queue.
-class SampleCallback : public ros::CallbackInterface
+/// The tf frame a goal is expressed in; "" for goals without one.
+std::string frameOf(const PtzGoal&)
 {
-public:
-  SampleCallback(std::function<void(const GoalSample&)> handler, const GoalSample& sample)
-    : handler_(std::move(handler)), sample_(sample)
-  {
-  }
-  CallResult call() override
-  {
-    handler_(sample_);
-    return Success;
-  }
-
-private:
-  std::function<void(const GoalSample&)> handler_;
-  GoalSample sample_;
-};
+  return {};
+}
+std::string frameOf(const PtzRelToGoal& goal)
+{
+  return goal.frame_id;
+}
+std::string frameOf(const PtzFrameGoal& goal)
+{
+  return goal.frame_id;
+}
 }  // namespace
 
 const char* actionName(ActionKind kind)
@@ -149,6 +145,9 @@ NodeConfig NodeConfig::load(const ParamReader& params)
   monitor.stop_timeout = params.number("stop_timeout", monitor.stop_timeout, 0.1, 60.0);
   config.action_queue_size = params.integer("action_queue_size", config.action_queue_size, 1, 100000);
   config.status_list_timeout = params.number("status_list_timeout", config.status_list_timeout, 0.1, 3600.0);
+  config.frame_wait = params.number("frame_wait", config.frame_wait, 0.0, 60.0);
+  config.frame_listen_time =
+      params.number("frame_listen_time", config.frame_listen_time, std::max(config.frame_wait, 0.1), 1e6);
   return config;
 }
 
@@ -211,15 +210,12 @@ void PtzActionServer::start()
   state_publisher_ = std::make_unique<StatePublisher>(
       node_handle_, kinematics_, backend_, *supervisor_, config_.publish_tf, [this](const GoalSample& sample) {
         node_handle_.getCallbackQueue()->addCallback(
-            boost::make_shared<SampleCallback>([this](const GoalSample& handed) { supervisor_->supervise(handed); },
-                                               sample),
+            boost::make_shared<FunctionCallback>([this, sample] { supervisor_->supervise(sample); }),
             reinterpret_cast<uint64_t>(this));
       });
   state_publisher_->start();
 
-  tf_buffer_ = std::make_unique<tf2_ros::Buffer>(ros::Duration(FRAME_LOOKUP_CACHE_TIME));
-  // No dedicated thread: tf2_ros polls its queue every 10 ms, which alone costs more than the idle budget.
-  tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, node_handle_, false);
+  frame_listener_ = std::make_unique<FrameListener>(node_handle_, config_.frame_listen_time, config_.frame_wait);
 
   position_abs_server_ = makeServer<PtzAction>(ActionKind::POSITION_ABS);
   position_rel_server_ = makeServer<PtzAction>(ActionKind::POSITION_REL);
@@ -242,6 +238,32 @@ void PtzActionServer::start()
 template <class Action>
 void PtzActionServer::onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
 {
+  supersedeWaitingFrameGoal(kind);
+  const std::string frame_id = frameOf(*handle.getGoal());
+  if (kind == ActionKind::POSITION_ABS_TF || kind == ActionKind::FRAME)
+  {
+    frame_listener_->listen();
+    if (!frame_id.empty() && !frame_listener_->ready(kinematics_.baseFrame(), frame_id))
+    {
+      // The listener has just started: hold the goal until tf has its frame or frame_wait is over, without holding
+      // up anything else.
+      const auto result = [] { return typename Action::_action_result_type::_result_type(); };
+      waiting_frame_goal_ =
+          WaitingFrameGoal{ handle.getGoalID().id, frame_id, [this, handle, kind] { submit(handle, kind); },
+                            [handle, result](const std::string& text) mutable { handle.setRejected(result(), text); },
+                            [handle, result](const std::string& text) mutable { handle.setCanceled(result(), text); } };
+      frame_wait_timer_ =
+          node_handle_.createSteadyTimer(ros::WallDuration(FRAME_WAIT_CHECK_PERIOD),
+                                         [this](const ros::SteadyTimerEvent&) { checkWaitingFrameGoal(); });
+      return;
+    }
+  }
+  submit(handle, kind);
+}
+
+template <class Action>
+void PtzActionServer::submit(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
+{
   const auto goal = handle.getGoal();
   supervisor_->submit(
       std::make_unique<GoalHandleAdapter<Action>>(handle, kind),
@@ -251,7 +273,39 @@ void PtzActionServer::onGoal(actionlib::ServerGoalHandle<Action> handle, ActionK
 template <class Action>
 void PtzActionServer::onCancel(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
 {
+  if (waiting_frame_goal_ && waiting_frame_goal_->id == handle.getGoalID().id)
+  {
+    const WaitingFrameGoal goal = takeWaitingFrameGoal();
+    goal.cancel("cancelled while waiting for tf to have '" + goal.frame_id + "'");
+    return;
+  }
   supervisor_->cancel(actionName(kind), handle.getGoalID().id);
+}
+
+void PtzActionServer::supersedeWaitingFrameGoal(ActionKind kind)
+{
+  if (waiting_frame_goal_)
+  {
+    const WaitingFrameGoal goal = takeWaitingFrameGoal();
+    goal.reject(std::string("superseded by a new ") + actionName(kind) + " goal while waiting for tf to have '" +
+                goal.frame_id + "'");
+  }
+}
+
+PtzActionServer::WaitingFrameGoal PtzActionServer::takeWaitingFrameGoal()
+{
+  WaitingFrameGoal goal = std::move(*waiting_frame_goal_);
+  waiting_frame_goal_.reset();
+  frame_wait_timer_.stop();
+  return goal;
+}
+
+void PtzActionServer::checkWaitingFrameGoal()
+{
+  if (waiting_frame_goal_ && frame_listener_->ready(kinematics_.baseFrame(), waiting_frame_goal_->frame_id))
+  {
+    takeWaitingFrameGoal().submit();
+  }
 }
 
 std::string PtzActionServer::toCommand(const PtzGoal& goal, ActionKind kind, const PtzSample& sample,
@@ -330,7 +384,8 @@ std::string PtzActionServer::lookupFrame(const std::string& frame_id, Eigen::Iso
   try
   {
     // Time 0: the latest transform, without waiting, so other goals are never held up.
-    frame_in_base = tf2::transformToEigen(tf_buffer_->lookupTransform(kinematics_.baseFrame(), frame_id, ros::Time(0)));
+    frame_in_base = tf2::transformToEigen(
+        frame_listener_->buffer().lookupTransform(kinematics_.baseFrame(), frame_id, ros::Time(0)));
   }
   catch (const tf2::TransformException& error)
   {

@@ -211,13 +211,40 @@ protected:
     return absolute_->getState();
   }
 
-  /// The sim backend's fault hooks, when the node runs the sim backend.
+  /// moveTo(), repeated while the node refuses it because the device's link is still down (a remote device reports
+  /// again only at its next state message); the final state of the first goal it takes.
+  State moveToOnceTheLinkIsBack(double pan, double tilt, double zoom)
+  {
+    State state = State::REJECTED;
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(GOAL_WAIT);
+    while (state == State::REJECTED && ros::WallTime::now() < deadline)
+    {
+      state = moveTo(pan, tilt, zoom);
+      if (state == State::REJECTED)
+      {
+        EXPECT_NE(absolute_->getState().getText().find("link is down"), std::string::npos);
+        observer_->waitTicks(1);
+      }
+    }
+    return state;
+  }
+
+  /// The device's fault hooks (a SetSimFaults service): the sim backend's, or an emulator's named by ~fault_service.
   static bool setFaults(const ptz_action_server::SetSimFaults::Request& request)
   {
     ptz_action_server::SetSimFaults service;
     service.request = request;
-    return ros::service::exists("ptz_action_server/sim/set_faults", false) &&
-           ros::service::call("ptz_action_server/sim/set_faults", service) && service.response.success;
+    return faultHooks() && ros::service::call(faultService(), service) && service.response.success;
+  }
+
+  static std::string faultService()
+  {
+    return ros::NodeHandle("~").param<std::string>("fault_service", "ptz_action_server/sim/set_faults");
+  }
+
+  static bool faultHooks()
+  {
+    return ros::service::exists(faultService(), false);
   }
 
   static bool simBackend()

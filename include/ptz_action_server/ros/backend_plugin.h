@@ -7,7 +7,11 @@
  */
 #pragma once
 
+#include <array>
 #include <memory>
+#include <string>
+
+#include <ros/node_handle.h>
 
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/ros/param_reader.h"
@@ -19,6 +23,10 @@ struct BackendContext
 {
   /// Pan and tilt limits and speeds from the URDF joints; zoom is left at its defaults (the URDF has none).
   Capabilities urdf_limits;
+  /// The URDF's pan and tilt joint names (the node's ~pan_joint, ~tilt_joint).
+  std::array<std::string, 2> joint_names;
+  /// The node's namespace, where a backend that talks over ROS topics puts them.
+  ros::NodeHandle node_namespace;
   /// Clock the backend should run on.
   std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>();
 };

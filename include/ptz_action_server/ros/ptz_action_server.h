@@ -4,13 +4,13 @@
  */
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <actionlib/server/action_server.h>
 #include <ros/ros.h>
-#include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
 
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/PtzFrameAction.h"
@@ -19,6 +19,7 @@
 #include "ptz_action_server/core/goal_supervisor.h"
 #include "ptz_action_server/core/kinematics.h"
 #include "ptz_action_server/core/limits.h"
+#include "ptz_action_server/ros/frame_listener.h"
 #include "ptz_action_server/ros/param_reader.h"
 
 namespace ptz_action_server
@@ -33,10 +34,12 @@ struct NodeConfig
   GoalMonitorConfig monitor;         ///< tolerances, stall and timeout rules
   int action_queue_size = 2000;      ///< actionlib goal/cancel subscriber and publisher queues
   double status_list_timeout = 1.0;  ///< s a finished goal stays in actionlib's status list (actionlib: 5)
+  double frame_listen_time = 10.0;   ///< s the node keeps listening to tf after the last frame goal
+  double frame_wait = 1.0;           ///< s a frame goal may wait for tf once the node starts listening
 
   /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
   /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,
-  /// ~status_list_timeout.
+  /// ~status_list_timeout, ~frame_listen_time, ~frame_wait.
   static NodeConfig load(const ParamReader& params);
 };
 
@@ -102,6 +105,11 @@ private:
   void onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   template <class Action>
   void onCancel(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
+  /// Hands a goal to the supervisor, which converts, checks and runs it.
+  template <class Action>
+  void submit(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
+  /// Rejects the frame goal waiting for tf, if any, because a \p kind goal came after it.
+  void supersedeWaitingFrameGoal(ActionKind kind);
 
   /// Converts a goal into what to command (a GoalConverter); returns "" or the reason to reject it.
   std::string toCommand(const PtzGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
@@ -119,9 +127,25 @@ private:
   std::unique_ptr<GoalSupervisor> supervisor_;       ///< the goal state machine, on the main thread; built by start()
   std::unique_ptr<StatePublisher> state_publisher_;  ///< the 10 Hz tick, on its own thread; built by start()
 
+  /// A frame goal held back, neither accepted nor rejected, while a listener that just started hears tf.
+  struct WaitingFrameGoal
+  {
+    std::string id;        ///< actionlib goal id, for a cancel
+    std::string frame_id;  ///< the frame it waits for
+    std::function<void()> submit;
+    std::function<void(const std::string&)> reject;
+    std::function<void(const std::string&)> cancel;
+  };
+
+  /// Submits the waiting frame goal once its frame is known or the wait is over.
+  void checkWaitingFrameGoal();
+  /// The waiting frame goal, which waits no more (there must be one).
+  WaitingFrameGoal takeWaitingFrameGoal();
+
   // Frame lookups for position_abs_tf and frame goals; the listener feeds the buffer from the main queue.
-  std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
-  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  std::unique_ptr<FrameListener> frame_listener_;
+  std::optional<WaitingFrameGoal> waiting_frame_goal_;
+  ros::SteadyTimer frame_wait_timer_;  ///< checks the waiting frame goal's frame while one waits
 
   std::unique_ptr<PtzServer> position_abs_server_;
   std::unique_ptr<PtzServer> position_rel_server_;
