@@ -23,20 +23,60 @@ SimDeviceConfig PanTiltEmulatorConfig::defaultDevice()
 PanTiltEmulator::PanTiltEmulator(const PanTiltEmulatorConfig& config, std::shared_ptr<const Clock> clock)
   : config_(config), clock_(std::move(clock)), pan_tilt_(config.device, clock_, config.format)
 {
-  socket_.bind(config.host, config.port);
-  thread_ = std::thread(&PanTiltEmulator::run, this);
+  if (!config_.serial)
+  {
+    socket_.bind(config.host, config.port);
+    thread_ = std::thread(&PanTiltEmulator::run, this);
+    return;
+  }
+  // A serial line: SLIP frames on a pseudo-terminal, whose I/O thread runs both handlers.
+  DevicePortConfig line = config_.line;
+  line.tick_period = 0.01;
+  DevicePort::Handlers handlers;
+  handlers.on_bytes = [this](const std::uint8_t* data, std::size_t size, TimePoint) {
+    slip_.feed(data, size,
+               [this](const std::uint8_t* frame, std::size_t length) { handleDatagram(frame, length, UdpEndpoint{}); });
+  };
+  handlers.on_tick = [this] { sendDueReplies(clock_->now()); };
+  line_ = DevicePort::create(line, handlers);
+  line_->start();
 }
 
 PanTiltEmulator::~PanTiltEmulator()
 {
   running_ = false;
-  socket_.interrupt();
-  thread_.join();
+  if (thread_.joinable())
+  {
+    socket_.interrupt();
+    thread_.join();
+  }
+  line_.reset();
 }
 
 UdpEndpoint PanTiltEmulator::endpoint() const
 {
   return socket_.localEndpoint();
+}
+
+std::string PanTiltEmulator::path() const
+{
+  return line_ ? line_->path() : std::string();
+}
+
+void PanTiltEmulator::unplug()
+{
+  if (line_)
+  {
+    line_->unplug();
+  }
+}
+
+void PanTiltEmulator::replug()
+{
+  if (line_)
+  {
+    line_->replug();
+  }
 }
 
 void PanTiltEmulator::setSilent(bool silent)
@@ -82,19 +122,23 @@ void PanTiltEmulator::run()
     {
       handleDatagram(buffer.data(), size, from);
     }
-    const TimePoint now = clock_->now();
-    while (!pending_replies_.empty() && pending_replies_.front().send_at <= now)
+    sendDueReplies(clock_->now());
+  }
+}
+
+void PanTiltEmulator::sendDueReplies(TimePoint now)
+{
+  while (!pending_replies_.empty() && pending_replies_.front().send_at <= now)
+  {
+    sendState(pending_replies_.front().to);
+    pending_replies_.pop_front();
+  }
+  if (has_client_ && config_.state_period > 0.0 && now >= next_state_at_)
+  {
+    next_state_at_ = addSeconds(now, config_.state_period);
+    if (!silent_)
     {
-      sendState(pending_replies_.front().to);
-      pending_replies_.pop_front();
-    }
-    if (has_client_ && config_.state_period > 0.0 && now >= next_state_at_)
-    {
-      next_state_at_ = addSeconds(now, config_.state_period);
-      if (!silent_)
-      {
-        sendState(last_client_);
-      }
+      sendState(last_client_);
     }
   }
 }
@@ -209,7 +253,15 @@ void PanTiltEmulator::sendState(const UdpEndpoint& to)
   std::uint8_t frame[MAX_PARAMS_FRAME_SIZE];
   int size = 0;
   params.encode(frame, sizeof(frame), size, nullptr, config_.format);
-  if (socket_.sendTo(to, frame, static_cast<std::size_t>(size)))
+  if (line_)
+  {
+    framed_.clear();
+    slip::encode(frame, static_cast<std::size_t>(size), framed_);
+    line_->send(framed_.data(), framed_.size());
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++counters_.replies_sent;
+  }
+  else if (socket_.sendTo(to, frame, static_cast<std::size_t>(size)))
   {
     std::lock_guard<std::mutex> lock(mutex_);
     ++counters_.replies_sent;

@@ -3,6 +3,7 @@
 
 #include <pluginlib/class_list_macros.hpp>
 
+#include "pantilt_settings.h"
 #include "plugin_params.h"
 #include "visca_params.h"
 #include "ptz_action_server/core/flir/flir_protocol.h"
@@ -12,16 +13,16 @@
 namespace ptz_action_server
 {
 /**
- * \brief Builds the serial backend from ~serial/... parameters: `protocol: flir`, `pelco_d` or `visca`, on a serial
- * port (`transport: serial`) or over TCP (`transport: tcp`: FLIR E-series on port 4000, a Pelco-D camera behind a
- * serial-to-Ethernet server, a VISCA camera taking raw VISCA); VISCA also over UDP (`transport: udp`).
+ * \brief Builds the serial backend from ~serial/... parameters: `protocol: flir`, `pelco_d`, `visca` or `pantilt`, on a
+ * serial port (`transport: serial`) or over TCP (`transport: tcp`: FLIR E-series on port 4000, a Pelco-D camera behind
+ * a serial-to-Ethernet server, a VISCA camera taking raw VISCA); VISCA also over UDP (`transport: udp`).
  */
 class SerialBackendPlugin : public BackendPlugin
 {
 public:
   std::shared_ptr<PtzBackend> create(const ParamReader& params, const BackendContext& context) override
   {
-    const std::string protocol = params.choice("protocol", "flir", { "flir", "pelco_d", "visca" });
+    const std::string protocol = params.choice("protocol", "flir", { "flir", "pelco_d", "visca", "pantilt" });
     const std::string transport = params.choice("transport", "serial", { "serial", "tcp", "udp" });
     LinkConfig link;
     if (transport == "serial")
@@ -31,7 +32,8 @@ public:
     else if (transport == "tcp")
     {
       link.kind = LinkKind::TCP;
-      const int default_port = protocol == "flir" ? 4000 : (protocol == "visca" ? 5678 : 4001);
+      const int default_port =
+          protocol == "flir" ? 4000 : (protocol == "visca" ? 5678 : (protocol == "pantilt" ? 4002 : 4001));
       link.host = params.text("host", link.host);
       link.port = static_cast<std::uint16_t>(params.integer("tcp_port", default_port, 1, 65535));
       link.connect_timeout = params.number("connect_timeout", link.connect_timeout, 0.1, 60.0);
@@ -55,6 +57,17 @@ public:
     readSessionTiming(params, session);
     const double reply_timeout = params.number("reply_timeout", 0.0, 0.0, 10.0);
 
+    if (protocol == "pantilt")
+    {
+      // PanTilt frames in SLIP (RFC 1055) on the byte stream; the device reports as over UDP.
+      PanTiltConfig config;
+      config.link = link;
+      const ParamReader pantilt = params.child("pantilt");
+      config.session.state_timeout = pantilt.number("state_timeout", config.session.state_timeout, 0.05, 60.0);
+      readSessionTiming(params, config.session);
+      readPanTiltSettings(pantilt, context, config.pantilt);
+      return makePanTiltBackend(config, context.clock);
+    }
     if (protocol == "visca")
     {
       ViscaConfig config;

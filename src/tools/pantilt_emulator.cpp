@@ -23,6 +23,8 @@ It speaks one wire format; frames of another PanTilt format are counted and drop
 Options:
   --host HOST            address to listen on (default 127.0.0.1)
   --port PORT            UDP port (default 5000; 0 = any free port)
+  --pty LINK             a serial line instead: SLIP frames (RFC 1055) on a pseudo-terminal, with this symlink to it
+  --baud N               the pseudo-terminal's pace, 8N1 (default 115200)
   --format FORMAT        wire format (default seed):
                            seed   the seed's: version bytes 1 0, 7-byte commands, nine params fields
                            v1.0   PanTilt 1.0.x: version bytes 1 0, 15-byte commands with arguments, eleven fields
@@ -32,7 +34,7 @@ Options:
   --delay S              delay every reply by S seconds
   --silent               start silent: ignore everything, send nothing (an unplugged device)
   --silent-after S       fall silent S seconds after start
-Signals: SIGUSR1 toggles silence; SIGINT / SIGTERM end the program.
+Signals: SIGUSR1 toggles silence, SIGUSR2 unplugs / replugs the pseudo-terminal; SIGINT / SIGTERM end the program.
   --pid-file PATH        write the program's pid there (for whoever sends the signals)
 )";
 }  // namespace
@@ -52,7 +54,17 @@ int main(int argc, char** argv)
         {
           return true;
         }
-        if (arg == "--format")
+        if (arg == "--pty")
+        {
+          config.serial = true;
+          config.line.link = value();
+          config.line.baud = 115200;
+        }
+        else if (arg == "--baud")
+        {
+          config.line.baud = static_cast<unsigned>(emulator_main::numberIn(PROGRAM, value(), arg, 1200, 921600, USAGE));
+        }
+        else if (arg == "--format")
         {
           if (!cr::pantilt::parseWireFormat(value(), config.format))
           {
@@ -93,11 +105,19 @@ int main(int argc, char** argv)
     device.setSilent(silent);
     device.setDropRatio(drop);
     device.setReplyDelay(delay);
-    std::printf("%s: listening on %s, format %s, state every %.2f s%s\n", PROGRAM, device.endpoint().toString().c_str(),
+    const std::string where = config.serial ?
+                                  device.path() + " (SLIP) at " + std::to_string(config.line.baud) + " baud" :
+                                  device.endpoint().toString();
+    std::printf("%s: listening on %s, format %s, state every %.2f s%s\n", PROGRAM, where.c_str(),
                 cr::pantilt::toString(config.format), config.state_period, silent ? ", silent" : "");
     std::fflush(stdout);
     emulator_main::Hooks hooks;
     hooks.set_silent = [&device](bool value) { device.setSilent(value); };
+    if (config.serial)
+    {
+      hooks.unplug = [&device] { device.unplug(); };
+      hooks.replug = [&device] { device.replug(); };
+    }
     emulator_main::run(PROGRAM, signals, hooks, schedule, silent);
     // What it did, so that a client speaking another format shows up here too.
     const ptz_action_server::PanTiltEmulatorCounters counted = device.counters();

@@ -22,6 +22,8 @@
 #include <thread>
 #include <vector>
 
+#include "ptz_action_server/core/framing/slip.h"
+#include "ptz_action_server/emulators/device_port.h"
 #include "ptz_action_server/emulators/sim_pantilt.h"
 #include "ptz_action_server/emulators/received_log.h"
 #include "ptz_action_server/emulators/udp_socket.h"
@@ -34,6 +36,8 @@ struct PanTiltEmulatorConfig
 {
   std::string host = "127.0.0.1";
   std::uint16_t port = 0;  ///< 0: an ephemeral port (see endpoint())
+  bool serial = false;     ///< true: SLIP frames on a pseudo-terminal (line) instead of UDP datagrams
+  DevicePortConfig line;   ///< serial: the pseudo-terminal
   WireFormat format = WireFormat::SEED;
   double state_period = 0.1;  ///< s between unsolicited params frames (0: replies only)
   SimDeviceConfig device = defaultDevice();
@@ -59,7 +63,7 @@ struct PanTiltEmulatorCounters
   }
 };
 
-/// One datagram as it reached the device.
+/// One frame as it reached the device (a datagram, or a SLIP frame on a serial line).
 struct ReceivedDatagram
 {
   TimePoint at;
@@ -67,7 +71,8 @@ struct ReceivedDatagram
 };
 
 /**
- * \brief Listens on UDP, executes what arrives on a SimPanTilt, and reports its params. Owns its I/O thread.
+ * \brief Listens on UDP (a frame per datagram) or on a pseudo-terminal (SLIP frames, RFC 1055), executes what
+ * arrives on a SimPanTilt, and reports its params. Owns its I/O thread (the pseudo-terminal's, on a serial line).
  *
  * Fault switches (any thread): silent (receive and do nothing, send nothing: an unplugged device), a ratio of
  * replies dropped, and a reply delay.
@@ -81,8 +86,13 @@ public:
   PanTiltEmulator(const PanTiltEmulator&) = delete;
   PanTiltEmulator& operator=(const PanTiltEmulator&) = delete;
 
-  /// Where the device listens.
+  /// Where the device listens (udp).
   UdpEndpoint endpoint() const;
+  /// serial: the pseudo-terminal (or its link); "" on UDP.
+  std::string path() const;
+  /// serial: the port vanishes / comes back.
+  void unplug();
+  void replug();
 
   void setSilent(bool silent);
   void setDropRatio(double ratio);
@@ -118,6 +128,8 @@ private:
   void handleDatagram(const std::uint8_t* data, std::size_t size, const UdpEndpoint& from);
   void reply(const UdpEndpoint& to, TimePoint now);
   void sendState(const UdpEndpoint& to);
+  /// Delayed replies and the periodic params frame, when due.
+  void sendDueReplies(TimePoint now);
   int millisecondsToNextEvent(TimePoint now) const;
 
   const PanTiltEmulatorConfig config_;
@@ -140,8 +152,11 @@ private:
   TimePoint next_state_at_{};
   std::deque<PendingReply> pending_replies_;
   std::mt19937 random_{ 12345 };
+  slip::Decoder slip_;
+  std::vector<std::uint8_t> framed_;
 
-  std::thread thread_;  ///< last: starts after everything above exists
+  std::unique_ptr<DevicePort> line_;  ///< serial only
+  std::thread thread_;                ///< udp only; last: starts after everything above exists
 };
 
 }  // namespace ptz_action_server

@@ -37,12 +37,24 @@ Capabilities PanTiltProtocol::capabilities() const
 void PanTiltProtocol::onConnected()
 {
   heard_ = false;
+  slip_.reset();
   // The speeds first: the device answers in order, so once its first frame is here they have been taken.
   sendSpeeds();
   sendStateRequest();
 }
 
 void PanTiltProtocol::onReceived(const std::uint8_t* data, std::size_t size)
+{
+  if (session_.carriesDatagrams())
+  {
+    handleFrame(data, size);
+    return;
+  }
+  slip_.feed(data, size, [this](const std::uint8_t* frame, std::size_t length) { handleFrame(frame, length); });
+  counters_.bad_framing.set(slip_.counts().bad_escapes + slip_.counts().overlong);
+}
+
+void PanTiltProtocol::handleFrame(const std::uint8_t* data, std::size_t size)
 {
   DecodeError error = DecodeError::NONE;
   cr::pantilt::PanTiltParams params;
@@ -157,7 +169,8 @@ void PanTiltProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
                       { "dropped: bad version", counters_.bad_version },
                       { "dropped: bad mask", counters_.bad_mask },
                       { "dropped: bad value", counters_.bad_value },
-                      { "dropped: foreign format", counters_.foreign_format_frames } });
+                      { "dropped: foreign format", counters_.foreign_format_frames },
+                      { "dropped: bad SLIP framing", counters_.bad_framing } });
 }
 
 void PanTiltProtocol::sendSetParam(PanTiltParam id, double value)
@@ -166,7 +179,7 @@ void PanTiltProtocol::sendSetParam(PanTiltParam id, double value)
   int size = 0;
   if (PanTilt::encodeSetParamCommand(frame, size, id, static_cast<float>(value), settings_.format))
   {
-    session_.write(frame, static_cast<std::size_t>(size));
+    send(frame, static_cast<std::size_t>(size));
   }
 }
 
@@ -176,7 +189,7 @@ void PanTiltProtocol::sendCommand(PanTiltCommand id, double arg1, double arg2)
   int size = 0;
   if (PanTilt::encodeCommand(frame, size, id, settings_.format, static_cast<float>(arg1), static_cast<float>(arg2)))
   {
-    session_.write(frame, static_cast<std::size_t>(size));
+    send(frame, static_cast<std::size_t>(size));
   }
 }
 
@@ -194,7 +207,19 @@ void PanTiltProtocol::sendStateRequest()
   int size = 0;
   cr::pantilt::PanTiltParams().encode(frame, sizeof(frame), size, &empty, settings_.format);
   last_request_at_ = session_.now();
-  session_.write(frame, static_cast<std::size_t>(size));
+  send(frame, static_cast<std::size_t>(size));
+}
+
+void PanTiltProtocol::send(const std::uint8_t* frame, std::size_t size)
+{
+  if (session_.carriesDatagrams())
+  {
+    session_.write(frame, size);  // a datagram is a frame
+    return;
+  }
+  framed_.clear();  // keeps its capacity: no allocation once the first frames went out
+  slip::encode(frame, size, framed_);
+  session_.write(framed_.data(), framed_.size());
 }
 
 std::unique_ptr<DeviceBackend> makePanTiltBackend(const PanTiltConfig& config, std::shared_ptr<const Clock> clock)

@@ -21,14 +21,27 @@ using Kind = DeviceCommand::Kind;
 class PanTiltFixture : public DeviceFixture
 {
 public:
-  explicit PanTiltFixture(cr::pantilt::WireFormat format)
+  /// Over UDP, or (\p serial) in SLIP frames on a pseudo-terminal.
+  explicit PanTiltFixture(cr::pantilt::WireFormat format, bool serial = false)
   {
     emulator_config_.format = format;
     emulator_config_.state_period = 0.05;
+    emulator_config_.serial = serial;
+    if (serial)
+    {
+      emulator_config_.line.link = uniqueLink("pantilt");
+      emulator_config_.line.baud = 115200;
+      config_.link.kind = LinkKind::SERIAL;
+      config_.link.path = emulator_config_.line.link;
+      config_.link.baud = 115200;
+    }
     emulator_ = std::make_unique<PanTiltEmulator>(emulator_config_);
-    emulator_config_.port = emulator_->endpoint().port();  // a restart takes the same port
-    config_.link.port = emulator_config_.port;
-    config_.link.local_host = "127.0.0.1";
+    if (!serial)
+    {
+      emulator_config_.port = emulator_->endpoint().port();  // a restart takes the same port
+      config_.link.port = emulator_config_.port;
+      config_.link.local_host = "127.0.0.1";
+    }
     config_.pantilt.format = format;
     config_.session.state_timeout = TEST_STATE_TIMEOUT;
   }
@@ -81,22 +94,31 @@ public:
   }
   void breakLink() override
   {
+    if (emulator_config_.serial)
+    {
+      emulator_->unplug();
+      return;
+    }
     emulator_.reset();  // the device controller is gone
   }
   void restoreLink() override
   {
-    if (!emulator_)
+    if (emulator_config_.serial)
+    {
+      emulator_->replug();
+    }
+    else if (!emulator_)
     {
       emulator_ = std::make_unique<PanTiltEmulator>(emulator_config_);
     }
   }
   bool breaksAtOnce() const override
   {
-    return false;
+    return emulator_config_.serial;
   }
   std::string linkLossWords() const override
   {
-    return "no state from a PanTilt device controller";
+    return emulator_config_.serial ? config_.link.path : "no state from a PanTilt device controller";
   }
   void expectGoalCommands(const std::vector<DeviceCommand>& commands, const AxisValues& target) const override
   {
@@ -296,6 +318,8 @@ std::vector<FixtureMaker> networkDeviceFixtures()
     { "PanTiltUdpSeed", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireFormat::SEED); } },
     { "PanTiltUdpV1_0", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireFormat::V1_0); } },
     { "PanTiltUdpV1_1", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireFormat::V1_1); } },
+    { "PanTiltSerialSeed", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireFormat::SEED, true); } },
+    { "PanTiltSerialV1_1", [] { return std::make_unique<PanTiltFixture>(cr::pantilt::WireFormat::V1_1, true); } },
     { "DigiViewTcpV0_5", [] { return std::make_unique<DigiViewFixture>(LinkKind::TCP, digiview::Format::V0_5); } },
     { "DigiViewUdpV0_5", [] { return std::make_unique<DigiViewFixture>(LinkKind::UDP, digiview::Format::V0_5); } },
     { "DigiViewTcpV1_0", [] { return std::make_unique<DigiViewFixture>(LinkKind::TCP, digiview::Format::V1_0); } },

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "ptz_action_server/core/device/device_backend.h"
+#include "ptz_action_server/core/framing/slip.h"
 #include "ptz_action_server/core/pantilt/pantilt_codec.h"
 
 namespace ptz_action_server
@@ -39,7 +40,7 @@ struct PanTiltConfig
   PanTiltSettings pantilt;
 };
 
-/// Why datagrams from the device were dropped; each is counted under exactly one reason. (Datagrams from anyone
+/// Why frames from the device were dropped; each is counted under exactly one reason. (Datagrams from anyone
 /// else are the link's `foreign_datagrams`.)
 struct PanTiltCounters
 {
@@ -50,15 +51,16 @@ struct PanTiltCounters
   Counter bad_mask;
   Counter bad_value;              ///< a field no device of the format could report (NaN angles, subnormals, ...)
   Counter foreign_format_frames;  ///< a valid frame of another PanTilt format: never taken as state
+  Counter bad_framing;            ///< serial: SLIP frames with a bad escape or too long, dropped before decoding
 
   std::uint64_t dropped() const
   {
-    return bad_size + bad_header + bad_version + bad_mask + bad_value + foreign_format_frames;
+    return bad_size + bad_header + bad_version + bad_mask + bad_value + foreign_format_frames + bad_framing;
   }
 };
 
 /**
- * \brief PanTilt over a DeviceSession on UDP.
+ * \brief PanTilt over a DeviceSession: UDP (a frame per datagram) or a serial line (SLIP frames, RFC 1055).
  *
  * Goals become SET_PARAM (speeds, angles in degrees) + COMMAND GO_TO_PAN_TILT_ANGLE frames (v1.0 and v1.1: one
  * COMMAND with the angles as arguments); velocity goals become MOVE_PAN_TILT in v1.x and, in the seed's format, which
@@ -74,7 +76,7 @@ public:
 
   std::string name() const override
   {
-    return "pantilt_udp";
+    return session_.carriesDatagrams() ? "pantilt_udp" : "serial/pantilt";
   }
   std::string deviceName() const override
   {
@@ -84,8 +86,9 @@ public:
   Capabilities capabilities() const override;
   /// The speeds and a state request (a params frame with an empty mask).
   void onConnected() override;
-  /// One params frame per datagram; anything else is counted under its reason and dropped. A frame of another
-  /// PanTilt format before the first valid one fails the start-up: the device speaks another format.
+  /// One params frame per datagram, or per SLIP frame on a byte stream (a serial line); anything else is counted
+  /// under its reason and dropped. A frame of another PanTilt format before the first valid one fails the start-up:
+  /// the device speaks another format.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   /// A state request while the device is quiet (it reports on its own otherwise).
   void poll() override;
@@ -105,6 +108,9 @@ public:
   }
 
 private:
+  void handleFrame(const std::uint8_t* data, std::size_t size);
+  /// One frame to the device: a datagram, or a SLIP frame on a byte stream.
+  void send(const std::uint8_t* frame, std::size_t size);
   void sendSetParam(cr::pantilt::PanTiltParam id, double value);
   void sendCommand(cr::pantilt::PanTiltCommand id, double arg1 = 0.0, double arg2 = 0.0);
   void sendSpeeds();
@@ -115,6 +121,8 @@ private:
   PanTiltCounters counters_;
 
   // I/O thread only.
+  slip::Decoder slip_{ 256 };
+  std::vector<std::uint8_t> framed_;
   bool heard_ = false;  ///< a valid frame arrived since the socket opened
   TimePoint last_frame_at_{};
   TimePoint last_request_at_{};
