@@ -59,6 +59,12 @@ GoalMonitor GoalMonitor::forStop(const PtzSample& start, const GoalMonitorConfig
   return GoalMonitor(Kind::STOP, AxisValues{}, start, Capabilities{}, config, now);
 }
 
+GoalMonitor GoalMonitor::forTrack(const AxisValues& aim, const PtzSample& start, const Capabilities& capabilities,
+                                  const GoalMonitorConfig& config, TimePoint now)
+{
+  return GoalMonitor(Kind::TRACK, aim, start, capabilities, config, now);
+}
+
 GoalMonitor::GoalMonitor(Kind kind, const AxisValues& goal, const PtzSample& start, const Capabilities& capabilities,
                          const GoalMonitorConfig& config, TimePoint now)
   : kind_(kind)
@@ -112,7 +118,15 @@ GoalVerdict GoalMonitor::update(const PtzSample& sample, TimePoint now)
     verdict.device_fault = true;
     return verdict;
   }
-  return kind_ == Kind::POSITION ? updatePosition(sample, now, verdict) : updateVelocity(sample, now, verdict);
+  switch (kind_)
+  {
+    case Kind::POSITION:
+      return updatePosition(sample, now, verdict);
+    case Kind::TRACK:
+      return verdict;  // goes on until cancelled or preempted
+    default:
+      return updateVelocity(sample, now, verdict);
+  }
 }
 
 GoalVerdict GoalMonitor::updatePosition(const PtzSample& sample, TimePoint now, GoalVerdict verdict)

@@ -27,15 +27,17 @@ void GoalSupervisor::submit(std::unique_ptr<GoalHandle> goal, const GoalConverte
     goal->reject(reason);
     return;
   }
-  const ValidatedGoal validated = command.velocity ? validateVelocityGoal(command.values, limits_, clamp_goals_) :
-                                                     validatePositionGoal(command.values, limits_, clamp_goals_);
+  // A tracked target outside the limits is followed as far as the limits allow.
+  const bool clamp = clamp_goals_ || command.track;
+  const ValidatedGoal validated = command.velocity ? validateVelocityGoal(command.values, limits_, clamp) :
+                                                     validatePositionGoal(command.values, limits_, clamp);
   if (!validated.accepted)
   {
     goal->reject(validated.message);
     return;
   }
   command.values = validated.values;
-  activate(std::move(goal), command, validated.message);
+  activate(std::move(goal), command, command.track ? std::string() : validated.message);
 }
 
 void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalCommand& command, const std::string& note)
@@ -63,9 +65,20 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   {
     backend_->goTo(command.values);
   }
-  monitor_ = std::make_unique<GoalMonitor>(
-      command.velocity ? GoalMonitor::forVelocity(command.values, start, limits_, config_, clock_->now()) :
-                         GoalMonitor::forPosition(command.values, start, limits_, config_, clock_->now()));
+  if (command.track)
+  {
+    monitor_ = std::make_unique<GoalMonitor>(GoalMonitor::forTrack(command.values, start, limits_, config_, clock_->now()));
+  }
+  else if (command.velocity)
+  {
+    monitor_ = std::make_unique<GoalMonitor>(
+        GoalMonitor::forVelocity(command.values, start, limits_, config_, clock_->now()));
+  }
+  else
+  {
+    monitor_ = std::make_unique<GoalMonitor>(
+        GoalMonitor::forPosition(command.values, start, limits_, config_, clock_->now()));
+  }
   active_goal_ = std::move(goal);
   note_ = note;
   mode_ = command.velocity ? GoalMode::VELOCITY : GoalMode::POSITION;
@@ -75,7 +88,7 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
 
 void GoalSupervisor::cancel(const std::string& action, const std::string& id)
 {
-  if (!active_goal_ || stopping_ || active_goal_->action() != action || active_goal_->id() != id)
+  if (!isRunning(action, id))
   {
     return;  // not ours, already ended, or already stopping
   }
@@ -88,6 +101,41 @@ void GoalSupervisor::cancel(const std::string& action, const std::string& id)
   judge(backend_->sample());
 }
 
+bool GoalSupervisor::isRunning(const std::string& action, const std::string& id) const
+{
+  return active_goal_ && !stopping_ && active_goal_->action() == action && active_goal_->id() == id;
+}
+
+bool GoalSupervisor::steer(const std::string& action, const std::string& id, const GoalCommand& command,
+                           const AxisValues& aim)
+{
+  if (!isRunning(action, id))
+  {
+    return false;
+  }
+  if (command.velocity)
+  {
+    backend_->moveAtVelocity(command.values);
+  }
+  else
+  {
+    backend_->goTo(command.values);
+  }
+  monitor_->retarget(aim);
+  mode_ = command.velocity ? GoalMode::VELOCITY : GoalMode::POSITION;
+  return true;
+}
+
+void GoalSupervisor::abort(const std::string& action, const std::string& id, const std::string& reason)
+{
+  if (isRunning(action, id))
+  {
+    backend_->stop();
+    active_goal_->abort(withNote(reason));
+    finish();
+  }
+}
+
 GoalSample GoalSupervisor::sample() const
 {
   GoalSample tagged;
@@ -97,16 +145,16 @@ GoalSample GoalSupervisor::sample() const
   return tagged;
 }
 
-void GoalSupervisor::supervise(const GoalSample& sample)
+void GoalSupervisor::supervise(const GoalSample& sample, bool publish_feedback)
 {
   // A sample taken for an earlier goal, or before the cancel, knows nothing of what the active monitor started from.
   if (sample.goal_serial == goal_serial_.load())
   {
-    judge(sample.sample);
+    judge(sample.sample, publish_feedback);
   }
 }
 
-void GoalSupervisor::judge(const PtzSample& sample)
+void GoalSupervisor::judge(const PtzSample& sample, bool publish_feedback)
 {
   if (!active_goal_)
   {
@@ -115,7 +163,7 @@ void GoalSupervisor::judge(const PtzSample& sample)
   const GoalVerdict verdict = monitor_->update(sample, clock_->now());
   if (verdict.phase == GoalPhase::ACTIVE)
   {
-    if (!stopping_)
+    if (!stopping_ && publish_feedback)
     {
       active_goal_->publishFeedback(verdict.remaining);
     }

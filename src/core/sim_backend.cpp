@@ -14,8 +14,56 @@ Capabilities SimBackend::capabilities() const
   return capabilities_;
 }
 
+SimBackend::~SimBackend()
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  plan_changed_.notify_all();
+  if (notifier_.joinable())
+  {
+    notifier_.join();
+  }
+}
+
+bool SimBackend::setSampleListener(SampleListener listener)
+{
+  listener_ = std::move(listener);
+  return true;
+}
+
 void SimBackend::start()
 {
+  if (listener_ && !notifier_.joinable())
+  {
+    notifier_ = std::thread([this] { notifyEvents(); });
+  }
+}
+
+void SimBackend::notifyEvents()
+{
+  // Wakes a microsecond after the event, so the sample the listener leads to already shows it.
+  constexpr std::chrono::microseconds AFTER_EVENT(1);
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (!stopping_)
+  {
+    const TimePoint now = clock_->now();
+    model_.sample(now);  // applies the lagged commands now due, so they are not found due again
+    const TimePoint event = dropout_ ? TimePoint::max() : model_.nextEvent(now);
+    if (event == TimePoint::max())
+    {
+      plan_changed_.wait(lock);
+      continue;
+    }
+    plan_changed_.wait_for(lock, event - now + AFTER_EVENT);
+    if (!stopping_ && !dropout_ && clock_->now() >= event)
+    {
+      lock.unlock();
+      listener_();
+      lock.lock();
+    }
+  }
 }
 
 void SimBackend::goTo(const AxisValues& position)
@@ -24,6 +72,7 @@ void SimBackend::goTo(const AxisValues& position)
   if (!dropCommand())
   {
     model_.goTo(position, clock_->now());
+    plan_changed_.notify_all();
   }
 }
 
@@ -33,6 +82,7 @@ void SimBackend::moveAtVelocity(const AxisValues& velocity)
   if (!dropCommand())
   {
     model_.moveAtVelocity(velocity, clock_->now());
+    plan_changed_.notify_all();
   }
 }
 
@@ -42,6 +92,7 @@ void SimBackend::stop()
   if (!dropCommand())
   {
     model_.stop(clock_->now());
+    plan_changed_.notify_all();
   }
 }
 
@@ -100,6 +151,7 @@ void SimBackend::setFaults(const SimFaults& faults, bool dropout)
     frozen_sample_.link_losses = link_losses_;
   }
   dropout_ = dropout;
+  plan_changed_.notify_all();
 }
 
 bool SimBackend::dropCommand()

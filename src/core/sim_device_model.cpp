@@ -135,6 +135,26 @@ PtzSample SimDeviceModel::sample(TimePoint now)
   return sample;
 }
 
+TimePoint SimDeviceModel::nextEvent(TimePoint now) const
+{
+  constexpr double NEVER = 1e6;  ///< s; a profile this long (a velocity move with no limit ahead) never ends
+  TimePoint next = TimePoint::max();
+  if (!pending_.empty())
+  {
+    next = std::max(pending_.front().apply_at, now);
+  }
+  double rest_in = 0.0;
+  for (const AxisMotion& motion : axes_)
+  {
+    rest_in = std::max(rest_in, motion.profile.duration() - secondsBetween(motion.planned_at, now));
+  }
+  if (rest_in > 0.0 && rest_in < NEVER)
+  {
+    next = std::min(next, addSeconds(now, rest_in));
+  }
+  return next;
+}
+
 void SimDeviceModel::submit(CommandKind kind, Axis axis, double value, TimePoint now)
 {
   applyDueCommands(now);

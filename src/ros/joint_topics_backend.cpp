@@ -171,6 +171,15 @@ void JointTopicsBackend::onJointState(const sensor_msgs::JointState::ConstPtr& m
     }
     positions[axis] = message->position[index];
   }
+  recordJointState(positions);
+  if (listener_)
+  {
+    listener_();
+  }
+}
+
+void JointTopicsBackend::recordJointState(const std::array<double, 2>& positions)
+{
   const TimePoint now = clock_->now();
   std::lock_guard<std::mutex> lock(mutex_);
   superviseLink(now);  // a silence the thread has not noticed yet still counts

@@ -1,6 +1,7 @@
 #include "ptz_action_server/ros/ptz_action_server.h"
 
 #include <functional>
+#include <type_traits>
 
 #include <boost/make_shared.hpp>
 #include <tf2/exceptions.h>
@@ -51,6 +52,8 @@ const char* actionName(ActionKind kind)
       return "position_abs_tf";
     case ActionKind::FRAME:
       return "frame";
+    case ActionKind::TRACK_FRAME:
+      return "track_frame";
   }
   return "?";
 }
@@ -66,8 +69,9 @@ public:
   using Result = typename Action::_action_result_type::_result_type;
   using Feedback = typename Action::_action_feedback_type::_feedback_type;
 
-  GoalHandleAdapter(const Handle& handle, ActionKind kind)
-    : handle_(handle), action_(actionName(kind)), id_(handle.getGoalID().id)
+  /// \p post_status runs or holds each status change (PtzActionServer::postStatus).
+  GoalHandleAdapter(const Handle& handle, ActionKind kind, StatusPoster post_status)
+    : handle_(handle), action_(actionName(kind)), id_(handle.getGoalID().id), post_status_(std::move(post_status))
   {
   }
   const std::string& action() const override
@@ -80,12 +84,12 @@ public:
   }
   void accept(const std::string& text) override
   {
-    handle_.setAccepted(text);
+    post_status_([handle = handle_, text]() mutable { handle.setAccepted(text); });
   }
   void reject(const std::string& text) override
   {
     ROS_WARN_THROTTLE(1.0, "%s goal rejected: %s", action_.c_str(), text.c_str());
-    handle_.setRejected(result(false), text);
+    post_status_([handle = handle_, text]() mutable { handle.setRejected(result(false), text); });
   }
   void publishFeedback(const AxisValues& remaining) override
   {
@@ -97,17 +101,17 @@ public:
   void succeed(const std::string& text) override
   {
     ROS_DEBUG("%s goal succeeded: %s", action_.c_str(), text.c_str());
-    handle_.setSucceeded(result(true), text);
+    post_status_([handle = handle_, text]() mutable { handle.setSucceeded(result(true), text); });
   }
   void abort(const std::string& text) override
   {
     ROS_WARN("%s goal aborted: %s", action_.c_str(), text.c_str());
-    handle_.setAborted(result(false), text);
+    post_status_([handle = handle_, text]() mutable { handle.setAborted(result(false), text); });
   }
   void preempt(const std::string& text) override
   {
     ROS_DEBUG("%s goal preempted: %s", action_.c_str(), text.c_str());
-    handle_.setCanceled(result(false), text);
+    post_status_([handle = handle_, text]() mutable { handle.setCanceled(result(false), text); });
   }
 
 private:
@@ -121,6 +125,7 @@ private:
   Handle handle_;
   std::string action_;
   std::string id_;
+  StatusPoster post_status_;
   Feedback feedback_;
 };
 }  // namespace
@@ -146,6 +151,11 @@ NodeConfig NodeConfig::load(const ParamReader& params)
   config.action_queue_size = params.integer("action_queue_size", config.action_queue_size, 1, 100000);
   config.status_list_timeout = params.number("status_list_timeout", config.status_list_timeout, 0.1, 3600.0);
   config.frame_wait = params.number("frame_wait", config.frame_wait, 0.0, 60.0);
+  config.status_hold = params.number("status_hold", config.status_hold, 0.0, 1.0);
+  config.track.rate = params.number("track/rate", config.track.rate, 1.0, 200.0);
+  config.track.gain = params.number("track/gain", config.track.gain, 0.0, 50.0);
+  config.track.feed_forward = params.flag("track/feed_forward", config.track.feed_forward);
+  config.track.timeout = params.number("track_timeout", config.track.timeout, 0.05, 3600.0);
   config.frame_listen_time =
       params.number("frame_listen_time", config.frame_listen_time, std::max(config.frame_wait, 0.1), 1e6);
   return config;
@@ -153,19 +163,29 @@ NodeConfig NodeConfig::load(const ParamReader& params)
 
 PtzActionServer::PtzActionServer(const ros::NodeHandle& node_handle, const NodeConfig& config,
                                  const PtzKinematics& kinematics, std::shared_ptr<PtzBackend> backend)
-  : node_handle_(node_handle), config_(config), kinematics_(kinematics), backend_(std::move(backend))
+  : node_handle_(node_handle)
+  , config_(config)
+  , kinematics_(kinematics)
+  , backend_(std::move(backend))
+  , status_hold_(config.status_hold)
 {
 }
 
 PtzActionServer::~PtzActionServer()
 {
-  // Stop the state thread first: it posts samples that point at this object.
+  // Stop the state thread and the backend's reports first: both post callbacks that point at this object.
   state_publisher_.reset();
+  if (listener_target_)
+  {
+    std::lock_guard<std::mutex> lock(listener_target_->mutex);
+    listener_target_->server = nullptr;
+  }
   node_handle_.getCallbackQueue()->removeByID(reinterpret_cast<uint64_t>(this));
   if (supervisor_)
   {
     supervisor_->shutdown("the node is shutting down");
   }
+  status_hold_.release(TimePoint::max());  // the last words reach the clients without waiting
 }
 
 template <class Action>
@@ -195,6 +215,20 @@ std::unique_ptr<actionlib::ActionServer<Action>> PtzActionServer::makeServer(Act
 
 void PtzActionServer::start()
 {
+  // A goal is judged as soon as the backend reports a settled state, not at the next 10 Hz tick.
+  listener_target_ = std::make_shared<ListenerTarget>();
+  listener_target_->server = this;
+  if (!backend_->setSampleListener([target = listener_target_] {
+        std::lock_guard<std::mutex> lock(target->mutex);
+        if (target->server)
+        {
+          target->server->onBackendSample();
+        }
+      }))
+  {
+    ROS_INFO("%s: the backend does not report new state; goals are judged on the 10 Hz state tick",
+             backend_->name().c_str());
+  }
   backend_->start();
 
   // Goals are checked against the tighter of the device's and the URDF's limits.
@@ -205,6 +239,7 @@ void PtzActionServer::start()
   }
   limits_ = intersection.limits;
   supervisor_ = std::make_unique<GoalSupervisor>(backend_, limits_, config_.monitor, config_.clamp_goals);
+  supervising_ = true;
 
   // The 10 Hz state tick on its own thread; its samples reach the supervisor through the main queue.
   state_publisher_ = std::make_unique<StatePublisher>(
@@ -216,17 +251,21 @@ void PtzActionServer::start()
   state_publisher_->start();
 
   frame_listener_ = std::make_unique<FrameListener>(node_handle_, config_.frame_listen_time, config_.frame_wait);
+  frame_tracking_ = std::make_unique<FrameTracking>(node_handle_, kinematics_, limits_, config_.track, *supervisor_,
+                                                    *frame_listener_, *backend_);
 
   position_abs_server_ = makeServer<PtzAction>(ActionKind::POSITION_ABS);
   position_rel_server_ = makeServer<PtzAction>(ActionKind::POSITION_REL);
   velocity_server_ = makeServer<PtzAction>(ActionKind::VELOCITY);
   position_abs_tf_server_ = makeServer<PtzRelToAction>(ActionKind::POSITION_ABS_TF);
   frame_server_ = makeServer<PtzFrameAction>(ActionKind::FRAME);
+  track_frame_server_ = makeServer<PtzFrameAction>(ActionKind::TRACK_FRAME);
   position_abs_server_->start();
   position_rel_server_->start();
   velocity_server_->start();
   position_abs_tf_server_->start();
   frame_server_->start();
+  track_frame_server_->start();
   ROS_INFO("ptz_action_server ready with backend '%s': pan [%.3f, %.3f] rad, tilt [%.3f, %.3f] rad, zoom %s",
            backend_->name().c_str(), limits_.axes[PAN].range.min, limits_.axes[PAN].range.max,
            limits_.axes[TILT].range.min, limits_.axes[TILT].range.max,
@@ -235,12 +274,47 @@ void PtzActionServer::start()
                "none");
 }
 
+void PtzActionServer::postStatus(StatusHold::Change change)
+{
+  status_hold_.run(std::move(change), clock_.now());
+  if (status_hold_.heldCount() > 0 && !status_release_armed_)
+  {
+    armStatusRelease(status_hold_.release(clock_.now()));
+  }
+}
+
+void PtzActionServer::armStatusRelease(TimePoint due)
+{
+  status_release_armed_ = due != TimePoint::max();
+  if (status_release_armed_)
+  {
+    status_release_timer_ = node_handle_.createSteadyTimer(
+        ros::WallDuration(std::max(0.0, secondsBetween(clock_.now(), due))),
+        [this](const ros::SteadyTimerEvent&) { armStatusRelease(status_hold_.release(clock_.now())); }, true);
+  }
+}
+
+void PtzActionServer::onBackendSample()
+{
+  // Only the final verdict matters between ticks; one queued check covers every report that comes before it runs.
+  if (!supervising_ || !supervisor_->goalActive() || verdict_check_queued_.exchange(true))
+  {
+    return;
+  }
+  node_handle_.getCallbackQueue()->addCallback(boost::make_shared<FunctionCallback>([this] {
+                                                 verdict_check_queued_ = false;
+                                                 supervisor_->supervise(supervisor_->sample(), false);
+                                               }),
+                                               reinterpret_cast<uint64_t>(this));
+}
+
 template <class Action>
 void PtzActionServer::onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
 {
+  status_hold_.goalArrived(clock_.now());
   supersedeWaitingFrameGoal(kind);
   const std::string frame_id = frameOf(*handle.getGoal());
-  if (kind == ActionKind::POSITION_ABS_TF || kind == ActionKind::FRAME)
+  if (kind == ActionKind::POSITION_ABS_TF || kind == ActionKind::FRAME || kind == ActionKind::TRACK_FRAME)
   {
     frame_listener_->listen();
     if (!frame_id.empty() && !frame_listener_->ready(kinematics_.baseFrame(), frame_id))
@@ -250,8 +324,12 @@ void PtzActionServer::onGoal(actionlib::ServerGoalHandle<Action> handle, ActionK
       const auto result = [] { return typename Action::_action_result_type::_result_type(); };
       waiting_frame_goal_ =
           WaitingFrameGoal{ handle.getGoalID().id, frame_id, [this, handle, kind] { submit(handle, kind); },
-                            [handle, result](const std::string& text) mutable { handle.setRejected(result(), text); },
-                            [handle, result](const std::string& text) mutable { handle.setCanceled(result(), text); } };
+                            [this, handle, result](const std::string& text) {
+                              postStatus([handle, result, text]() mutable { handle.setRejected(result(), text); });
+                            },
+                            [this, handle, result](const std::string& text) {
+                              postStatus([handle, result, text]() mutable { handle.setCanceled(result(), text); });
+                            } };
       frame_wait_timer_ =
           node_handle_.createSteadyTimer(ros::WallDuration(FRAME_WAIT_CHECK_PERIOD),
                                          [this](const ros::SteadyTimerEvent&) { checkWaitingFrameGoal(); });
@@ -266,8 +344,17 @@ void PtzActionServer::submit(actionlib::ServerGoalHandle<Action> handle, ActionK
 {
   const auto goal = handle.getGoal();
   supervisor_->submit(
-      std::make_unique<GoalHandleAdapter<Action>>(handle, kind),
+      std::make_unique<GoalHandleAdapter<Action>>(handle, kind,
+                                                  [this](StatusHold::Change change) { postStatus(std::move(change)); }),
       [&](const PtzSample& current, GoalCommand& command) { return toCommand(*goal, kind, current, command); });
+  if constexpr (std::is_same_v<Action, PtzFrameAction>)
+  {
+    const std::string& id = handle.getGoalID().id;
+    if (kind == ActionKind::TRACK_FRAME && supervisor_->isRunning(actionName(kind), id))
+    {
+      frame_tracking_->start(actionName(kind), id, goal->frame_id, goal->zoom);
+    }
+  }
 }
 
 template <class Action>
@@ -354,9 +441,10 @@ std::string PtzActionServer::toCommand(const PtzRelToGoal& goal, ActionKind, con
   return {};
 }
 
-std::string PtzActionServer::toCommand(const PtzFrameGoal& goal, ActionKind, const PtzSample&,
+std::string PtzActionServer::toCommand(const PtzFrameGoal& goal, ActionKind kind, const PtzSample&,
                                        GoalCommand& command) const
 {
+  command.track = kind == ActionKind::TRACK_FRAME;
   std::string reason = findNonFinite({ { 0.0, 0.0, goal.zoom } }, "position");
   Eigen::Isometry3d frame_in_base = identity();
   if (reason.empty())

@@ -1,9 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <memory>
 
 #include "ptz_action_server/core/sim_backend.h"
+#include "wait_until.h"
 
 using namespace ptz_action_server;
 
@@ -136,4 +138,39 @@ TEST_F(SimBackendTest, CapabilitiesComeFromTheConfig)
   EXPECT_DOUBLE_EQ(capabilities.axes[TILT].range.min, -0.8);
   EXPECT_DOUBLE_EQ(capabilities.axes[PAN].max_speed, 1.5);
   EXPECT_DOUBLE_EQ(backend.sample().position[ZOOM], 1.0);  // no zoom reports 1
+}
+
+TEST(SimBackendListenerTest, TellsWhenEachMotionEndsAndNotInBetween)
+{
+  SimBackend backend(SimDeviceConfig::defaults());
+  std::atomic<int> calls{ 0 };
+  std::atomic<int> moving_when_told{ 0 };
+  ASSERT_TRUE(backend.setSampleListener([&] {
+    moving_when_told += backend.sample().moving ? 1 : 0;
+    ++calls;
+  }));
+  backend.start();
+  backend.goTo({ 0.2, 0.1, 1.0 });
+  ASSERT_TRUE(waitUntil([&] { return calls >= 1; }, 30.0));
+  EXPECT_EQ(moving_when_told, 0) << "told before the motion had ended";
+  EXPECT_NEAR(backend.sample().position[PAN], 0.2, 1e-3);
+  backend.goTo({ -0.2, 0.0, 1.0 });
+  ASSERT_TRUE(waitUntil([&] { return calls >= 2; }, 30.0));
+  EXPECT_FALSE(backend.sample().moving);
+  EXPECT_EQ(calls, 2) << "one call per motion: the thread sleeps in between";
+  EXPECT_EQ(moving_when_told, 0);
+}
+
+TEST(SimBackendListenerTest, ARetargetBeforeTheEndMovesTheNotice)
+{
+  SimBackend backend(SimDeviceConfig::defaults());
+  std::atomic<int> calls{ 0 };
+  backend.setSampleListener([&] { ++calls; });
+  backend.start();
+  backend.goTo({ 1.0, 0.0, 1.0 });
+  backend.goTo({ 0.1, 0.0, 1.0 });  // at once: the first motion never ends by itself
+  ASSERT_TRUE(waitUntil([&] { return calls >= 1; }, 30.0));
+  EXPECT_NEAR(backend.sample().position[PAN], 0.1, 1e-3);
+  EXPECT_FALSE(backend.sample().moving);
+  EXPECT_EQ(calls, 1);
 }

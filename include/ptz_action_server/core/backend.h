@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <utility>
@@ -36,6 +37,7 @@ inline void addCounts(std::vector<DiagnosticValue>& values,
  * - goTo(), moveAtVelocity(), stop(), sample(), lastFault(), lastLinkLoss() and diagnostics() never block on I/O:
  *   commands are queued to the backend's own I/O thread, and sample() returns the latest snapshot. They may be
  *   called from any thread.
+ * - The sample listener, if the backend takes one, is called on the backend's own thread and must return at once.
  * - The destructor stops the I/O thread and joins it.
  *
  * Commands retarget the device from wherever it is: a goTo() while moving must not stop in between.
@@ -74,6 +76,18 @@ public:
   virtual std::string lastLinkLoss() const
   {
     return {};
+  }
+
+  /// Called by the backend, on its own thread, each time its state may have changed on its own: a state report from
+  /// the device, or the end of a simulated motion. It must not block (the node posts a verdict check).
+  using SampleListener = std::function<void()>;
+
+  /// Asks to be told of new state through \p listener. Called once, before start(). A backend that cannot tell
+  /// returns false; goals on it are judged on the node's 10 Hz tick only.
+  virtual bool setSampleListener(SampleListener listener)
+  {
+    (void)listener;
+    return false;
   }
 
   /// Appends link details and counters (dropped frames and the like) for the node's diagnostics.

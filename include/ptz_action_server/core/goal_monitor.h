@@ -52,8 +52,18 @@ public:
   /// A goal to move at \p velocity; all zeros means "stop", which succeeds once the device rests.
   static GoalMonitor forVelocity(const AxisValues& velocity, const PtzSample& start, const Capabilities& capabilities,
                                  const GoalMonitorConfig& config, TimePoint now);
+  /// A goal that follows a moving target, starting at \p aim: it never succeeds on its own (cancel or preempt ends
+  /// it); a lost link or a device fault aborts it. remaining is aim minus position; retarget() moves the aim.
+  static GoalMonitor forTrack(const AxisValues& aim, const PtzSample& start, const Capabilities& capabilities,
+                              const GoalMonitorConfig& config, TimePoint now);
   /// A cancelled goal whose device is being stopped: it ends once the device rests (or stop_timeout passes).
   static GoalMonitor forStop(const PtzSample& start, const GoalMonitorConfig& config, TimePoint now);
+
+  /// A tracking goal's new aim (positions).
+  void retarget(const AxisValues& aim)
+  {
+    goal_ = aim;
+  }
 
   /// Judges the goal at \p sample. Once it returns a final verdict, the goal is over.
   GoalVerdict update(const PtzSample& sample, TimePoint now);
@@ -70,6 +80,7 @@ private:
     POSITION,
     VELOCITY,
     STOP,
+    TRACK,
   };
 
   GoalMonitor(Kind kind, const AxisValues& goal, const PtzSample& start, const Capabilities& capabilities,

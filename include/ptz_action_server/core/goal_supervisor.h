@@ -29,6 +29,9 @@ enum class GoalMode : std::int8_t
 struct GoalCommand
 {
   bool velocity = false;  ///< values are velocities (rad/s, X/s); else positions (rad, X)
+  /// A goal that follows a moving target: values is the first aim (positions, clamped into the limits rather than
+  /// rejected); steer() then moves the device and the aim until the goal is cancelled, preempted or aborted.
+  bool track = false;
   AxisValues values{};
 };
 
@@ -97,9 +100,21 @@ public:
   /// Stops the device if the goal \p id of \p action is the active one; it ends once the device rests.
   void cancel(const std::string& action, const std::string& id);
 
-  /// Judges the active goal at \p sample, unless it was taken for another goal: feedback while the goal goes on,
-  /// its end on a final verdict.
-  void supervise(const GoalSample& sample);
+  /// For the active tracking goal \p id of \p action: commands \p command (velocities, or positions) and judges the
+  /// goal against \p aim from now on. Returns false, commanding nothing, if that goal is no longer the active one or
+  /// is being cancelled.
+  bool steer(const std::string& action, const std::string& id, const GoalCommand& command, const AxisValues& aim);
+
+  /// True if the goal \p id of \p action is the active one and not being cancelled.
+  bool isRunning(const std::string& action, const std::string& id) const;
+
+  /// Stops the device and aborts the active goal \p id of \p action with \p reason (nothing if it is not active).
+  void abort(const std::string& action, const std::string& id, const std::string& reason);
+
+  /// Judges the active goal at \p sample, unless it was taken for another goal: feedback while the goal goes on
+  /// (unless \p publish_feedback is false: a sample the backend reported between two ticks), its end on a final
+  /// verdict.
+  void supervise(const GoalSample& sample, bool publish_feedback = true);
 
   /// Stops the device and aborts the active goal with \p reason.
   void shutdown(const std::string& reason);
@@ -124,7 +139,7 @@ private:
   /// The final status text keeps the clamping note of the accepted goal.
   std::string withNote(const std::string& text) const;
   /// supervise() for a sample known to belong to the active goal.
-  void judge(const PtzSample& sample);
+  void judge(const PtzSample& sample, bool publish_feedback = true);
   void finish();
 
   const std::shared_ptr<PtzBackend> backend_;

@@ -77,6 +77,9 @@ public:
 
   /// The device's state at \p now: quantised positions, velocities, whether anything still moves.
   PtzSample sample(TimePoint now);
+  /// The next moment after \p now at which the state changes on its own without a new command: a lagged command
+  /// falls due, or the last moving axis comes to rest. TimePoint::max() if nothing is under way.
+  TimePoint nextEvent(TimePoint now) const;
 
   const SimDeviceConfig& config() const
   {

@@ -86,6 +86,12 @@ public:
   }
   std::string lastLinkLoss() const override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
+  /// Called after each joint state naming both joints.
+  bool setSampleListener(SampleListener listener) override
+  {
+    listener_ = std::move(listener);
+    return true;
+  }
 
 private:
   /// What a command does to the setpoint model; runs on the backend's thread.
@@ -94,6 +100,8 @@ private:
   void post(Command command);
   void run();
   void onJointState(const sensor_msgs::JointState::ConstPtr& message);
+  /// Takes a joint state's pan and tilt into the snapshot (and brings the link up).
+  void recordJointState(const std::array<double, 2>& positions);
   /// Declares the link lost once states stop; call with mutex_ held.
   void superviseLink(TimePoint now);
   /// A setpoint model resting at the measured position; call with mutex_ held.
@@ -113,6 +121,7 @@ private:
   ros::Subscriber state_subscriber_;
   std::atomic<bool> running_{ false };
   std::thread thread_;
+  SampleListener listener_;  ///< set before start(); called on thread_
 
   mutable std::mutex mutex_;  ///< guards everything below
   std::condition_variable first_state_;

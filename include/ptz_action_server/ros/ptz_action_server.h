@@ -4,8 +4,10 @@
  */
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -19,7 +21,9 @@
 #include "ptz_action_server/core/goal_supervisor.h"
 #include "ptz_action_server/core/kinematics.h"
 #include "ptz_action_server/core/limits.h"
+#include "ptz_action_server/core/status_hold.h"
 #include "ptz_action_server/ros/frame_listener.h"
+#include "ptz_action_server/ros/frame_tracking.h"
 #include "ptz_action_server/ros/param_reader.h"
 
 namespace ptz_action_server
@@ -36,14 +40,17 @@ struct NodeConfig
   double status_list_timeout = 1.0;  ///< s a finished goal stays in actionlib's status list (actionlib: 5)
   double frame_listen_time = 10.0;   ///< s the node keeps listening to tf after the last frame goal
   double frame_wait = 1.0;           ///< s a frame goal may wait for tf once the node starts listening
+  FrameTrackerConfig track;          ///< how track_frame goals steer
+  double status_hold = 0.02;         ///< s goal status changes wait after a new goal (StatusHold); 0: off
 
   /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
   /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,
-  /// ~status_list_timeout, ~frame_listen_time, ~frame_wait.
+  /// ~status_list_timeout, ~frame_listen_time, ~frame_wait, ~track/rate, ~track/gain, ~track/feed_forward,
+  /// ~track_timeout, ~status_hold.
   static NodeConfig load(const ParamReader& params);
 };
 
-/// One of the five actions, for names and messages.
+/// One of the actions, for names and messages.
 enum class ActionKind
 {
   POSITION_ABS,
@@ -51,9 +58,13 @@ enum class ActionKind
   VELOCITY,
   POSITION_ABS_TF,
   FRAME,
+  TRACK_FRAME,
 };
 
 const char* actionName(ActionKind kind);
+
+/// Runs a goal status change now or later (see StatusHold).
+using StatusPoster = std::function<void(StatusHold::Change)>;
 
 class StatePublisher;
 
@@ -111,6 +122,13 @@ private:
   /// Rejects the frame goal waiting for tf, if any, because a \p kind goal came after it.
   void supersedeWaitingFrameGoal(ActionKind kind);
 
+  /// Runs \p change (a goal's status change) through the status hold, arming its release timer if it is held.
+  void postStatus(StatusHold::Change change);
+  /// Arms the one-shot timer that releases the held status changes at \p due (none if TimePoint::max()).
+  void armStatusRelease(TimePoint due);
+  /// On the backend's thread when its state may have changed: queues one early verdict check on the main thread.
+  void onBackendSample();
+
   /// Converts a goal into what to command (a GoalConverter); returns "" or the reason to reject it.
   std::string toCommand(const PtzGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
   std::string toCommand(const PtzRelToGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
@@ -126,6 +144,19 @@ private:
 
   std::unique_ptr<GoalSupervisor> supervisor_;       ///< the goal state machine, on the main thread; built by start()
   std::unique_ptr<StatePublisher> state_publisher_;  ///< the 10 Hz tick, on its own thread; built by start()
+  SystemClock clock_;
+  StatusHold status_hold_;                ///< goal status changes after a new goal wait here (main thread)
+  ros::SteadyTimer status_release_timer_;  ///< one-shot, armed while changes are held
+  bool status_release_armed_ = false;
+  std::atomic<bool> supervising_{ false };           ///< supervisor_ is built: backend reports may be judged
+  /// What the backend's listener reaches this server through; the destructor cuts it (the backend may outlive us).
+  struct ListenerTarget
+  {
+    std::mutex mutex;
+    PtzActionServer* server = nullptr;
+  };
+  std::shared_ptr<ListenerTarget> listener_target_;
+  std::atomic<bool> verdict_check_queued_{ false };  ///< an early verdict check waits on the main queue
 
   /// A frame goal held back, neither accepted nor rejected, while a listener that just started hears tf.
   struct WaitingFrameGoal
@@ -152,6 +183,8 @@ private:
   std::unique_ptr<PtzServer> velocity_server_;
   std::unique_ptr<PtzRelToServer> position_abs_tf_server_;
   std::unique_ptr<PtzFrameServer> frame_server_;
+  std::unique_ptr<PtzFrameServer> track_frame_server_;
+  std::unique_ptr<FrameTracking> frame_tracking_;  ///< steers track_frame goals; built by start()
 };
 
 }  // namespace ptz_action_server

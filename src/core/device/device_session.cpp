@@ -186,6 +186,10 @@ void DeviceSession::reportState(const AxisValues& position)
     motion_.add(now, position);
   }
   refreshLink();
+  if (state_listener_)
+  {
+    state_listener_();
+  }
 }
 
 void DeviceSession::reportAlive()
@@ -258,6 +262,10 @@ void DeviceSession::onLinkDown(const std::string& reason)
     has_state_ = false;
   }
   protocol_->onDisconnected();
+  if (state_listener_)
+  {
+    state_listener_();
+  }
 }
 
 void DeviceSession::tick()

@@ -60,6 +60,11 @@ public:
   {
     return session_->lastLinkLoss();
   }
+  bool setSampleListener(SampleListener listener) override
+  {
+    session_->setStateListener(std::move(listener));
+    return true;
+  }
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 
   const DeviceSession& session() const

@@ -69,6 +69,11 @@ public:
 
   /// Binds the protocol (once, before start()); takes its initial capabilities.
   void attach(DeviceProtocol& protocol);
+  /// Calls \p listener on the I/O thread after each valid state report and each loss of the link (before start()).
+  void setStateListener(std::function<void()> listener)
+  {
+    state_listener_ = std::move(listener);
+  }
 
   // ---------------------------------------------------------------- for the backend: any thread
 
@@ -188,6 +193,7 @@ private:
 
   // I/O thread only.
   std::uint64_t command_serial_ = 0;
+  std::function<void()> state_listener_;  ///< set before start()
 
   // Shared; guarded by mutex_. Mutable: sample() notices a silent link and counts the loss itself.
   mutable std::mutex mutex_;
