@@ -21,6 +21,7 @@
 #include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/ros/frame_listener.h"
 #include "ptz_action_server/ros/param_reader.h"
+#include "ptz_action_server/ros/view_config.h"
 
 namespace ptz_action_server
 {
@@ -36,10 +37,13 @@ struct NodeConfig
   double status_list_timeout = 1.0;  ///< s a finished goal stays in actionlib's status list (actionlib: 5)
   double frame_listen_time = 10.0;   ///< s the node keeps listening to tf after the last frame goal
   double frame_wait = 1.0;           ///< s a frame goal may wait for tf once the node starts listening
+  MountConfig mount;                 ///< how the device is mounted; PtzNode wraps the backend with it
+  FieldOfViewSettings field_of_view;  ///< the field_of_view topic and the zoomed camera_info
 
   /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
   /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,
-  /// ~status_list_timeout, ~frame_listen_time, ~frame_wait.
+  /// ~status_list_timeout, ~frame_listen_time, ~frame_wait, ~mount, ~pan_offset, ~field_of_view/*,
+  /// ~camera_info_topic, ~camera_info_zoom.
   static NodeConfig load(const ParamReader& params);
 };
 
