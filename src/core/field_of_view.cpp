@@ -28,7 +28,7 @@ FieldOfViewAngles anglesOf(const FieldOfViewAngles& focal)
 }
 }  // namespace
 
-FieldOfViewModel FieldOfViewModel::fromWideEnd(const FieldOfViewAngles& wide_end)
+FieldOfViewModel FieldOfViewModel::fromWideEnd(const FieldOfViewAngles& wide_end, ZoomLaw law)
 {
   if (!validAngle(wide_end.horizontal) || !validAngle(wide_end.vertical))
   {
@@ -36,8 +36,9 @@ FieldOfViewModel FieldOfViewModel::fromWideEnd(const FieldOfViewAngles& wide_end
                                  wide_end.horizontal, wide_end.vertical));
   }
   FieldOfViewModel field_of_view;
-  field_of_view.lens_model_ = true;
-  field_of_view.focal_rows_.push_back(FieldOfViewRow{ 1.0, focalOf(wide_end) });
+  field_of_view.wide_end_model_ = true;
+  field_of_view.wide_end_ = wide_end;
+  field_of_view.law_ = law;
   return field_of_view;
 }
 
@@ -84,10 +85,14 @@ FieldOfViewModel FieldOfViewModel::fromTable(std::vector<FieldOfViewRow> rows)
 
 FieldOfViewAngles FieldOfViewModel::focalAt(double zoom) const
 {
-  if (lens_model_)
+  if (wide_end_model_)
   {
     const double scale = zoom >= 1.0 ? zoom : 1.0;  // also NaN -> the wide end
-    const FieldOfViewAngles& wide = focal_rows_.front().angles;
+    if (law_ == ZoomLaw::DIVIDED)
+    {
+      return focalOf({ wide_end_.horizontal / scale, wide_end_.vertical / scale });
+    }
+    const FieldOfViewAngles wide = focalOf(wide_end_);
     return { wide.horizontal * scale, wide.vertical * scale };
   }
   if (!(zoom > focal_rows_.front().zoom))  // also NaN

@@ -7,9 +7,10 @@
 namespace ptz_action_server
 {
 FieldOfViewPublisher::FieldOfViewPublisher(ros::NodeHandle node_handle, const FieldOfViewSettings& settings,
-                                           std::shared_ptr<PtzBackend> backend)
+                                           std::shared_ptr<PtzBackend> backend, const std::string& camera_frame)
   : settings_(settings), model_(settings_.model.value()), backend_(std::move(backend))
 {
+  field_of_view_message_.header.frame_id = camera_frame;
   field_of_view_publisher_ = node_handle.advertise<ptz_action_server::FieldOfView>("field_of_view", 10);
   if (!settings_.camera_info_topic.empty())
   {

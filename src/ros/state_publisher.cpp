@@ -80,7 +80,7 @@ void StatePublisher::start()
 
 void StatePublisher::addFieldOfView(const FieldOfViewSettings& settings)
 {
-  field_of_view_ = std::make_unique<FieldOfViewPublisher>(node_handle_, settings, backend_);
+  field_of_view_ = std::make_unique<FieldOfViewPublisher>(node_handle_, settings, backend_, kinematics_.cameraFrame());
 }
 
 void StatePublisher::onTick()

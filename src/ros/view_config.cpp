@@ -66,6 +66,11 @@ FieldOfViewSettings FieldOfViewSettings::load(const ParamReader& params)
     throw ConfigError("parameters " + view.resolve("horizontal") + "/vertical and " + view.resolve("table") +
                       " exclude each other: give the wide-end angles or a table");
   }
+  if (view.has("zoom_law") && !wide_end)
+  {
+    throw ConfigError("parameter " + view.resolve("zoom_law") + " applies to the wide-end angles " +
+                      view.resolve("horizontal") + " and " + view.resolve("vertical") + ", which are not set");
+  }
   if (wide_end)
   {
     if (!view.has("horizontal") || !view.has("vertical"))
@@ -75,7 +80,9 @@ FieldOfViewSettings FieldOfViewSettings::load(const ParamReader& params)
     }
     const double horizontal = view.number("horizontal", 1.0, 1e-6, M_PI - 1e-6);
     const double vertical = view.number("vertical", 1.0, 1e-6, M_PI - 1e-6);
-    settings.model = FieldOfViewModel::fromWideEnd({ horizontal, vertical });
+    const ZoomLaw law =
+        view.choice("zoom_law", "lens", { "lens", "divided" }) == "divided" ? ZoomLaw::DIVIDED : ZoomLaw::LENS;
+    settings.model = FieldOfViewModel::fromWideEnd({ horizontal, vertical }, law);
   }
   else if (view.has("table"))
   {

@@ -33,6 +33,16 @@ TEST(FieldOfViewTest, WideEndModelNarrowsAsFocalLengthGrows)
   EXPECT_NEAR(field_of_view.at(std::nan("")).horizontal, 60.0 * DEGREE, 1e-12);
 }
 
+TEST(FieldOfViewTest, DividedLawIsThePlainDivision)
+{
+  const FieldOfViewModel divided = FieldOfViewModel::fromWideEnd({ 1.2, 0.7 }, ZoomLaw::DIVIDED);
+  EXPECT_NEAR(divided.at(4.0).horizontal, 0.3, 1e-12);
+  EXPECT_NEAR(divided.at(4.0).vertical, 0.175, 1e-12);
+  EXPECT_NEAR(divided.at(0.2).horizontal, 1.2, 1e-12);
+  const FocalScale scale = divided.focalScale(1.0, 4.0);
+  EXPECT_NEAR(scale.x, std::tan(0.6) / std::tan(0.15), 1e-12);  // the tangent formula holds for any law
+}
+
 TEST(FieldOfViewTest, FocalScaleMatchesTheTangentFormula)
 {
   const FieldOfViewModel field_of_view = FieldOfViewModel::fromWideEnd({ 60.0 * DEGREE, 34.0 * DEGREE });

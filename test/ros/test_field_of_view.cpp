@@ -137,6 +137,7 @@ TEST_F(FieldOfViewNodeTest, FieldOfViewFollowsTheZoomWithTheJointStatesStamp)
   ptz_action_server::FieldOfView field_of_view;
   ASSERT_TRUE(view.waitForMatchingFieldOfView(field_of_view)) << "no field_of_view stamped as a joint_states";
   ASSERT_TRUE(view.waitForMatchingFieldOfView(field_of_view));
+  EXPECT_EQ(field_of_view.header.frame_id, "ptz_camera_link");
   EXPECT_NEAR(field_of_view.zoom, 4.0, 0.05);
   EXPECT_NEAR(field_of_view.horizontal, angleAt(WIDE_HORIZONTAL, field_of_view.zoom), 1e-9);
   EXPECT_NEAR(field_of_view.vertical, angleAt(WIDE_VERTICAL, field_of_view.zoom), 1e-9);

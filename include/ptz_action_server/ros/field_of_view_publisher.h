@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
@@ -26,9 +27,9 @@ class FieldOfViewPublisher
 {
 public:
   /// Advertises field_of_view and, with a camera_info topic, subscribes to it and advertises <topic>_zoomed, all in
-  /// \p node_handle's namespace. \p settings must hold a model.
+  /// \p node_handle's namespace. \p settings must hold a model; field_of_view is stamped in \p camera_frame.
   FieldOfViewPublisher(ros::NodeHandle node_handle, const FieldOfViewSettings& settings,
-                       std::shared_ptr<PtzBackend> backend);
+                       std::shared_ptr<PtzBackend> backend, const std::string& camera_frame);
 
   /// One state tick: the field of view at \p zoom, stamped \p stamp (joint_states' stamp).
   void publish(const ros::Time& stamp, double zoom);
