@@ -14,7 +14,8 @@ FieldOfViewPublisher::FieldOfViewPublisher(ros::NodeHandle node_handle, const Fi
   field_of_view_publisher_ = node_handle.advertise<ptz_action_server::FieldOfView>("field_of_view", 10);
   if (!settings_.camera_info_topic.empty())
   {
-    camera_info_publisher_ = node_handle.advertise<sensor_msgs::CameraInfo>(settings_.camera_info_topic + "_zoomed", 10);
+    camera_info_publisher_ =
+        node_handle.advertise<sensor_msgs::CameraInfo>(settings_.camera_info_topic + "_zoomed", 10);
     camera_info_subscriber_ =
         node_handle.subscribe(settings_.camera_info_topic, 10, &FieldOfViewPublisher::onCameraInfo, this);
   }

@@ -36,8 +36,8 @@ std::vector<FieldOfViewRow> readTable(const ParamReader& params)
   for (int index = 0; index < table.size(); ++index)
   {
     XmlRpc::XmlRpcValue& row = table[index];
-    if (row.getType() != XmlRpc::XmlRpcValue::TypeArray || row.size() != 3 || !isNumber(row[0]) ||
-        !isNumber(row[1]) || !isNumber(row[2]))
+    if (row.getType() != XmlRpc::XmlRpcValue::TypeArray || row.size() != 3 || !isNumber(row[0]) || !isNumber(row[1]) ||
+        !isNumber(row[2]))
     {
       throw ConfigError("parameter " + name + ": row " + std::to_string(index) + " is not [zoom, horizontal, " +
                         "vertical]; it must be " + shape);

@@ -147,8 +147,7 @@ TEST_F(FieldOfViewNodeTest, FieldOfViewFollowsTheZoomWithTheJointStatesStamp)
 TEST_F(FieldOfViewNodeTest, CameraInfoIsRescaledForTheZoomWithItsHeaderKept)
 {
   ViewObserver view;
-  ros::Publisher camera_info =
-      ros::NodeHandle().advertise<sensor_msgs::CameraInfo>("/test_camera/camera_info", 10);
+  ros::Publisher camera_info = ros::NodeHandle().advertise<sensor_msgs::CameraInfo>("/test_camera/camera_info", 10);
   for (double zoom : { 6.0, 2.0, 1.0 })
   {
     ASSERT_EQ(moveTo(0.0, 0.0, zoom), State::SUCCEEDED) << absolute_->getState().getText();

@@ -38,7 +38,8 @@ struct NodeConfig
   double frame_listen_time = 10.0;   ///< s the node keeps listening to tf after the last frame goal
   double frame_wait = 1.0;           ///< s a frame goal may wait for tf once the node starts listening
   MountConfig mount;                 ///< how the device is mounted; PtzNode wraps the backend with it
-  FieldOfViewSettings field_of_view;  ///< the field_of_view topic and the zoomed camera_info
+  /// The field_of_view topic and the zoomed camera_info.
+  FieldOfViewSettings field_of_view;
 
   /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
   /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,

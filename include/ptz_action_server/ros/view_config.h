@@ -23,9 +23,9 @@ struct FieldOfViewSettings
   std::string camera_info_topic;          ///< "": no camera_info rescale; else republished as <topic>_zoomed
   double camera_info_zoom = 1.0;          ///< X the incoming camera_info was calibrated at
 
-  /// Reads ~field_of_view/horizontal and ~field_of_view/vertical (wide end, rad, with ~field_of_view/zoom_law) or ~field_of_view/table (a list of
-  /// [zoom, horizontal, vertical] rows), ~camera_info_topic and ~camera_info_zoom. A camera_info topic needs a field
-  /// of view. Throws ConfigError naming the parameter.
+  /// Reads ~field_of_view/horizontal and ~field_of_view/vertical (wide end, rad, with ~field_of_view/zoom_law) or
+  /// ~field_of_view/table (a list of [zoom, horizontal, vertical] rows), ~camera_info_topic and ~camera_info_zoom. A
+  /// camera_info topic needs a field of view. Throws ConfigError naming the parameter.
   static FieldOfViewSettings load(const ParamReader& params);
 };
 
