@@ -133,3 +133,24 @@ TEST_F(MountTest, LimitsAreTheDevicesMirroredAndShifted)
   EXPECT_NEAR(observer_->latest().pan, -1.5, TOLERANCE);
   EXPECT_NEAR(observer_->latest().tilt, -0.8, TOLERANCE);
 }
+
+TEST_F(MountTest, PositivePanVelocityTurnsTheInvertedDeviceNegative)
+{
+  DeviceAngles device;
+  ASSERT_EQ(moveTo(PAN_OFFSET, 0.0, 1.0), State::SUCCEEDED) << absolute_->getState().getText();
+  double device_pan = 0.0;
+  double device_tilt = 0.0;
+  ASSERT_TRUE(device.waitFor(0.0, 0.0, device_pan, device_tilt));
+
+  velocity_->sendGoal(makePtzGoal(0.3, 0.0, 0.0));
+  EXPECT_TRUE(observer_->waitFor([](const PtzState& state) { return state.pan > PAN_OFFSET + 0.2; }, GOAL_WAIT))
+      << "ptz_state pan " << observer_->latest().pan;
+  velocity_->cancelGoal();
+  ASSERT_TRUE(velocity_->waitForResult(ros::Duration(GOAL_WAIT)));
+  ASSERT_TRUE(observer_->waitTicks(2));
+  const double pan = observer_->latest().pan;
+  EXPECT_GT(pan, PAN_OFFSET + 0.2);
+  // The device went the other way by as much.
+  EXPECT_TRUE(device.waitFor(-(pan - PAN_OFFSET), 0.0, device_pan, device_tilt))
+      << "device pan " << device_pan << ", contract pan " << pan;
+}
