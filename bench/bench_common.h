@@ -32,6 +32,7 @@ struct SharedCounters
   std::atomic<std::int64_t> last_command_ns{ 0 };
   std::atomic<std::uint64_t> stops{ 0 };  ///< stop calls
   std::atomic<std::int64_t> last_stop_ns{ 0 };
+  std::atomic<std::int64_t> last_report_ns{ 0 };  ///< the backend's last report of new state (its sample listener)
   std::atomic<bool> record_states{ false };
   std::atomic<std::uint32_t> state_count{ 0 };
   std::int64_t state_arrivals_ns[MAX_STATE_ARRIVALS];

@@ -77,6 +77,14 @@ public:
   {
     inner_->diagnostics(values);
   }
+  /// Stamps each report of the backend's, so the bench can time settled -> result.
+  bool setSampleListener(SampleListener listener) override
+  {
+    return inner_->setSampleListener([this, listener = std::move(listener)] {
+      counters_->last_report_ns = monotonicNanoseconds();
+      listener();
+    });
+  }
 
 private:
   std::int64_t record()

@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include <ros/node_handle.h>
+
 #include "bench_common.h"
 #include "bench_processes.h"
 #include "device_table.h"
@@ -16,6 +18,10 @@ namespace ptz_bench
  * storm of goals, and the node's peak RSS. Prints a table; returns 0, or 1 if the node did not come up.
  */
 int runSimFigures(const BenchOptions& options, SharedCounters* counters, BenchProcesses& processes);
+
+/// Sim row: move_ptz/track_frame on a frame the bench circles around the camera at 0.5 rad/s; the angular error
+/// between the optical axis of each joint state and the frame's true direction at its stamp, after the first second.
+Row trackFigure(ros::NodeHandle& node_handle);
 
 /**
  * \brief Device rows: goal -> first goal command at the emulator and cancel -> stop command at the emulator (their

@@ -36,7 +36,7 @@ std::string BackendLoader::knownBackends()
 }
 
 std::shared_ptr<PtzBackend> BackendLoader::load(const std::string& backend, const ParamReader& params,
-                                                const PtzKinematics& kinematics)
+                                                const PtzKinematics& kinematics, const MountConfig& mount)
 {
   const std::string name = pluginName(backend);
   if (!loader_.isClassAvailable(name))
@@ -54,7 +54,7 @@ std::shared_ptr<PtzBackend> BackendLoader::load(const std::string& backend, cons
   }
   plugins_.push_back(plugin);
   BackendContext context;
-  context.urdf_limits = PtzActionServer::urdfLimits(kinematics);
+  context.urdf_limits = deviceLimits(PtzActionServer::urdfLimits(kinematics), mount);
   context.joint_names = { { kinematics.panJoint().name, kinematics.tiltJoint().name } };
   // The private namespace's parent is the node's namespace.
   context.node_namespace = ros::NodeHandle(ros::names::parentNamespace(params.nodeHandle().getNamespace()));

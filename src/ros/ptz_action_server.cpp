@@ -158,6 +158,8 @@ NodeConfig NodeConfig::load(const ParamReader& params)
   config.track.timeout = params.number("track_timeout", config.track.timeout, 0.05, 3600.0);
   config.frame_listen_time =
       params.number("frame_listen_time", config.frame_listen_time, std::max(config.frame_wait, 0.1), 1e6);
+  config.mount = loadMountConfig(params);
+  config.field_of_view = FieldOfViewSettings::load(params);
   return config;
 }
 
@@ -248,6 +250,10 @@ void PtzActionServer::start()
             boost::make_shared<FunctionCallback>([this, sample] { supervisor_->supervise(sample); }),
             reinterpret_cast<uint64_t>(this));
       });
+  if (config_.field_of_view.model)
+  {
+    state_publisher_->addFieldOfView(config_.field_of_view);
+  }
   state_publisher_->start();
 
   frame_listener_ = std::make_unique<FrameListener>(node_handle_, config_.frame_listen_time, config_.frame_wait);

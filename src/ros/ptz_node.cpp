@@ -22,7 +22,8 @@ void PtzNode::start(const ros::NodeHandle& node_handle, const ros::NodeHandle& p
                       " is not set: load the URDF first (the launch file does)");
   }
   const PtzKinematics kinematics = PtzKinematics::fromUrdf(urdf, config.names);
-  backend_ = loader_.load(config.backend, params, kinematics);
+  // The mount maps device angles to the contract's, under everything else (goals, limits, state, tf).
+  backend_ = applyMount(loader_.load(config.backend, params, kinematics, config.mount), config.mount);
   if (wrap)
   {
     backend_ = wrap(backend_);

@@ -78,6 +78,11 @@ void StatePublisher::start()
   spinner_->start();
 }
 
+void StatePublisher::addFieldOfView(const FieldOfViewSettings& settings)
+{
+  field_of_view_ = std::make_unique<FieldOfViewPublisher>(node_handle_, settings, backend_, kinematics_.cameraFrame());
+}
+
 void StatePublisher::onTick()
 {
   const GoalSample tagged = supervisor_.sample();
@@ -96,6 +101,10 @@ void StatePublisher::onTick()
   joint_state_message_.velocity[0] = sample.velocity[PAN];
   joint_state_message_.velocity[1] = sample.velocity[TILT];
   joint_state_publisher_.publish(joint_state_message_);
+  if (field_of_view_)
+  {
+    field_of_view_->publish(stamp, sample.position[ZOOM]);
+  }
 
   // A state the device has not renewed (its link is down) is not sent again: tf takes no repeated stamps.
   if (transform_broadcaster_ && sample.stamp > last_transform_stamp_)

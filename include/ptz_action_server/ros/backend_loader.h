@@ -13,6 +13,7 @@
 
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/core/mounted_backend.h"
 #include "ptz_action_server/ros/backend_plugin.h"
 #include "ptz_action_server/ros/param_reader.h"
 
@@ -34,13 +35,14 @@ public:
 
   /**
    * \brief Creates the backend named \p backend ("sim" means "ptz_action_server/sim") from the parameters under the
-   * plugin's short name in \p params (~sim/..., ~serial/...), with the URDF's pan and tilt limits as its context.
+   * plugin's short name in \p params (~sim/..., ~serial/...), with the URDF's pan and tilt limits as its context,
+   * in the device's own angles through \p mount (a backend whose limits default to the URDF's gets them right side up).
    *
    * The backend is not started. Throws ConfigError for an unknown backend ("unknown backend 'x'; known backends:
    * ..."), a plugin that cannot be loaded, or a bad parameter; whatever the plugin throws otherwise passes through.
    */
   std::shared_ptr<PtzBackend> load(const std::string& backend, const ParamReader& params,
-                                   const PtzKinematics& kinematics);
+                                   const PtzKinematics& kinematics, const MountConfig& mount = MountConfig());
 
   /// The declared backends ("ptz_action_server/sim, ..."), or "(none)".
   std::string knownBackends();

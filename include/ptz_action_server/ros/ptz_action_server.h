@@ -25,6 +25,7 @@
 #include "ptz_action_server/ros/frame_listener.h"
 #include "ptz_action_server/ros/frame_tracking.h"
 #include "ptz_action_server/ros/param_reader.h"
+#include "ptz_action_server/ros/view_config.h"
 
 namespace ptz_action_server
 {
@@ -42,11 +43,14 @@ struct NodeConfig
   double frame_wait = 1.0;           ///< s a frame goal may wait for tf once the node starts listening
   FrameTrackerConfig track;          ///< how track_frame goals steer
   double status_hold = 0.02;         ///< s goal status changes wait after a new goal (StatusHold); 0: off
+  MountConfig mount;                 ///< how the device is mounted; PtzNode wraps the backend with it
+  /// The field_of_view topic and the zoomed camera_info.
+  FieldOfViewSettings field_of_view;
 
   /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
   /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,
   /// ~status_list_timeout, ~frame_listen_time, ~frame_wait, ~track/rate, ~track/gain, ~track/feed_forward,
-  /// ~track_timeout, ~status_hold.
+  /// ~track_timeout, ~status_hold, ~mount, ~pan_offset, ~field_of_view/*, ~camera_info_topic, ~camera_info_zoom.
   static NodeConfig load(const ParamReader& params);
 };
 

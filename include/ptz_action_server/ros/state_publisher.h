@@ -21,6 +21,7 @@
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/goal_supervisor.h"
 #include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/ros/field_of_view_publisher.h"
 
 namespace ptz_action_server
 {
@@ -47,6 +48,9 @@ public:
 
   StatePublisher(const StatePublisher&) = delete;
   StatePublisher& operator=(const StatePublisher&) = delete;
+
+  /// Publishes field_of_view on each tick (and serves the zoomed camera_info on this thread). Before start().
+  void addFieldOfView(const FieldOfViewSettings& settings);
 
   /// Advertises the topics, publishes the static transforms once (with tf on), then starts the timer and spinner.
   void start();
@@ -79,6 +83,7 @@ private:
   double state_rate_min_ = 0.0;
   double state_rate_max_ = 0.0;
   std::unique_ptr<diagnostic_updater::FrequencyStatus> state_rate_;
+  std::unique_ptr<FieldOfViewPublisher> field_of_view_;  ///< null without a configured field of view
   ros::SteadyTimer timer_;
   std::unique_ptr<ros::AsyncSpinner> spinner_;
 };
