@@ -14,6 +14,7 @@
 
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/PtzFrameAction.h"
+#include "ptz_action_server/PtzPresetAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/goal_supervisor.h"
@@ -21,6 +22,7 @@
 #include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/ros/frame_listener.h"
 #include "ptz_action_server/ros/param_reader.h"
+#include "ptz_action_server/ros/preset_services.h"
 
 namespace ptz_action_server
 {
@@ -36,10 +38,11 @@ struct NodeConfig
   double status_list_timeout = 1.0;  ///< s a finished goal stays in actionlib's status list (actionlib: 5)
   double frame_listen_time = 10.0;   ///< s the node keeps listening to tf after the last frame goal
   double frame_wait = 1.0;           ///< s a frame goal may wait for tf once the node starts listening
+  PresetConfig presets;              ///< the presets file and home
 
   /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
   /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,
-  /// ~status_list_timeout, ~frame_listen_time, ~frame_wait.
+  /// ~status_list_timeout, ~frame_listen_time, ~frame_wait, and the presets' (see PresetConfig::load).
   static NodeConfig load(const ParamReader& params);
 };
 
@@ -51,6 +54,7 @@ enum class ActionKind
   VELOCITY,
   POSITION_ABS_TF,
   FRAME,
+  PRESET,
 };
 
 const char* actionName(ActionKind kind);
@@ -97,6 +101,7 @@ private:
   using PtzServer = actionlib::ActionServer<PtzAction>;
   using PtzRelToServer = actionlib::ActionServer<PtzRelToAction>;
   using PtzFrameServer = actionlib::ActionServer<PtzFrameAction>;
+  using PtzPresetServer = actionlib::ActionServer<PtzPresetAction>;
 
   /// The action server of \p kind, not started, with the node's queue sizes and status_list_timeout.
   template <class Action>
@@ -115,6 +120,8 @@ private:
   std::string toCommand(const PtzGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
   std::string toCommand(const PtzRelToGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
   std::string toCommand(const PtzFrameGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
+  std::string toCommand(const PtzPresetGoal& goal, ActionKind kind, const PtzSample& sample,
+                        GoalCommand& command) const;
   /// The transform from \p frame_id to the base frame, looked up once without waiting; "" or the reason.
   std::string lookupFrame(const std::string& frame_id, Eigen::Isometry3d& frame_in_base) const;
 
@@ -152,6 +159,8 @@ private:
   std::unique_ptr<PtzServer> velocity_server_;
   std::unique_ptr<PtzRelToServer> position_abs_tf_server_;
   std::unique_ptr<PtzFrameServer> frame_server_;
+  std::unique_ptr<PresetServices> presets_;  ///< the preset services and lookups; built by start()
+  std::unique_ptr<PtzPresetServer> preset_server_;
 };
 
 }  // namespace ptz_action_server
