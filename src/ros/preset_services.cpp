@@ -70,6 +70,16 @@ PresetServices::PresetServices(const ros::NodeHandle& node_handle, const PresetC
   {
     home[ZOOM] = has_zoom_ ? limits.axes[ZOOM].range.min : 1.0;
   }
+  for (Axis axis : ALL_AXES)
+  {
+    const AxisCapability& capability = limits.axes[axis];
+    if (capability.present && !capability.range.contains(home[axis]))
+    {
+      ROS_WARN("home %s %.4f is outside the limits [%.4f, %.4f]: goals to home are rejected (or clamped with "
+               "clamp_goals)",
+               axisName(axis), home[axis], capability.range.min, capability.range.max);
+    }
+  }
   store_ = std::make_unique<PresetStore>(config.file, home);
   const std::string error = store_->load();
   if (error.empty())

@@ -25,6 +25,7 @@ TOLERANCE = 0.006  # rad: the node's 0.005 plus float32 rounding
 ZOOM_TOLERANCE = 0.06
 START_WAIT = 90.0  # s for the node to come up (roslaunch on a busy 2-core machine)
 GOAL_WAIT = 30.0
+HOME = (0.1, -0.05, 1.0)  # ~home/pan, ~home/tilt; zoom: the sim's lowest
 
 
 def wait_until(condition, timeout, step=0.02):
@@ -69,6 +70,9 @@ class PresetsTest(unittest.TestCase):
         cls.presets_file = os.path.join(cls.directory, 'presets.yaml')
         cls.state = None
         rospy.Subscriber(NAMESPACE + '/ptz_state', PtzState, cls.on_state, queue_size=10)
+        # home's pan and tilt from parameters (the launch file leaves them alone), its zoom by default.
+        rospy.set_param(NAMESPACE + '/ptz_action_server/home/pan', HOME[0])
+        rospy.set_param(NAMESPACE + '/ptz_action_server/home/tilt', HOME[1])
         cls.node = Node(cls.presets_file)
 
     @classmethod
@@ -131,10 +135,10 @@ class PresetsTest(unittest.TestCase):
     def test_home_is_predefined(self):
         self.move_to(0.3, 0.3, 2.0)
         presets, _ = self.listed()
-        self.assertEqual(presets['home'], (0.0, 0.0, 1.0))  # zoom: the sim's lowest
+        self.assertEqual(presets['home'], HOME)
         state, text = self.go_to_preset('home')
         self.assertEqual(state, GoalStatus.SUCCEEDED, text)
-        self.assert_state_near(0.0, 0.0, 1.0)
+        self.assert_state_near(*HOME)
         for answer in (self.node.save('home'), self.node.delete('home')):
             self.assertFalse(answer.success)
             self.assertIn('predefined', answer.message)
