@@ -19,9 +19,8 @@ namespace
 namespace fs = std::filesystem;
 
 constexpr const char* PRESETS_KEY = "presets";
-constexpr const char* HEADER =
-    "# ptz_action_server presets: pan and tilt in rad, zoom as X-factor. The node rewrites this file whole on every\n"
-    "# save and delete (move_ptz/save_preset, move_ptz/delete_preset); edit it only while the node is stopped.\n";
+constexpr const char* HEADER = "# ptz_action_server presets: pan and tilt in rad, zoom as X-factor.\n"
+                               "# Rewritten on every save and delete: edit it only while the node is stopped.\n";
 
 std::string systemError(const std::string& what, const std::string& path)
 {

@@ -38,8 +38,7 @@ std::string fileNameOf(const std::string& node_name)
 
 std::string describe(const std::string& name, const AxisValues& pose)
 {
-  return formatText("'%s': pan %.4f rad, tilt %.4f rad, zoom %.2f X", name.c_str(), pose[PAN], pose[TILT],
-                    pose[ZOOM]);
+  return formatText("'%s': pan %.4f rad, tilt %.4f rad, zoom %.2f X", name.c_str(), pose[PAN], pose[TILT], pose[ZOOM]);
 }
 }  // namespace
 

@@ -31,8 +31,8 @@ using NamedPose = std::pair<std::string, AxisValues>;
 class PresetStore
 {
 public:
-  static constexpr const char* HOME = "home";    ///< the predefined preset
-  static constexpr std::size_t MAX_NAME = 64;    ///< longest name, in characters
+  static constexpr const char* HOME = "home";     ///< the predefined preset
+  static constexpr std::size_t MAX_NAME = 64;     ///< longest name, in characters
   static constexpr std::size_t MAX_COUNT = 1000;  ///< most saved presets (home not counted)
 
   /// A store for \p path (not read yet) with \p home as the home pose.
