@@ -47,11 +47,15 @@ class Node:
         prefix = NAMESPACE + '/move_ptz/'
         self.position = actionlib.SimpleActionClient(prefix + 'position_abs', PtzAction)
         self.preset = actionlib.SimpleActionClient(prefix + 'preset', PtzPresetAction)
-        for client in (self.position, self.preset):
-            if not client.wait_for_server(rospy.Duration(START_WAIT)):
-                raise RuntimeError('the node did not come up within %.0f s' % START_WAIT)
-        for service in ('save_preset', 'delete_preset', 'list_presets'):
-            rospy.wait_for_service(prefix + service, START_WAIT)
+        try:
+            for client in (self.position, self.preset):
+                if not client.wait_for_server(rospy.Duration(START_WAIT)):
+                    raise RuntimeError('the node did not come up within %.0f s' % START_WAIT)
+            for service in ('save_preset', 'delete_preset', 'list_presets'):
+                rospy.wait_for_service(prefix + service, START_WAIT)
+        except Exception:
+            self.stop()  # leave no roslaunch behind
+            raise
         self.save = rospy.ServiceProxy(prefix + 'save_preset', SavePreset)
         self.delete = rospy.ServiceProxy(prefix + 'delete_preset', DeletePreset)
         self.list = rospy.ServiceProxy(prefix + 'list_presets', ListPresets)
@@ -59,7 +63,11 @@ class Node:
     def stop(self):
         if self.process.poll() is None:
             self.process.send_signal(signal.SIGINT)
-            self.process.wait(timeout=60)
+            try:
+                self.process.wait(timeout=60)
+            except subprocess.TimeoutExpired:
+                self.process.kill()
+                self.process.wait()
 
 
 class PresetsTest(unittest.TestCase):
