@@ -25,6 +25,7 @@ PTZ_APT_PACKAGES=(
   googletest libgtest-dev libbenchmark-dev
   nlohmann-json3-dev
   libcurl4-openssl-dev libssl-dev libtinyxml2-dev
+  libyaml-cpp-dev
 )
 
 log() {

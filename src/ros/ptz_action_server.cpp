@@ -36,6 +36,10 @@ std::string frameOf(const PtzFrameGoal& goal)
 {
   return goal.frame_id;
 }
+std::string frameOf(const PtzPresetGoal&)
+{
+  return {};
+}
 }  // namespace
 
 const char* actionName(ActionKind kind)
@@ -54,6 +58,8 @@ const char* actionName(ActionKind kind)
       return "frame";
     case ActionKind::TRACK_FRAME:
       return "track_frame";
+    case ActionKind::PRESET:
+      return "preset";
   }
   return "?";
 }
@@ -160,6 +166,7 @@ NodeConfig NodeConfig::load(const ParamReader& params)
       params.number("frame_listen_time", config.frame_listen_time, std::max(config.frame_wait, 0.1), 1e6);
   config.mount = loadMountConfig(params);
   config.field_of_view = FieldOfViewSettings::load(params);
+  config.presets = PresetConfig::load(params);
   return config;
 }
 
@@ -256,6 +263,7 @@ void PtzActionServer::start()
   }
   state_publisher_->start();
 
+  presets_ = std::make_unique<PresetServices>(node_handle_, config_.presets, limits_, backend_);
   frame_listener_ = std::make_unique<FrameListener>(node_handle_, config_.frame_listen_time, config_.frame_wait);
   frame_tracking_ = std::make_unique<FrameTracking>(node_handle_, kinematics_, limits_, config_.track, *supervisor_,
                                                     *frame_listener_, *backend_);
@@ -266,12 +274,14 @@ void PtzActionServer::start()
   position_abs_tf_server_ = makeServer<PtzRelToAction>(ActionKind::POSITION_ABS_TF);
   frame_server_ = makeServer<PtzFrameAction>(ActionKind::FRAME);
   track_frame_server_ = makeServer<PtzFrameAction>(ActionKind::TRACK_FRAME);
+  preset_server_ = makeServer<PtzPresetAction>(ActionKind::PRESET);
   position_abs_server_->start();
   position_rel_server_->start();
   velocity_server_->start();
   position_abs_tf_server_->start();
   frame_server_->start();
   track_frame_server_->start();
+  preset_server_->start();
   ROS_INFO("ptz_action_server ready with backend '%s': pan [%.3f, %.3f] rad, tilt [%.3f, %.3f] rad, zoom %s",
            backend_->name().c_str(), limits_.axes[PAN].range.min, limits_.axes[PAN].range.max,
            limits_.axes[TILT].range.min, limits_.axes[TILT].range.max,
@@ -466,6 +476,18 @@ std::string PtzActionServer::toCommand(const PtzFrameGoal& goal, ActionKind kind
   {
     return "cannot point at the origin of '" + goal.frame_id + "': it is too close to the camera";
   }
+  return {};
+}
+
+std::string PtzActionServer::toCommand(const PtzPresetGoal& goal, ActionKind, const PtzSample&,
+                                       GoalCommand& command) const
+{
+  const std::optional<AxisValues> pose = presets_->find(goal.name);
+  if (!pose)
+  {
+    return "no preset named '" + goal.name + "'";
+  }
+  command.values = *pose;
   return {};
 }
 

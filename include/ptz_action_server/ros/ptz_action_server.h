@@ -16,6 +16,7 @@
 
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/PtzFrameAction.h"
+#include "ptz_action_server/PtzPresetAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/goal_supervisor.h"
@@ -25,6 +26,7 @@
 #include "ptz_action_server/ros/frame_listener.h"
 #include "ptz_action_server/ros/frame_tracking.h"
 #include "ptz_action_server/ros/param_reader.h"
+#include "ptz_action_server/ros/preset_services.h"
 #include "ptz_action_server/ros/view_config.h"
 
 namespace ptz_action_server
@@ -46,11 +48,13 @@ struct NodeConfig
   MountConfig mount;                 ///< how the device is mounted; PtzNode wraps the backend with it
   /// The field_of_view topic and the zoomed camera_info.
   FieldOfViewSettings field_of_view;
+  PresetConfig presets;              ///< the presets file and home
 
   /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
   /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,
   /// ~status_list_timeout, ~frame_listen_time, ~frame_wait, ~track/rate, ~track/gain, ~track/feed_forward,
-  /// ~track_timeout, ~status_hold, ~mount, ~pan_offset, ~field_of_view/*, ~camera_info_topic, ~camera_info_zoom.
+  /// ~track_timeout, ~status_hold, ~mount, ~pan_offset, ~field_of_view/*, ~camera_info_topic, ~camera_info_zoom,
+  /// and the presets' (see PresetConfig::load).
   static NodeConfig load(const ParamReader& params);
 };
 
@@ -63,6 +67,7 @@ enum class ActionKind
   POSITION_ABS_TF,
   FRAME,
   TRACK_FRAME,
+  PRESET,
 };
 
 const char* actionName(ActionKind kind);
@@ -112,6 +117,7 @@ private:
   using PtzServer = actionlib::ActionServer<PtzAction>;
   using PtzRelToServer = actionlib::ActionServer<PtzRelToAction>;
   using PtzFrameServer = actionlib::ActionServer<PtzFrameAction>;
+  using PtzPresetServer = actionlib::ActionServer<PtzPresetAction>;
 
   /// The action server of \p kind, not started, with the node's queue sizes and status_list_timeout.
   template <class Action>
@@ -137,6 +143,8 @@ private:
   std::string toCommand(const PtzGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
   std::string toCommand(const PtzRelToGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
   std::string toCommand(const PtzFrameGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
+  std::string toCommand(const PtzPresetGoal& goal, ActionKind kind, const PtzSample& sample,
+                        GoalCommand& command) const;
   /// The transform from \p frame_id to the base frame, looked up once without waiting; "" or the reason.
   std::string lookupFrame(const std::string& frame_id, Eigen::Isometry3d& frame_in_base) const;
 
@@ -189,6 +197,8 @@ private:
   std::unique_ptr<PtzFrameServer> frame_server_;
   std::unique_ptr<PtzFrameServer> track_frame_server_;
   std::unique_ptr<FrameTracking> frame_tracking_;  ///< steers track_frame goals; built by start()
+  std::unique_ptr<PresetServices> presets_;  ///< the preset services and lookups; built by start()
+  std::unique_ptr<PtzPresetServer> preset_server_;
 };
 
 }  // namespace ptz_action_server

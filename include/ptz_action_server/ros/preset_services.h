@@ -1,0 +1,77 @@
+/**
+ * \file
+ * \brief The preset services (save, delete, list) around the node's PresetStore, on a queue of their own.
+ */
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
+
+#include "ptz_action_server/DeletePreset.h"
+#include "ptz_action_server/ListPresets.h"
+#include "ptz_action_server/SavePreset.h"
+#include "ptz_action_server/core/backend.h"
+#include "ptz_action_server/core/preset_store.h"
+#include "ptz_action_server/ros/param_reader.h"
+
+namespace ptz_action_server
+{
+/// Where presets are kept and where home is.
+struct PresetConfig
+{
+  std::string file;                      ///< the presets YAML file
+  AxisValues home{ { 0.0, 0.0, 1.0 } };  ///< pan, tilt (rad), zoom (X)
+  bool home_zoom_set = false;            ///< false: home's zoom is the zoom axis's lowest value (1.0 without zoom)
+
+  /// Reads ~presets_file (default $ROS_HOME/ptz_action_server/<node name>_presets.yaml, ROS_HOME defaulting to
+  /// ~/.ros, the node name's slashes as underscores), ~home/pan, ~home/tilt, ~home/zoom.
+  static PresetConfig load(const ParamReader& params);
+};
+
+/**
+ * \brief The presets of the node: move_ptz/save_preset, move_ptz/delete_preset and move_ptz/list_presets, and the
+ * lookup the preset action converts its goals with.
+ *
+ * The services run on their own queue and spinner thread, so the file write and fsync of a save never hold up goals
+ * or the state tick; the store is thread-safe for the lookups from the goal queue.
+ */
+class PresetServices
+{
+public:
+  /// Loads the presets file (an unreadable one is reported and kept: see PresetStore) and advertises the services
+  /// in \p node_handle's namespace. \p limits tell home's default zoom and whether the device has a zoom at all.
+  PresetServices(const ros::NodeHandle& node_handle, const PresetConfig& config, const Capabilities& limits,
+                 std::shared_ptr<PtzBackend> backend);
+  /// Stops the services' thread: once it returns, no service callback runs any more.
+  ~PresetServices();
+
+  PresetServices(const PresetServices&) = delete;
+  PresetServices& operator=(const PresetServices&) = delete;
+
+  /// The pose of preset \p name, home included.
+  std::optional<AxisValues> find(const std::string& name) const
+  {
+    return store_->find(name);
+  }
+
+private:
+  bool save(SavePreset::Request& request, SavePreset::Response& response);
+  bool remove(DeletePreset::Request& request, DeletePreset::Response& response);
+  bool list(ListPresets::Request& request, ListPresets::Response& response);
+
+  ros::CallbackQueue queue_;     ///< declared first: everything below registers on it
+  ros::NodeHandle node_handle_;  ///< the node's namespace, on queue_
+  std::shared_ptr<PtzBackend> backend_;
+  bool has_zoom_;
+  std::unique_ptr<PresetStore> store_;
+  ros::ServiceServer save_service_;
+  ros::ServiceServer delete_service_;
+  ros::ServiceServer list_service_;
+  std::unique_ptr<ros::AsyncSpinner> spinner_;
+};
+
+}  // namespace ptz_action_server
