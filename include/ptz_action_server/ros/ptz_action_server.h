@@ -1,6 +1,6 @@
 /**
  * \file
- * \brief The ROS node: the five action servers around one backend, its GoalSupervisor and its StatePublisher.
+ * \brief The ROS node: its action servers around one backend, its GoalSupervisor and its StatePublisher.
  */
 #pragma once
 
@@ -80,7 +80,7 @@ class StatePublisher;
 /**
  * \brief The ptz_action_server node around one backend.
  *
- * It converts the goals of the five actions (looking frames up in tf) and adapts actionlib's goal handles; the
+ * It converts the goals of its actions (looking frames up in tf) and adapts actionlib's goal handles; the
  * GoalSupervisor runs the goals, the StatePublisher the 10 Hz state tick.
  *
  * Threads: the node handle's queue (the main thread) runs every action callback and the supervisor; the state tick
