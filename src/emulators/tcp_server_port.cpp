@@ -3,52 +3,24 @@
 #include <boost/asio/post.hpp>
 #include <boost/asio/write.hpp>
 
-#include "ptz_action_server/core/units.h"
 
 namespace ptz_action_server
 {
 using boost::asio::ip::tcp;
 
 TcpServerPort::TcpServerPort(const DevicePortConfig& config, Handlers handlers)
-  : config_(config), handlers_(std::move(handlers)), acceptor_(context_), client_(context_), tick_timer_(context_)
+  : SocketServerPort(config, std::move(handlers)), acceptor_(context_), client_(context_)
 {
-  port_ = config.port;
   listen();  // in the constructor: the port is known (and taken) before anyone asks for it
 }
 
 TcpServerPort::~TcpServerPort()
 {
-  if (thread_.joinable())
-  {
-    boost::asio::post(context_, [this] {
-      closeClient();
-      boost::system::error_code ignored;
-      acceptor_.close(ignored);
-      tick_timer_.cancel();
-      context_.stop();
-    });
-    thread_.join();
-  }
-}
-
-void TcpServerPort::start()
-{
-  boost::asio::post(context_, [this] {
-    accept();
-    if (handlers_.on_tick)
-    {
-      tick();
-    }
+  stopThread([this] {
+    closeClient();
+    boost::system::error_code ignored;
+    acceptor_.close(ignored);
   });
-  thread_ = std::thread([this] {
-    auto work = boost::asio::make_work_guard(context_);
-    context_.run();
-  });
-}
-
-std::string TcpServerPort::path() const
-{
-  return config_.host + ":" + std::to_string(port_);
 }
 
 void TcpServerPort::listen()
@@ -181,18 +153,6 @@ void TcpServerPort::replug()
     }
     listen();
     accept();
-  });
-}
-
-void TcpServerPort::tick()
-{
-  handlers_.on_tick();
-  tick_timer_.expires_after(toDuration(config_.tick_period));
-  tick_timer_.async_wait([this](const boost::system::error_code& error) {
-    if (!error)
-    {
-      tick();
-    }
   });
 }
 

@@ -2,51 +2,23 @@
 
 #include <boost/asio/post.hpp>
 
-#include "ptz_action_server/core/units.h"
 
 namespace ptz_action_server
 {
 using boost::asio::ip::udp;
 
 UdpServerPort::UdpServerPort(const DevicePortConfig& config, Handlers handlers)
-  : config_(config), handlers_(std::move(handlers)), socket_(context_), tick_timer_(context_)
+  : SocketServerPort(config, std::move(handlers)), socket_(context_)
 {
-  port_ = config.port;
   bind();  // in the constructor: the port is known (and taken) before anyone asks for it
 }
 
 UdpServerPort::~UdpServerPort()
 {
-  if (thread_.joinable())
-  {
-    boost::asio::post(context_, [this] {
-      boost::system::error_code ignored;
-      socket_.close(ignored);
-      tick_timer_.cancel();
-      context_.stop();
-    });
-    thread_.join();
-  }
-}
-
-void UdpServerPort::start()
-{
-  boost::asio::post(context_, [this] {
-    receive();
-    if (handlers_.on_tick)
-    {
-      tick();
-    }
+  stopThread([this] {
+    boost::system::error_code ignored;
+    socket_.close(ignored);
   });
-  thread_ = std::thread([this] {
-    auto work = boost::asio::make_work_guard(context_);
-    context_.run();
-  });
-}
-
-std::string UdpServerPort::path() const
-{
-  return config_.host + ":" + std::to_string(port_);
 }
 
 void UdpServerPort::bind()
@@ -112,18 +84,6 @@ void UdpServerPort::replug()
     }
     bind();
     receive();
-  });
-}
-
-void UdpServerPort::tick()
-{
-  handlers_.on_tick();
-  tick_timer_.expires_after(toDuration(config_.tick_period));
-  tick_timer_.async_wait([this](const boost::system::error_code& error) {
-    if (!error)
-    {
-      tick();
-    }
   });
 }
 

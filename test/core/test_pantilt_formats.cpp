@@ -9,10 +9,13 @@
 #include <limits>
 #include <vector>
 
+#include "pantilt_golden_params.h"
 #include "ptz_action_server/core/pantilt/pantilt_codec.h"
 
 using namespace cr::pantilt;
 using Bytes = std::vector<std::uint8_t>;
+
+using pantilt_test::goldenParams;
 
 namespace
 {
@@ -22,23 +25,6 @@ bool shareVersionBytes(WireFormat first, WireFormat second)
   return first != WireFormat::V1_1 && second != WireFormat::V1_1;
 }
 
-/// The goldens' values (published-wire-facts.md 2.2, 2.3).
-PanTiltParams goldenParams()
-{
-  PanTiltParams params;
-  params.panMotorPosition = 100;
-  params.tiltMotorPosition = 200;
-  params.panAngle = 10.0f;
-  params.tiltAngle = -5.0f;
-  params.panTiltMotorPosition = 300;
-  params.panTiltAngle = 45.5f;
-  params.panMotorSpeed = 1.0f;
-  params.tiltMotorSpeed = 2.0f;
-  params.panTiltMotorSpeed = 3.0f;
-  params.isConnected = true;
-  params.isOpen = true;
-  return params;
-}
 
 /// The mask fields of \p format in mask-bit order (mask0 bit 7 first).
 std::vector<bool PanTiltParamsMask::*> maskFields(WireFormat format)

@@ -8,12 +8,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pantilt_golden_params.h"
 #include "ptz_action_server/core/pantilt/pantilt_codec.h"
 
 // The params frame (PanTiltParams encode/decode, the mask) and JSON; the commands are in test_pantilt_codec.cpp.
 
 using namespace cr::pantilt;
 using Bytes = std::vector<std::uint8_t>;
+
+using pantilt_test::goldenParams;
 
 namespace
 {
@@ -47,24 +50,6 @@ PanTiltParams distinctParams()
   return params;
 }
 
-/// The values of the published goldens: positions 100/200, angles 10/-5, speeds 1/2, the seed's combined fields
-/// 300 / 45.5 / 3, the v1.x flags set and the customs 0.
-PanTiltParams goldenParams()
-{
-  PanTiltParams params;
-  params.panMotorPosition = 100;
-  params.tiltMotorPosition = 200;
-  params.panAngle = 10.0f;
-  params.tiltAngle = -5.0f;
-  params.panTiltMotorPosition = 300;
-  params.panTiltAngle = 45.5f;
-  params.panMotorSpeed = 1.0f;
-  params.tiltMotorSpeed = 2.0f;
-  params.panTiltMotorSpeed = 3.0f;
-  params.isConnected = true;
-  params.isOpen = true;
-  return params;
-}
 
 /// \p params with the fields \p format lacks zeroed: what a frame of \p format decodes to.
 PanTiltParams onlyFieldsOf(PanTiltParams params, WireFormat format)
