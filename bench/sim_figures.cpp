@@ -106,8 +106,8 @@ void reachFigures(PtzClient& client, SharedCounters* counters, std::vector<Row>&
   }
   std::sort(ratios.begin(), ratios.end());
   rows.push_back({ "1 rad goal: reach time / closed-form minimum",
-                   formatText("p50 %.3f, max %.3f (minimum %.3f s, %d goals)", ratios[ratios.size() / 2],
-                              ratios.back(), minimum, GOALS),
+                   formatText("p50 %.3f, max %.3f (minimum %.3f s, %d goals)", ratios[ratios.size() / 2], ratios.back(),
+                              minimum, GOALS),
                    "<= 1.02" });
   rows.push_back({ "device settled (backend report) -> result", percentiles(settled_to_result_ms), "p99 <= 20 ms" });
 }

@@ -21,12 +21,12 @@ namespace
 {
 using namespace ptz_action_server;
 
-constexpr double CIRCLE_RATE = 0.5;      ///< rad/s the frame circles the camera at
-constexpr double CIRCLE_RADIUS = 4.0;    ///< m
-constexpr double START_ANGLE = -2.4;     ///< rad of pan where the frame starts; it ends at +2.4, inside +-pi
-constexpr double TRACK_SECONDS = 9.6;    ///< s of tracking
-constexpr double SETTLE_SECONDS = 1.0;   ///< s after the goal not judged (the issue's "after the first second")
-constexpr double FRAME_RATE = 50.0;      ///< Hz the frame is published at
+constexpr double CIRCLE_RATE = 0.5;     ///< rad/s the frame circles the camera at
+constexpr double CIRCLE_RADIUS = 4.0;   ///< m
+constexpr double START_ANGLE = -2.4;    ///< rad of pan where the frame starts; it ends at +2.4, inside +-pi
+constexpr double TRACK_SECONDS = 9.6;   ///< s of tracking
+constexpr double SETTLE_SECONDS = 1.0;  ///< s after the goal not judged (the issue's "after the first second")
+constexpr double FRAME_RATE = 50.0;     ///< Hz the frame is published at
 const char* const TARGET_FRAME = "bench_target";
 
 /// Where the frame is at \p seconds after the start, in the pan base frame: around the pan axis at camera height,
@@ -66,8 +66,8 @@ Row trackFigure(ros::NodeHandle& node_handle)
         double pan = 0.0;
         double tilt = 0.0;
         kinematics.aimAt(target, pan, tilt);
-        const double cosine = opticalAxis(kinematics, state->position[0], state->position[1])
-                                  .dot(opticalAxis(kinematics, pan, tilt));
+        const double cosine =
+            opticalAxis(kinematics, state->position[0], state->position[1]).dot(opticalAxis(kinematics, pan, tilt));
         errors.push_back(std::acos(std::min(1.0, cosine)));
       });
 

@@ -7,8 +7,8 @@ namespace ptz_action_server
 {
 namespace
 {
-constexpr double RATE_WINDOW = 0.1;    ///< s of positions the aim rate is measured over (at least)
-constexpr double HISTORY_SPAN = 0.5;   ///< s of positions kept
+constexpr double RATE_WINDOW = 0.1;   ///< s of positions the aim rate is measured over (at least)
+constexpr double HISTORY_SPAN = 0.5;  ///< s of positions kept
 constexpr double TWO_PI = 2.0 * M_PI;
 
 /// \p angle plus whole turns, nearest to \p reference.

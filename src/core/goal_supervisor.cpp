@@ -67,17 +67,18 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   }
   if (command.track)
   {
-    monitor_ = std::make_unique<GoalMonitor>(GoalMonitor::forTrack(command.values, start, limits_, config_, clock_->now()));
+    monitor_ =
+        std::make_unique<GoalMonitor>(GoalMonitor::forTrack(command.values, start, limits_, config_, clock_->now()));
   }
   else if (command.velocity)
   {
-    monitor_ = std::make_unique<GoalMonitor>(
-        GoalMonitor::forVelocity(command.values, start, limits_, config_, clock_->now()));
+    monitor_ =
+        std::make_unique<GoalMonitor>(GoalMonitor::forVelocity(command.values, start, limits_, config_, clock_->now()));
   }
   else
   {
-    monitor_ = std::make_unique<GoalMonitor>(
-        GoalMonitor::forPosition(command.values, start, limits_, config_, clock_->now()));
+    monitor_ =
+        std::make_unique<GoalMonitor>(GoalMonitor::forPosition(command.values, start, limits_, config_, clock_->now()));
   }
   active_goal_ = std::move(goal);
   note_ = note;

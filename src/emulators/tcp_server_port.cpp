@@ -3,7 +3,6 @@
 #include <boost/asio/post.hpp>
 #include <boost/asio/write.hpp>
 
-
 namespace ptz_action_server
 {
 using boost::asio::ip::tcp;

@@ -2,7 +2,6 @@
 
 #include <boost/asio/post.hpp>
 
-
 namespace ptz_action_server
 {
 using boost::asio::ip::udp;

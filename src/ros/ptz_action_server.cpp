@@ -172,6 +172,12 @@ void PtzActionServer::postStatus(StatusHold::Change change)
   }
 }
 
+StatusPoster PtzActionServer::statusPoster()
+{
+  return { [this](StatusHold::Change change) { postStatus(std::move(change)); },
+           [this] { return status_hold_.holding(clock_.now()); } };
+}
+
 void PtzActionServer::armStatusRelease(TimePoint due)
 {
   status_release_armed_ = due != TimePoint::max();
@@ -233,8 +239,7 @@ void PtzActionServer::submit(actionlib::ServerGoalHandle<Action> handle, ActionK
 {
   const auto goal = handle.getGoal();
   supervisor_->submit(
-      std::make_unique<GoalHandleAdapter<Action>>(handle, kind,
-                                                  [this](StatusHold::Change change) { postStatus(std::move(change)); }),
+      std::make_unique<GoalHandleAdapter<Action>>(handle, kind, statusPoster()),
       [&](const PtzSample& current, GoalCommand& command) { return toCommand(*goal, kind, current, command); });
   if constexpr (std::is_same_v<Action, PtzFrameAction>)
   {

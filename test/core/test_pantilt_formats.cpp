@@ -25,7 +25,6 @@ bool shareVersionBytes(WireFormat first, WireFormat second)
   return first != WireFormat::V1_1 && second != WireFormat::V1_1;
 }
 
-
 /// The mask fields of \p format in mask-bit order (mask0 bit 7 first).
 std::vector<bool PanTiltParamsMask::*> maskFields(WireFormat format)
 {

@@ -50,7 +50,6 @@ PanTiltParams distinctParams()
   return params;
 }
 
-
 /// \p params with the fields \p format lacks zeroed: what a frame of \p format decodes to.
 PanTiltParams onlyFieldsOf(PanTiltParams params, WireFormat format)
 {

@@ -42,6 +42,7 @@ TEST_F(StatusHoldTest, ChangesAfterAGoalWaitForTheHoldInOrder)
   clock.advance(0.001);
   EXPECT_EQ(hold.release(clock.now()), TimePoint::max());
   EXPECT_EQ(done, std::vector<std::string>({ "preempt old", "accept new", "succeed new" }));
+  EXPECT_FALSE(hold.holding(clock.now()));
 }
 
 TEST_F(StatusHoldTest, AChangeAfterTheHoldStillWaitsBehindHeldOnes)
@@ -50,6 +51,7 @@ TEST_F(StatusHoldTest, AChangeAfterTheHoldStillWaitsBehindHeldOnes)
   hold.goalArrived(clock.now());
   hold.run(record("accept"), clock.now());
   clock.advance(0.05);  // the release is late (a busy main thread)
+  EXPECT_TRUE(hold.holding(clock.now())) << "a change is still held";
   hold.run(record("succeed"), clock.now());
   EXPECT_TRUE(done.empty());
   hold.release(clock.now());

@@ -18,10 +18,10 @@ namespace ptz_action_server
 /// How a tracking goal steers. The ROS layer fills it from ~track/* once.
 struct FrameTrackerConfig
 {
-  double rate = 20.0;        ///< Hz the node looks the frame up and steers the device
-  double gain = 4.0;         ///< 1/s: velocity added per rad of aim error, on top of the feed-forward
-  double timeout = 1.0;      ///< s a frame may go without a new position before the goal aborts (track_timeout)
-  bool feed_forward = true;  ///< velocity commands with the frame's motion fed forward; false: position commands
+  double rate = 20.0;              ///< Hz the node looks the frame up and steers the device
+  double gain = 4.0;               ///< 1/s: velocity added per rad of aim error, on top of the feed-forward
+  double timeout = 1.0;            ///< s a frame may go without a new position before the goal aborts (track_timeout)
+  bool feed_forward = true;        ///< velocity commands with the frame's motion fed forward; false: position commands
   double max_extrapolation = 0.5;  ///< s the aim is carried forward past the frame's newest position, at most
 };
 

@@ -66,6 +66,12 @@ public:
     return held_.empty() ? TimePoint::max() : held_.front().first;
   }
 
+  /// True while a change made at \p now would be held.
+  bool holding(TimePoint now) const
+  {
+    return !held_.empty() || now < hold_until_;
+  }
+
   std::size_t heldCount() const
   {
     return held_.size();

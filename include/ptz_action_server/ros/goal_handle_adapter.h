@@ -40,34 +40,40 @@ public:
   }
   void accept(const std::string& text) override
   {
-    post_status_([handle = handle_, text]() mutable { handle.setAccepted(text); });
+    post_status_.post([handle = handle_, text]() mutable { handle.setAccepted(text); });
   }
   void reject(const std::string& text) override
   {
     ROS_WARN_THROTTLE(1.0, "%s goal rejected: %s", action_.c_str(), text.c_str());
-    post_status_([handle = handle_, text]() mutable { handle.setRejected(result(false), text); });
+    post_status_.post([handle = handle_, text]() mutable { handle.setRejected(result(false), text); });
   }
   void publishFeedback(const AxisValues& remaining) override
   {
     feedback_.pan_remaining = static_cast<float>(remaining[PAN]);
     feedback_.tilt_remaining = static_cast<float>(remaining[TILT]);
     feedback_.zoom_remaining = static_cast<float>(remaining[ZOOM]);
+    if (post_status_.holding())
+    {
+      // Feedback never overtakes the goal's held acceptance (clients would not know the goal yet).
+      post_status_.post([handle = handle_, feedback = feedback_]() mutable { handle.publishFeedback(feedback); });
+      return;
+    }
     handle_.publishFeedback(feedback_);
   }
   void succeed(const std::string& text) override
   {
     ROS_DEBUG("%s goal succeeded: %s", action_.c_str(), text.c_str());
-    post_status_([handle = handle_, text]() mutable { handle.setSucceeded(result(true), text); });
+    post_status_.post([handle = handle_, text]() mutable { handle.setSucceeded(result(true), text); });
   }
   void abort(const std::string& text) override
   {
     ROS_WARN("%s goal aborted: %s", action_.c_str(), text.c_str());
-    post_status_([handle = handle_, text]() mutable { handle.setAborted(result(false), text); });
+    post_status_.post([handle = handle_, text]() mutable { handle.setAborted(result(false), text); });
   }
   void preempt(const std::string& text) override
   {
     ROS_DEBUG("%s goal preempted: %s", action_.c_str(), text.c_str());
-    post_status_([handle = handle_, text]() mutable { handle.setCanceled(result(false), text); });
+    post_status_.post([handle = handle_, text]() mutable { handle.setCanceled(result(false), text); });
   }
 
 private:

@@ -48,7 +48,7 @@ struct NodeConfig
   MountConfig mount;                 ///< how the device is mounted; PtzNode wraps the backend with it
   /// The field_of_view topic and the zoomed camera_info.
   FieldOfViewSettings field_of_view;
-  PresetConfig presets;              ///< the presets file and home
+  PresetConfig presets;  ///< the presets file and home
 
   /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
   /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,
@@ -72,8 +72,12 @@ enum class ActionKind
 
 const char* actionName(ActionKind kind);
 
-/// Runs a goal status change now or later (see StatusHold).
-using StatusPoster = std::function<void(StatusHold::Change)>;
+/// Runs a goal status change now or later (see StatusHold), and says whether changes are being held.
+struct StatusPoster
+{
+  std::function<void(StatusHold::Change)> post;
+  std::function<bool()> holding;
+};
 
 class StatePublisher;
 
@@ -134,6 +138,8 @@ private:
 
   /// Runs \p change (a goal's status change) through the status hold, arming its release timer if it is held.
   void postStatus(StatusHold::Change change);
+  /// How the goal handles reach postStatus().
+  StatusPoster statusPoster();
   /// Arms the one-shot timer that releases the held status changes at \p due (none if TimePoint::max()).
   void armStatusRelease(TimePoint due);
   /// On the backend's thread when its state may have changed: queues one early verdict check on the main thread.
@@ -157,10 +163,10 @@ private:
   std::unique_ptr<GoalSupervisor> supervisor_;       ///< the goal state machine, on the main thread; built by start()
   std::unique_ptr<StatePublisher> state_publisher_;  ///< the 10 Hz tick, on its own thread; built by start()
   SystemClock clock_;
-  StatusHold status_hold_;                ///< goal status changes after a new goal wait here (main thread)
+  StatusHold status_hold_;                 ///< goal status changes after a new goal wait here (main thread)
   ros::SteadyTimer status_release_timer_;  ///< one-shot, armed while changes are held
   bool status_release_armed_ = false;
-  std::atomic<bool> supervising_{ false };           ///< supervisor_ is built: backend reports may be judged
+  std::atomic<bool> supervising_{ false };  ///< supervisor_ is built: backend reports may be judged
   /// What the backend's listener reaches this server through; the destructor cuts it (the backend may outlive us).
   struct ListenerTarget
   {
@@ -197,7 +203,7 @@ private:
   std::unique_ptr<PtzFrameServer> frame_server_;
   std::unique_ptr<PtzFrameServer> track_frame_server_;
   std::unique_ptr<FrameTracking> frame_tracking_;  ///< steers track_frame goals; built by start()
-  std::unique_ptr<PresetServices> presets_;  ///< the preset services and lookups; built by start()
+  std::unique_ptr<PresetServices> presets_;        ///< the preset services and lookups; built by start()
   std::unique_ptr<PtzPresetServer> preset_server_;
 };
 
