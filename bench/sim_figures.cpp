@@ -118,6 +118,8 @@ void zeroGoalFigures(PtzClient& client, SharedCounters* counters, int zero_goals
   std::vector<double> result_ms;
   std::vector<double> command_ms;
   int zero_failed = 0;
+  client.sendGoal(makePtzGoal(-1.0, 0.0, 1.0));  // untimed: the goals below are then zero-length
+  client.waitForResult(ros::Duration(10.0));
   for (int index = 0; index < zero_goals; ++index)
   {
     const std::uint64_t commands_before = counters->commands;
