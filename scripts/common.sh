@@ -62,6 +62,9 @@ build_package() {
   cmake --build "$BUILD_DIR" -j "$JOBS"
   if [ "${1:-}" = "with-tests" ]; then
     cmake --build "$BUILD_DIR" -j "$JOBS" --target tests
+    # run_tests runs in the environment catkin cached at configure time (catkin_generated/setup_cached.sh); on a
+    # clean clone devel/lib did not exist then, so the Python rostests could not import the generated messages.
+    cmake "$BUILD_DIR" >"$BUILD_DIR/reconfigure.log" 2>&1 || { cat "$BUILD_DIR/reconfigure.log"; return 1; }
   fi
   # shellcheck disable=SC1091
   set +u

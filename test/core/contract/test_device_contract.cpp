@@ -85,10 +85,9 @@ protected:
     return verdict;
   }
 
-  GoalMonitor monitorFor(const AxisValues& target) const
+  GoalMonitor monitorFor(const AxisValues& target, const GoalMonitorConfig& config = GoalMonitorConfig()) const
   {
-    return GoalMonitor::forPosition(target, backend_->sample(), backend_->capabilities(), GoalMonitorConfig(),
-                                    SteadyClock::now());
+    return GoalMonitor::forPosition(target, backend_->sample(), backend_->capabilities(), config, SteadyClock::now());
   }
 
   std::unique_ptr<DeviceFixture> device_;
@@ -179,7 +178,11 @@ TEST_P(DeviceContract, ARefusedCommandAbortsTheGoalWithTheDevicesWords)
 TEST_P(DeviceContract, SilenceEndsTheGoalAsLinkLostWithinTheDeadline)
 {
   const AxisValues far = startLongGoal();
-  GoalMonitor monitor = monitorFor(far);
+  // The stall rule would race the state timeout (both 1 s, and the last progress may come before the last state):
+  // this test is about the silence, so the stall waits well past the state timeout.
+  GoalMonitorConfig config;
+  config.stall_timeout = 3.0 * stateTimeout();
+  GoalMonitor monitor = monitorFor(far, config);
   device_->setSilent(true);
   const TimePoint silenced = SteadyClock::now();
   const GoalVerdict verdict = superviseUntilFinal(monitor);
