@@ -16,6 +16,7 @@
 #include <ros/ros.h>
 
 #include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/core/forwarding_backend.h"
 #include "ptz_action_server/ros/ptz_node.h"
 
 namespace ptz_bench
@@ -25,62 +26,34 @@ namespace
 using namespace ptz_action_server;
 
 /// Passes everything to the loaded backend and stamps each command in shared memory.
-class RecordingBackend : public PtzBackend
+class RecordingBackend : public ForwardingBackend
 {
 public:
   RecordingBackend(std::shared_ptr<PtzBackend> inner, SharedCounters* counters)
-    : inner_(std::move(inner)), counters_(counters)
+    : ForwardingBackend(std::move(inner)), counters_(counters)
   {
-  }
-  std::string name() const override
-  {
-    return inner_->name();
-  }
-  Capabilities capabilities() const override
-  {
-    return inner_->capabilities();
-  }
-  void start() override
-  {
-    inner_->start();
   }
   void goTo(const AxisValues& position) override
   {
     record();
-    inner_->goTo(position);
+    inner().goTo(position);
   }
   void moveAtVelocity(const AxisValues& velocity) override
   {
     record();
-    inner_->moveAtVelocity(velocity);
+    inner().moveAtVelocity(velocity);
   }
   void stop() override
   {
     const std::int64_t now_ns = record();
     counters_->last_stop_ns = now_ns;
     counters_->stops++;
-    inner_->stop();
-  }
-  PtzSample sample() const override
-  {
-    return inner_->sample();
-  }
-  std::string lastFault() const override
-  {
-    return inner_->lastFault();
-  }
-  std::string lastLinkLoss() const override
-  {
-    return inner_->lastLinkLoss();
-  }
-  void diagnostics(std::vector<DiagnosticValue>& values) const override
-  {
-    inner_->diagnostics(values);
+    inner().stop();
   }
   /// Stamps each report of the backend's, so the bench can time settled -> result.
   bool setSampleListener(SampleListener listener) override
   {
-    return inner_->setSampleListener([this, listener = std::move(listener)] {
+    return inner().setSampleListener([this, listener = std::move(listener)] {
       counters_->last_report_ns = monotonicNanoseconds();
       listener();
     });
@@ -94,7 +67,6 @@ private:
     counters_->commands++;
     return now_ns;
   }
-  std::shared_ptr<PtzBackend> inner_;
   SharedCounters* counters_;
 };
 

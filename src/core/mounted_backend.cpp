@@ -9,73 +9,44 @@
 namespace ptz_action_server
 {
 MountedBackend::MountedBackend(std::shared_ptr<PtzBackend> device, const MountConfig& mount)
-  : device_(std::move(device)), mount_(mount), sign_(mount.inverted ? -1.0 : 1.0)
+  : ForwardingBackend(std::move(device)), mount_(mount), sign_(mount.inverted ? -1.0 : 1.0)
 {
-  if (!device_)
-  {
-    throw ConfigError("MountedBackend needs a device backend");
-  }
   if (!std::isfinite(mount_.pan_offset))
   {
     throw ConfigError("the mount's pan offset must be a finite number of radians");
   }
 }
 
-std::string MountedBackend::name() const
-{
-  return device_->name();
-}
-
 Capabilities MountedBackend::capabilities() const
 {
-  return contractLimits(device_->capabilities(), mount_);
-}
-
-void MountedBackend::start()
-{
-  device_->start();
+  return contractLimits(inner().capabilities(), mount_);
 }
 
 void MountedBackend::goTo(const AxisValues& position)
 {
-  device_->goTo(toDevice(position));
+  inner().goTo(toDevice(position));
 }
 
 void MountedBackend::moveAtVelocity(const AxisValues& velocity)
 {
-  device_->moveAtVelocity(mapVelocity(velocity));
-}
-
-void MountedBackend::stop()
-{
-  device_->stop();
+  inner().moveAtVelocity(mapVelocity(velocity));
 }
 
 PtzSample MountedBackend::sample() const
 {
-  PtzSample sample = device_->sample();
+  PtzSample sample = inner().sample();
   sample.position = toContract(sample.position);
   sample.velocity = mapVelocity(sample.velocity);
   return sample;
 }
 
-std::string MountedBackend::lastFault() const
-{
-  return device_->lastFault();
-}
-
-std::string MountedBackend::lastLinkLoss() const
-{
-  return device_->lastLinkLoss();
-}
-
 void MountedBackend::diagnostics(std::vector<DiagnosticValue>& values) const
 {
-  device_->diagnostics(values);
+  inner().diagnostics(values);
   values.emplace_back("mount", mountName(mount_));
   values.emplace_back("mount pan offset (rad)", formatText("%.4f", mount_.pan_offset));
   // The device's own angles, so a user can compare them with its display (and tests can see the mapping).
-  const PtzSample sample = device_->sample();
+  const PtzSample sample = inner().sample();
   values.emplace_back("device pan (rad)", formatText("%.4f", sample.position[PAN]));
   values.emplace_back("device tilt (rad)", formatText("%.4f", sample.position[TILT]));
 }

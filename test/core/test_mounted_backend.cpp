@@ -173,6 +173,7 @@ TEST(MountConfigTest, IdentityNeedsNoWrapperAndBadOffsetsAreRefused)
   EXPECT_NE(applyMount(device, MountConfig{ true, 0.0 }), device);
   EXPECT_NE(applyMount(device, MountConfig{ false, 0.1 }), device);
   EXPECT_THROW(MountedBackend(device, MountConfig{ false, std::nan("") }), ConfigError);
+  EXPECT_THROW(MountedBackend(nullptr, MountConfig{ true, 0.0 }), ConfigError);
 }
 
 TEST(MountConfigTest, DeviceLimitsAreTheInverseOfContractLimits)

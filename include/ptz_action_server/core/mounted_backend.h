@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "ptz_action_server/core/backend.h"
+#include "ptz_action_server/core/forwarding_backend.h"
 
 namespace ptz_action_server
 {
@@ -37,27 +37,18 @@ struct MountConfig
  *
  * Thread-safe as the wrapped backend is: the mapping is immutable.
  */
-class MountedBackend : public PtzBackend
+class MountedBackend : public ForwardingBackend
 {
 public:
-  /// Owns \p device. Throws ConfigError if the offset is not finite.
+  /// Owns \p device. Throws ConfigError if it is null or the offset is not finite.
   MountedBackend(std::shared_ptr<PtzBackend> device, const MountConfig& mount);
 
-  std::string name() const override;
   Capabilities capabilities() const override;
-  void start() override;
   void goTo(const AxisValues& position) override;
   void moveAtVelocity(const AxisValues& velocity) override;
-  void stop() override;
   PtzSample sample() const override;
-  std::string lastFault() const override;
-  std::string lastLinkLoss() const override;
   /// The device's, then the mount and the device's own pan and tilt (as it reads them).
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
-  bool setSampleListener(SampleListener listener) override
-  {
-    return device_->setSampleListener(std::move(listener));
-  }
 
   /// Device position -> contract position (pan, tilt in rad; zoom unchanged).
   AxisValues toContract(const AxisValues& device_position) const;
@@ -72,7 +63,6 @@ public:
   }
 
 private:
-  const std::shared_ptr<PtzBackend> device_;
   const MountConfig mount_;
   const double sign_;  ///< +1 upright, -1 inverted
 };
