@@ -70,6 +70,19 @@ protected:
     backend_ = makePanTiltBackend(config);
     backend_->start();
     ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, 10.0)) << "the link never came up";
+    // The link is up at the device's first frame, which can leave before the last start-up datagram (the state
+    // request that follows the speeds) is read: tests that look at what the device received start after it.
+    ASSERT_TRUE(waitUntil([&] { return stateRequestsReceived() > 0; }, 10.0)) << "no state request arrived";
+  }
+
+  std::size_t stateRequestsReceived() const
+  {
+    std::size_t requests = 0;
+    for (const ReceivedDatagram& datagram : device_->received().items())
+    {
+      requests += !datagram.bytes.empty() && datagram.bytes[0] == PARAMS_HEADER ? 1 : 0;
+    }
+    return requests;
   }
 
   bool waitForRest(double pan, double tilt, double timeout = 10.0)

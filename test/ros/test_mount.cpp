@@ -129,7 +129,7 @@ TEST_F(MountTest, LimitsAreTheDevicesMirroredAndShifted)
 
   // Beyond the device's own limits in contract numbers, but inside the mirrored ones: taken and reached.
   EXPECT_EQ(moveTo(-1.5, -0.8, 1.0), State::SUCCEEDED) << absolute_->getState().getText();
-  ASSERT_TRUE(observer_->waitTicks(1));
+  ASSERT_TRUE(observer_->waitTicks(2));
   EXPECT_NEAR(observer_->latest().pan, -1.5, TOLERANCE);
   EXPECT_NEAR(observer_->latest().tilt, -0.8, TOLERANCE);
 }

@@ -27,7 +27,7 @@ TEST_F(NodeTest, PositionGoalSucceedsWithFeedback)
   EXPECT_LT(items.front().tilt_remaining, -0.1);
   EXPECT_NEAR(items.back().pan_remaining, 0.0, 0.2);
 
-  ASSERT_TRUE(observer_->waitTicks(1));
+  ASSERT_TRUE(observer_->waitTicks(2));
   const PtzState state = observer_->latest();
   EXPECT_NEAR(state.pan, 0.6, TOLERANCE);
   EXPECT_NEAR(state.tilt, -0.3, TOLERANCE);
@@ -94,7 +94,7 @@ TEST_F(NodeTest, CancelDeceleratesTheDeviceToRest)
   ASSERT_TRUE(absolute_->waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(absolute_->getState(), State::PREEMPTED);
   EXPECT_NE(absolute_->getState().getText().find("cancelled"), std::string::npos) << absolute_->getState().getText();
-  ASSERT_TRUE(observer_->waitTicks(1));
+  ASSERT_TRUE(observer_->waitTicks(2));
   const double stopped = observer_->latest().pan;
   // It braked past the point of the cancel, within the braking distance at full speed (1.5^2 / (2 x 3) rad) plus
   // the travel while the state seen here was old (a tick, and a device state period for remote devices), and far
@@ -110,12 +110,12 @@ TEST_F(NodeTest, CancelDeceleratesTheDeviceToRest)
 TEST_F(NodeTest, RelativeGoalMovesByTheOffset)
 {
   ASSERT_EQ(moveTo(0.1, -0.2, 3.0), State::SUCCEEDED);
-  ASSERT_TRUE(observer_->waitTicks(1));
+  ASSERT_TRUE(observer_->waitTicks(2));
   const PtzState start = observer_->latest();
   relative_->sendGoal(makePtzGoal(0.25, 0.15, 1.0));
   ASSERT_TRUE(relative_->waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(relative_->getState(), State::SUCCEEDED) << relative_->getState().getText();
-  ASSERT_TRUE(observer_->waitTicks(1));
+  ASSERT_TRUE(observer_->waitTicks(2));
   EXPECT_NEAR(observer_->latest().pan, start.pan + 0.25, TOLERANCE);
   EXPECT_NEAR(observer_->latest().tilt, start.tilt + 0.15, TOLERANCE);
   if (simBackend())
@@ -144,7 +144,7 @@ TEST_F(NodeTest, VelocityGoalMovesUntilStoppedOrAtTheLimit)
   EXPECT_EQ(velocity_->getState(), State::PREEMPTED);
   ASSERT_TRUE(stopper.waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(stopper.getState(), State::SUCCEEDED) << stopper.getState().getText();
-  ASSERT_TRUE(observer_->waitTicks(1));
+  ASSERT_TRUE(observer_->waitTicks(2));
   const double stopped = observer_->latest().pan;
   ASSERT_TRUE(observer_->waitTicks(3));
   EXPECT_EQ(observer_->latest().pan, stopped);
@@ -155,7 +155,7 @@ TEST_F(NodeTest, VelocityGoalMovesUntilStoppedOrAtTheLimit)
   EXPECT_EQ(velocity_->getState(), State::SUCCEEDED) << velocity_->getState().getText();
   EXPECT_NE(velocity_->getState().getText().find("tilt reached its upper limit"), std::string::npos)
       << velocity_->getState().getText();
-  ASSERT_TRUE(observer_->waitTicks(1));
+  ASSERT_TRUE(observer_->waitTicks(2));
   // The URDF's limit, unless the device's own is narrower (a gimbal manager's, given as ~tilt_upper_limit).
   double upper_limit = M_PI / 2;
   ros::NodeHandle("~").param("tilt_upper_limit", upper_limit, upper_limit);

@@ -18,6 +18,7 @@ TEST_F(NodeTest, APresetSavedHereIsReachedFromElsewhere)
   ASSERT_TRUE(preset.waitForServer(ros::Duration(GOAL_WAIT)));
 
   ASSERT_EQ(moveTo(0.4, -0.2, 1.0), State::SUCCEEDED);
+  ASSERT_TRUE(observer_->waitTicks(2));  // the result can come before the state that shows the goal reached
   const PtzState saved_at = observer_->latest();
   ptz_action_server::SavePreset save;
   save.request.name = "node_test";

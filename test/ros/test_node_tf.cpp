@@ -53,7 +53,7 @@ TEST_F(NodeTest, FrameGoalsPointAtTfFrames)
   relative_to_->sendGoal(relative_goal);
   ASSERT_TRUE(relative_to_->waitForResult(ros::Duration(GOAL_WAIT)));
   ASSERT_EQ(relative_to_->getState(), State::SUCCEEDED) << relative_to_->getState().getText();
-  ASSERT_TRUE(observer_->waitTicks(1));
+  ASSERT_TRUE(observer_->waitTicks(2));
   EXPECT_NEAR(observer_->latest().pan, -0.3, TOLERANCE);
   EXPECT_NEAR(observer_->latest().tilt, 0.2, TOLERANCE);
 
