@@ -5,6 +5,7 @@
  */
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "ptz_action_server/core/axis/vapix_codec.h"
@@ -140,7 +141,17 @@ TEST(VapixZoomTable, RejectsTablesThatCannotMap)
   EXPECT_EQ(ZoomTable::parse("1:1,500:0.5", table), "point 2 '500:0.5': values and X must increase");
   EXPECT_EQ(ZoomTable::parse("1:1,1:2", table), "point 2 '1:2': values and X must increase");
   EXPECT_NE(ZoomTable::parse("1:0,2:1", table), "");
+  EXPECT_EQ(ZoomTable::parse("1:1,9999:1e300", table), "point 2 '9999:1e300': X must be 0.01..100000 and the value 0..19999");
+  // X one ulp apart (found by the fuzzer): no value between them could be read back from its X.
+  EXPECT_EQ(ZoomTable::parse("0:1,9999:1.0000000000000002", table),
+            "point 2 '9999:1.0000000000000002': X must grow by at least 0.0001 % from the point before");
   EXPECT_TRUE(table.empty());
+  // The smallest step taken still maps every value in the table there and back.
+  ASSERT_EQ(ZoomTable::parse("0:1,9999:1.0000011", table), "");
+  for (double value : { 0.0, 1.0, 2999.7, 5000.0, 9999.0 })
+  {
+    EXPECT_NEAR(table.toValue(table.toFactor(value)), value, 1e-6 * std::max(1.0, value)) << value;
+  }
 }
 
 TEST(CameraDigests, Rfc7616Md5Example)

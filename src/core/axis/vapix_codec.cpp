@@ -13,6 +13,11 @@ namespace vapix
 {
 namespace
 {
+// A zoom table's X-factors: optical magnifications, plus digital zoom, are well inside these.
+constexpr double ZOOM_FACTOR_MIN = 0.01;
+constexpr double ZOOM_FACTOR_MAX = 100000.0;
+constexpr double ZOOM_FACTOR_MIN_STEP = 1e-6;  ///< relative, between two points of the table
+
 std::string trimmed(const std::string& text)
 {
   const std::size_t first = text.find_first_not_of(" \t\r\n");
@@ -193,14 +198,21 @@ std::string ZoomTable::parse(const std::string& text, ZoomTable& table)
     {
       return formatText("point %zu '%.40s' is not VALUE:X", points.size() + 1, point.c_str());
     }
-    if (factor <= 0.0 || value < ZOOM_VALUE_MIN - 1.0 || value > ZOOM_VALUE_MAX)
+    if (!(factor >= ZOOM_FACTOR_MIN && factor <= ZOOM_FACTOR_MAX) || value < ZOOM_VALUE_MIN - 1.0 ||
+        value > ZOOM_VALUE_MAX)
     {
-      return formatText("point %zu '%.40s': X must be > 0 and the value 0..%g", points.size() + 1, point.c_str(),
-                        ZOOM_VALUE_MAX);
+      return formatText("point %zu '%.40s': X must be %g..%g and the value 0..%g", points.size() + 1, point.c_str(),
+                        ZOOM_FACTOR_MIN, ZOOM_FACTOR_MAX, ZOOM_VALUE_MAX);
     }
     if (!points.empty() && (value <= points.back().first || factor <= points.back().second))
     {
       return formatText("point %zu '%.40s': values and X must increase", points.size() + 1, point.c_str());
+    }
+    // Interpolation is geometric: X steps below a part in a million round away and the value cannot be read back.
+    if (!points.empty() && factor < points.back().second * (1.0 + ZOOM_FACTOR_MIN_STEP))
+    {
+      return formatText("point %zu '%.40s': X must grow by at least %g %% from the point before", points.size() + 1,
+                        point.c_str(), ZOOM_FACTOR_MIN_STEP * 100.0);
     }
     points.emplace_back(value, factor);
     if (points.size() > 1000)
