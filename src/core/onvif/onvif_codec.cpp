@@ -265,12 +265,6 @@ std::string readNode(const Element* response, const std::string& token, Node& no
     {
       return "PTZ node '" + token + "' lists no absolute pan-tilt space this backend knows";
     }
-    read.home_supported = text(child(item, ns::SCHEMA, "HomeSupported")) == "true";
-    double presets = 0.0;
-    if (number(text(child(item, ns::SCHEMA, "MaximumNumberOfPresets")), presets))
-    {
-      read.presets = static_cast<int>(presets);
-    }
     node = read;
     return {};
   }

@@ -80,8 +80,6 @@ struct Node
   Range degree_pan, degree_tilt;
   bool generic_space = false;
   bool zoom = false;  ///< lists the generic zoom position space
-  bool home_supported = false;
-  int presets = 0;
 };
 /// A GetStatus reply.
 struct Status
