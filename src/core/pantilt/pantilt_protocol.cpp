@@ -38,7 +38,7 @@ void PanTiltProtocol::onConnected()
 {
   heard_ = false;
   slip_.reset();
-  // The speeds first: the device answers in order, so once its first frame is here they have been taken.
+  // The speeds first, then a state request: they reach the device in order, ahead of any goal's frames.
   sendSpeeds();
   sendStateRequest();
 }

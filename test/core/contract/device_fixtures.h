@@ -48,6 +48,12 @@ public:
   virtual void clearCommands() = 0;
   /// The emulator's own state: pan, tilt (rad) and zoom (X, or 1 without zoom).
   virtual PtzSample deviceState() const = 0;
+  /// True once the emulator has read all the backend sends at start-up, so the cases see only their own commands.
+  /// By default the link coming up tells (the device answers the last of it); see PanTilt for a device that does not.
+  virtual bool startupReceived() const
+  {
+    return true;
+  }
 
   /// The device stops answering (it reads and ignores everything).
   virtual void setSilent(bool silent) = 0;

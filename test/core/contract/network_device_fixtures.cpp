@@ -88,6 +88,15 @@ public:
   {
     return emulator_->panTilt().sample();
   }
+  /// The controller reports as soon as it knows its peer, so the link can come up on the first speed frame, before
+  /// the emulator reads the rest; the state request that ends the start-up has arrived once the rest has.
+  bool startupReceived() const override
+  {
+    const auto datagrams = emulator_->received().items();
+    return std::any_of(datagrams.begin(), datagrams.end(), [](const ReceivedDatagram& datagram) {
+      return !datagram.bytes.empty() && datagram.bytes[0] == cr::pantilt::PARAMS_HEADER;
+    });
+  }
   void setSilent(bool silent) override
   {
     emulator_->setSilent(silent);

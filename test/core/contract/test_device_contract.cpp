@@ -30,6 +30,7 @@ protected:
     backend_ = device_->makeBackend();
     backend_->start();
     ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT)) << "the link never came up";
+    ASSERT_TRUE(waitUntil([&] { return device_->startupReceived(); }, WAIT)) << "the start-up never reached the device";
   }
 
   double stateTimeout() const
