@@ -28,8 +28,9 @@ PTZ_APT_PACKAGES=(
   libyaml-cpp-dev
 )
 
+# A step's heading, with the time of day, so a CI log shows where its time went.
 log() {
-  printf '\033[1m==> %s\033[0m\n' "$*"
+  printf '\033[1m==> %s  [%s]\033[0m\n' "$*" "$(date +%T)"
 }
 
 # apt-get install the given packages that are not installed yet.
