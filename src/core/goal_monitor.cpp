@@ -238,7 +238,7 @@ std::size_t GoalMonitor::findStalledAxis(const PtzSample& sample, TimePoint now,
     if (!must_move[axis] || std::abs(sample.position[axis] - last_moved_position_[axis]) > step)
     {
       last_moved_position_[axis] = sample.position[axis];
-      last_moved_at_[axis] = now;
+      last_moved_at_[axis] = std::max(last_moved_at_[axis], now);  // a late sample is judged at its own, earlier time
     }
     else if (stalled == AXIS_COUNT && secondsBetween(last_moved_at_[axis], now) > config_.stall_timeout)
     {

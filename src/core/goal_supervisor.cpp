@@ -84,7 +84,7 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   note_ = note;
   mode_ = command.velocity ? GoalMode::VELOCITY : GoalMode::POSITION;
   // A goal the device already satisfies (zero length, or a stop while at rest) ends here, not a tick later.
-  judge(backend_->sample());
+  judge(backend_->sample(), true, clock_->now());
 }
 
 void GoalSupervisor::cancel(const std::string& action, const std::string& id)
@@ -99,7 +99,7 @@ void GoalSupervisor::cancel(const std::string& action, const std::string& id)
   backend_->stop();
   stopping_ = true;
   monitor_ = std::make_unique<GoalMonitor>(GoalMonitor::forStop(start, config_, clock_->now()));
-  judge(backend_->sample());
+  judge(backend_->sample(), true, clock_->now());
 }
 
 bool GoalSupervisor::isRunning(const std::string& action, const std::string& id) const
@@ -142,6 +142,7 @@ GoalSample GoalSupervisor::sample() const
   GoalSample tagged;
   // The serial before the sample: a sample tagged with the active goal's serial was taken after its start sample.
   tagged.goal_serial = goal_serial_.load();
+  tagged.taken_at = clock_->now();
   tagged.sample = backend_->sample();
   return tagged;
 }
@@ -151,17 +152,19 @@ void GoalSupervisor::supervise(const GoalSample& sample, bool publish_feedback)
   // A sample taken for an earlier goal, or before the cancel, knows nothing of what the active monitor started from.
   if (sample.goal_serial == goal_serial_.load())
   {
-    judge(sample.sample, publish_feedback);
+    // Judged at the time it was taken: a sample that waited in the queue on a busy machine, the link still up in it,
+    // must not make the wait look like a stalled axis (the silence after it is the link supervision's to report).
+    judge(sample.sample, publish_feedback, sample.taken_at);
   }
 }
 
-void GoalSupervisor::judge(const PtzSample& sample, bool publish_feedback)
+void GoalSupervisor::judge(const PtzSample& sample, bool publish_feedback, TimePoint taken_at)
 {
   if (!active_goal_)
   {
     return;
   }
-  const GoalVerdict verdict = monitor_->update(sample, clock_->now());
+  const GoalVerdict verdict = monitor_->update(sample, taken_at);
   if (verdict.phase == GoalPhase::ACTIVE)
   {
     if (!stopping_ && publish_feedback)

@@ -63,3 +63,21 @@ TEST_F(GoalSupervisorTest, TheActiveGoalsOwnSamplesStillEndIt)
   supervisor_.supervise(sample);
   EXPECT_EQ(goal->end, "ABORTED: link lost: the device stopped reporting its state");
 }
+
+// A sample waits in the main thread's queue on a busy machine. It is judged at the time it was taken: the device went
+// quiet just after it, and the wait must not read as an axis that made no progress while the link was still up.
+TEST_F(GoalSupervisorTest, ASampleThatWaitedInTheQueueIsJudgedAtTheTimeItWasTaken)
+{
+  const auto goal = submit(positionGoal(1.0, 0.0, 1.0));
+  backend_->at({ 0.4, 0.0, 1.0 }, true);
+  tick();  // the last report of the device's progress
+  clock_->advance(0.95);
+  const GoalSample queued = supervisor_.sample();  // nothing new since: still within the stall timeout (1 s)
+  clock_->advance(0.3);                            // the main thread runs it late
+  supervisor_.supervise(queued);
+  EXPECT_TRUE(goal->end.empty()) << goal->end;
+  backend_->state.link_up = false;  // the silence, as the backend reports it once it is over its state timeout
+  backend_->last_link_loss = "no state from a MAVLink gimbal for 1.00 s";
+  tick();
+  EXPECT_EQ(goal->end, "ABORTED: link lost: no state from a MAVLink gimbal for 1.00 s");
+}

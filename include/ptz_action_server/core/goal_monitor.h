@@ -65,7 +65,8 @@ public:
     goal_ = aim;
   }
 
-  /// Judges the goal at \p sample. Once it returns a final verdict, the goal is over.
+  /// Judges the goal at \p sample, taken at \p now (samples may arrive late and out of order). Once it returns a
+  /// final verdict, the goal is over.
   GoalVerdict update(const PtzSample& sample, TimePoint now);
 
   /// The timeout of a position goal in s (0 for goals without one).

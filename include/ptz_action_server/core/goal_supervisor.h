@@ -39,6 +39,7 @@ struct GoalCommand
 struct GoalSample
 {
   std::uint64_t goal_serial = 0;  ///< the supervisor's goal serial, read before the backend was sampled
+  TimePoint taken_at{};           ///< the supervisor's clock when the backend was sampled: the time it is judged at
   PtzSample sample;
 };
 
@@ -138,8 +139,8 @@ private:
   void activate(std::unique_ptr<GoalHandle> goal, const GoalCommand& command, const std::string& note);
   /// The final status text keeps the clamping note of the accepted goal.
   std::string withNote(const std::string& text) const;
-  /// supervise() for a sample known to belong to the active goal.
-  void judge(const PtzSample& sample, bool publish_feedback = true);
+  /// supervise() for a sample known to belong to the active goal, judged as at \p taken_at.
+  void judge(const PtzSample& sample, bool publish_feedback, TimePoint taken_at);
   void finish();
 
   const std::shared_ptr<PtzBackend> backend_;
