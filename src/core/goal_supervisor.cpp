@@ -142,8 +142,8 @@ GoalSample GoalSupervisor::sample() const
   GoalSample tagged;
   // The serial before the sample: a sample tagged with the active goal's serial was taken after its start sample.
   tagged.goal_serial = goal_serial_.load();
-  tagged.taken_at = clock_->now();
   tagged.sample = backend_->sample();
+  tagged.taken_at = clock_->now();  // after the backend: every report in the sample came before it
   return tagged;
 }
 
@@ -164,7 +164,18 @@ void GoalSupervisor::judge(const PtzSample& sample, bool publish_feedback, TimeP
   {
     return;
   }
-  const GoalVerdict verdict = monitor_->update(sample, taken_at);
+  GoalVerdict verdict = monitor_->update(sample, taken_at);
+  if (verdict.phase == GoalPhase::ABORTED && !verdict.link_lost && !verdict.device_fault)
+  {
+    // A stall or a timeout is confirmed against the device as it is now: a device that fell silent just after the
+    // sample (its last reports unchanged) has lost its link, which is what the user must be told.
+    const PtzSample current = backend_->sample();
+    if (!current.link_up || current.link_losses != sample.link_losses)
+    {
+      verdict.reason = "link lost";
+      verdict.link_lost = true;
+    }
+  }
   if (verdict.phase == GoalPhase::ACTIVE)
   {
     if (!stopping_ && publish_feedback)

@@ -81,3 +81,19 @@ TEST_F(GoalSupervisorTest, ASampleThatWaitedInTheQueueIsJudgedAtTheTimeItWasTake
   tick();
   EXPECT_EQ(goal->end, "ABORTED: link lost: no state from a MAVLink gimbal for 1.00 s");
 }
+
+// The device falls silent just after a sample whose unchanged position reads as a stall: the goal ends as a lost
+// link, since that is what happened (the stall is only the last reports before the silence).
+TEST_F(GoalSupervisorTest, AStallSeenAsTheLinkGoesDownEndsTheGoalAsALostLink)
+{
+  const auto goal = submit(positionGoal(1.0, 0.0, 1.0));
+  backend_->at({ 0.4, 0.0, 1.0 }, true);
+  tick();
+  clock_->advance(1.05);
+  const GoalSample unchanged = supervisor_.sample();  // link up, no progress for over the stall timeout
+  backend_->state.link_up = false;
+  backend_->last_link_loss = "no state from a MAVLink gimbal for 1.00 s";
+  supervisor_.supervise(unchanged);
+  EXPECT_EQ(goal->end, "ABORTED: link lost: no state from a MAVLink gimbal for 1.00 s");
+  EXPECT_EQ(backend_->commands.back(), "stop");
+}
