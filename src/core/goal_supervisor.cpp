@@ -167,13 +167,12 @@ void GoalSupervisor::judge(const PtzSample& sample, bool publish_feedback, TimeP
   GoalVerdict verdict = monitor_->update(sample, taken_at);
   if (verdict.phase == GoalPhase::ABORTED && !verdict.link_lost && !verdict.device_fault)
   {
-    // A stall or a timeout is confirmed against the device as it is now: a device that fell silent just after the
-    // sample (its last reports unchanged) has lost its link, which is what the user must be told.
-    const PtzSample current = backend_->sample();
-    if (!current.link_up || current.link_losses != sample.link_losses)
+    // A stall or a timeout is confirmed on the device as it is now: a device that fell silent just after the sample
+    // (its last reports unchanged) has lost its link, which is what the user must be told.
+    const GoalVerdict current = monitor_->update(backend_->sample(), clock_->now());
+    if (current.link_lost)
     {
-      verdict.reason = "link lost";
-      verdict.link_lost = true;
+      verdict = current;
     }
   }
   if (verdict.phase == GoalPhase::ACTIVE)
