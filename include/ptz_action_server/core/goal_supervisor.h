@@ -39,7 +39,7 @@ struct GoalCommand
 struct GoalSample
 {
   std::uint64_t goal_serial = 0;  ///< the supervisor's goal serial, read before the backend was sampled
-  TimePoint taken_at{};           ///< the supervisor's clock just after the backend was sampled: the time it is judged at
+  TimePoint taken_at{};           ///< the supervisor's clock just after the backend was sampled: when it is judged
   PtzSample sample;
 };
 
