@@ -176,6 +176,10 @@ GoalVerdict GoalMonitor::updateVelocity(const PtzSample& sample, TimePoint now, 
       continue;
     }
     any_commanded = true;
+    if (!capability.feedback)
+    {
+      continue;  // no position to see a limit or a stall in: the goal goes on until cancelled or replaced
+    }
     const bool upward = goal_[axis] > 0.0;
     const double limit = upward ? capability.range.max : capability.range.min;
     if (std::abs(sample.position[axis] - limit) <= config_.tolerance[axis])

@@ -37,10 +37,11 @@ void GoalSupervisor::submit(std::unique_ptr<GoalHandle> goal, const GoalConverte
     return;
   }
   command.values = validated.values;
-  activate(std::move(goal), command, command.track ? std::string() : validated.message);
+  activate(std::move(goal), command, validated.judged, command.track ? std::string() : validated.message);
 }
 
-void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalCommand& command, const std::string& note)
+void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalCommand& command,
+                              const std::array<bool, AXIS_COUNT>& judged, const std::string& note)
 {
   if (active_goal_)
   {
@@ -65,20 +66,26 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   {
     backend_->goTo(command.values);
   }
+  // The goal is judged on the axes it asks for only.
+  Capabilities judged_axes = limits_;
+  for (Axis axis : ALL_AXES)
+  {
+    judged_axes.axes[axis].present = judged[axis];
+  }
   if (command.track)
   {
-    monitor_ =
-        std::make_unique<GoalMonitor>(GoalMonitor::forTrack(command.values, start, limits_, config_, clock_->now()));
+    monitor_ = std::make_unique<GoalMonitor>(
+        GoalMonitor::forTrack(command.values, start, judged_axes, config_, clock_->now()));
   }
   else if (command.velocity)
   {
-    monitor_ =
-        std::make_unique<GoalMonitor>(GoalMonitor::forVelocity(command.values, start, limits_, config_, clock_->now()));
+    monitor_ = std::make_unique<GoalMonitor>(
+        GoalMonitor::forVelocity(command.values, start, judged_axes, config_, clock_->now()));
   }
   else
   {
-    monitor_ =
-        std::make_unique<GoalMonitor>(GoalMonitor::forPosition(command.values, start, limits_, config_, clock_->now()));
+    monitor_ = std::make_unique<GoalMonitor>(
+        GoalMonitor::forPosition(command.values, start, judged_axes, config_, clock_->now()));
   }
   active_goal_ = std::move(goal);
   note_ = note;

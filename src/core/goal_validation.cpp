@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ptz_action_server
 {
@@ -61,10 +62,18 @@ ValidatedGoal validate(const AxisValues& values, const Capabilities& limits, boo
   for (Axis axis : ALL_AXES)
   {
     const AxisCapability& capability = limits.axes[axis];
-    if (!capability.present)
+    const bool left_alone = velocity ? values[axis] == 0.0 && !(capability.present && capability.velocity) :
+                                       leavesAxisAlone(limits, axis, values[axis]);
+    if (left_alone)
     {
-      goal.values[axis] = velocity ? 0.0 : capability.range.min;
+      goal.values[axis] = velocity ? 0.0 : capability.present ? std::numeric_limits<double>::quiet_NaN() :
+                                                                capability.range.min;
       continue;
+    }
+    goal.message = findUnsupported(limits, axis, velocity ? AxisRequest::VELOCITY : AxisRequest::POSITION);
+    if (!goal.message.empty())
+    {
+      return goal;
     }
     const bool in_range = velocity ? checkRange(axis, -capability.max_speed, capability.max_speed, true, clamp, goal) :
                                      checkRange(axis, capability.range.min, capability.range.max, false, clamp, goal);
@@ -72,6 +81,7 @@ ValidatedGoal validate(const AxisValues& values, const Capabilities& limits, boo
     {
       return goal;
     }
+    goal.judged[axis] = true;
   }
   goal.accepted = true;
   return goal;
@@ -93,6 +103,57 @@ std::string findNonFinite(const AxisValues& values, const char* quantity)
     }
   }
   return {};
+}
+
+std::string findUnsupported(const Capabilities& capabilities, Axis axis, AxisRequest request)
+{
+  const AxisCapability& capability = capabilities.axes[axis];
+  const char* name = axisName(axis);
+  std::string lack;
+  if (!capability.present)
+  {
+    lack = formatText("the device has no %s", name);
+  }
+  else if (request == AxisRequest::VELOCITY && !capability.velocity)
+  {
+    lack = formatText("the device cannot move its %s at a speed", name);
+  }
+  else if (request != AxisRequest::VELOCITY && !capability.feedback)
+  {
+    lack = formatText("the device reports no %s position", name);
+  }
+  else if (request == AxisRequest::POSITION && !capability.absolute)
+  {
+    lack = formatText("the device cannot go to a %s position", name);
+  }
+  if (lack.empty())
+  {
+    return {};
+  }
+  const char* goals = request == AxisRequest::VELOCITY ? "velocity goals" :
+                      request == AxisRequest::OFFSET   ? "relative goals" :
+                                                         "goals";
+  std::string text = (capability.limitation.empty() ? lack : capability.limitation) +
+                     formatText(": %s %s are not supported", name, goals);
+  if (!capability.remedy.empty())
+  {
+    text += "; " + capability.remedy;
+  }
+  return text;
+}
+
+bool leavesAxisAlone(const Capabilities& capabilities, Axis axis, double value)
+{
+  const AxisCapability& capability = capabilities.axes[axis];
+  if (capability.present && capability.absolute && capability.feedback)
+  {
+    return false;
+  }
+  if (axis == ZOOM)
+  {
+    return value == 0.0 || (!capability.present && value == 1.0);
+  }
+  return !capability.present && value == 0.0;
 }
 
 ValidatedGoal validatePositionGoal(const AxisValues& target, const Capabilities& limits, bool clamp)

@@ -114,6 +114,12 @@ void AxisCameraEmulator::setRefuse(bool refuse)
   refuse_ = refuse;
 }
 
+void AxisCameraEmulator::setFaults(const SimFaults& faults)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  model_.setFaults(faults, clock_->now());
+}
+
 HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::string& target, const std::string& body)
 {
   const std::size_t question = target.find('?');

@@ -95,6 +95,15 @@ void DigiViewEmulator::setRefuse(bool refuse)
   refuse_ = refuse;
 }
 
+void DigiViewEmulator::setFaults(const SimFaults& faults)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (auto& view : models_)
+  {
+    view.second.setFaults(faults, SteadyClock::now());
+  }
+}
+
 void DigiViewEmulator::dropConnections()
 {
   boost::asio::post(context_, [this] {

@@ -95,6 +95,12 @@ void MavlinkGimbalEmulator::setRefuse(bool refuse)
   refuse_ = refuse;
 }
 
+void MavlinkGimbalEmulator::setFaults(const SimFaults& faults)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  model_.setFaults(faults, clock_->now());
+}
+
 void MavlinkGimbalEmulator::giveControlTo(std::uint8_t system_id, std::uint8_t component_id)
 {
   std::lock_guard<std::mutex> lock(mutex_);

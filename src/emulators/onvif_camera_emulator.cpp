@@ -97,6 +97,12 @@ void OnvifCameraEmulator::setRefuse(bool refuse)
   refuse_ = refuse;
 }
 
+void OnvifCameraEmulator::setFaults(const SimFaults& faults)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  model_.setFaults(faults, clock_->now());
+}
+
 std::uint64_t OnvifCameraEmulator::refusedTokens() const
 {
   std::lock_guard<std::mutex> lock(mutex_);

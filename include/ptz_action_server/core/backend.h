@@ -50,13 +50,15 @@ public:
   /// Short backend name, as used to load it ("sim", "pantilt_udp", ...).
   virtual std::string name() const = 0;
 
-  /// Limits and speeds of the device. Valid after start(); backends that read them from the device do so there.
+  /// Limits, speeds and what each axis can do (AxisCapability). Valid after start(); backends that ask the device
+  /// do so there, and say in AxisCapability::limitation what it lacks.
   virtual Capabilities capabilities() const = 0;
 
   /// Opens the device and starts the I/O thread. Throws BackendError with a reason when it cannot.
   virtual void start() = 0;
 
-  /// Moves every present axis to \p position (pan, tilt in rad; zoom as X-factor).
+  /// Moves every present axis to \p position (pan, tilt in rad; zoom as X-factor). An axis given as NaN is left
+  /// where it is: the goal leaves it alone on a device that cannot position or report it (see leavesAxisAlone()).
   virtual void goTo(const AxisValues& position) = 0;
 
   /// Moves every present axis at \p velocity (rad/s, X/s) until stop(), another command or a limit.

@@ -5,6 +5,7 @@
  */
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -136,7 +137,9 @@ public:
   }
 
 private:
-  void activate(std::unique_ptr<GoalHandle> goal, const GoalCommand& command, const std::string& note);
+  /// Makes \p goal the active one and commands the device; the goal is judged on the \p judged axes only.
+  void activate(std::unique_ptr<GoalHandle> goal, const GoalCommand& command,
+                const std::array<bool, AXIS_COUNT>& judged, const std::string& note);
   /// The final status text keeps the clamping note of the accepted goal.
   std::string withNote(const std::string& text) const;
   /// supervise() for a sample known to belong to the active goal, judged as at \p taken_at.

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "ptz_action_server/core/types.h"
@@ -17,7 +18,12 @@ constexpr double LIMIT_EPSILON = 1e-5;
 struct ValidatedGoal
 {
   bool accepted = false;
-  AxisValues values{};  ///< the values to command (clamped where allowed); absent axes hold a neutral value
+  /// The values to command (clamped where allowed). An absent axis holds its range minimum; an axis the goal leaves
+  /// alone on a device that cannot position it holds NaN ("leave it where it is", see PtzBackend::goTo()).
+  AxisValues values{};
+  /// The axes the goal asks for: only these are judged (a goal is never reported reached on an axis it did not ask
+  /// for, nor on one the device cannot move).
+  std::array<bool, AXIS_COUNT> judged{};
   bool clamped = false;
   std::string message;  ///< the rejection reason, or the clamping note when clamped; empty otherwise
 };
@@ -25,15 +31,41 @@ struct ValidatedGoal
 /// Returns "" if every value is finite, else the reason naming the first axis that is NaN or Inf.
 std::string findNonFinite(const AxisValues& values, const char* quantity);
 
+/// What a goal asks of an axis, for findUnsupported()'s words.
+enum class AxisRequest
+{
+  POSITION,  ///< go to a position (absolute, relative, preset, frame goals)
+  OFFSET,    ///< move by an offset from where it is (the node's position_rel)
+  VELOCITY,  ///< move at a speed
+};
+
+/**
+ * \brief Why \p axis cannot do \p request on a device with \p capabilities, or "" when it can.
+ *
+ * The text names what the device lacks and what to set, e.g. "this camera reports no zoom position: zoom goals are
+ * not supported; set axis/zoom_table". A position needs `absolute` and `feedback` (a goal the node cannot see
+ * reached is never reported reached), an offset `feedback`, a velocity `velocity`; every request needs `present`.
+ */
+std::string findUnsupported(const Capabilities& capabilities, Axis axis, AxisRequest request);
+
+/**
+ * \brief True when a position goal's \p value leaves \p axis alone on a device that cannot position it: zoom 0
+ * (an unset float32 zoom) on any such device, and zoom 1 or pan, tilt 0 on a device without the axis (as clients of
+ * pan-tilt units send). A device that can position the axis takes every value as a target.
+ */
+bool leavesAxisAlone(const Capabilities& capabilities, Axis axis, double value);
+
 /**
  * \brief Validates an absolute position goal (pan, tilt in rad, zoom as X) against \p limits.
  *
- * NaN or Inf anywhere rejects the goal. A value outside its range rejects it, or, with \p clamp, is clamped and
- * noted in the message. An absent axis (no zoom) is ignored and commanded at its range minimum.
+ * NaN or Inf anywhere rejects the goal, as does a value on an axis the device cannot position or report (see
+ * findUnsupported(); leavesAxisAlone() values are accepted and not judged). A value outside its range rejects it,
+ * or, with \p clamp, is clamped and noted in the message.
  */
 ValidatedGoal validatePositionGoal(const AxisValues& target, const Capabilities& limits, bool clamp);
 
-/// Validates a velocity goal (rad/s, X/s) against each axis' max speed, with the same rules.
+/// Validates a velocity goal (rad/s, X/s) against each axis' max speed, with the same rules: a non-zero velocity on
+/// an axis that cannot move at a speed is refused, zero is accepted everywhere.
 ValidatedGoal validateVelocityGoal(const AxisValues& velocity, const Capabilities& limits, bool clamp);
 
 }  // namespace ptz_action_server

@@ -103,19 +103,37 @@ struct AxisRange
   }
 };
 
-/// What a device can do on one axis.
+/**
+ * \brief What a device can do on one axis, as its backend found out (from its settings, or by asking the device).
+ *
+ * The node refuses a goal that needs what an axis lacks, naming it (see findUnsupported()), and never judges a goal
+ * reached on an axis the device cannot move or report.
+ */
 struct AxisCapability
 {
-  bool present = true;        ///< false: the device has no such axis (e.g. no zoom); goals ignore it
+  bool present = true;        ///< false: the device has no such axis (no zoom): goals must leave it alone
+  bool absolute = true;       ///< goes to a commanded position (false: it only moves at a speed)
+  bool velocity = true;       ///< moves at a commanded speed
+  bool feedback = true;       ///< reports where it is (false: the sample's position of this axis means nothing)
   AxisRange range;            ///< position limits
   double max_speed = 1.0;     ///< largest speed the device accepts, per second
   double acceleration = 0.0;  ///< per second squared; 0 means "unknown, treat as instant"
+  /// Why the axis is missing or limited, in the device's terms ("this camera reports no zoom position"); "" for the
+  /// plain words ("the device has no zoom"). Goes into rejection texts and diagnostics.
+  std::string limitation;
+  /// What the user can do about it ("set axis/zoom_table"), or "".
+  std::string remedy;
 };
 
 /// What a backend's device can do; the node intersects the ranges with the URDF joint limits.
 struct Capabilities
 {
   std::array<AxisCapability, AXIS_COUNT> axes;
+  /// Informative, for diagnostics and the capabilities topic (the node's own relative goals, presets and home work
+  /// from the reported pose on every device that goes to positions):
+  bool relative_moves = false;  ///< the device moves by an offset of its own (VAPIX rpan, ONVIF RelativeMove)
+  bool device_presets = false;  ///< the device stores presets of its own
+  bool device_home = false;     ///< the device has a home position of its own
 };
 
 /// \brief One snapshot of the device, as a backend last knew it.

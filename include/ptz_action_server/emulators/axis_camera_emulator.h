@@ -57,6 +57,8 @@ public:
   PtzSample sample() const;
   /// Answers every move with `Error:` (as a camera whose PTZ control another user holds).
   void setRefuse(bool refuse);
+  /// Fault hooks of the motion model: a stalled axis accepts every command and silently stays where it is.
+  void setFaults(const SimFaults& faults);
 
   /// The camera's words when it refuses a move under setRefuse().
   static constexpr const char* REFUSAL = "PTZ control is locked by another user";

@@ -81,6 +81,8 @@ public:
   void setSilent(bool silent);
   /// Refuse: every SET is answered FORBIDDEN.
   void setRefuse(bool refuse);
+  /// Fault hooks of every view's motion model: a stalled axis accepts every command and silently stays where it is.
+  void setFaults(const SimFaults& faults);
   /// Closes every TCP connection (the client sees the connection drop).
   void dropConnections();
 

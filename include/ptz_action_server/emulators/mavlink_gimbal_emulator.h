@@ -87,6 +87,8 @@ public:
   void setSilent(bool silent);
   /// Refuse: DO_GIMBAL_MANAGER_CONFIGURE and DO_GIMBAL_MANAGER_PITCHYAW are DENIED.
   void setRefuse(bool refuse);
+  /// Fault hooks of the motion model: a stalled axis accepts every command and silently stays where it is.
+  void setFaults(const SimFaults& faults);
   /// Another controller (\p system_id / \p component_id) takes primary control and keeps it until released with
   /// releaseControl().
   void giveControlTo(std::uint8_t system_id, std::uint8_t component_id);

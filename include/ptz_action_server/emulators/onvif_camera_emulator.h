@@ -65,6 +65,8 @@ public:
   PtzSample sample() const;
   /// Refuses every move with a fault carrying REFUSAL.
   void setRefuse(bool refuse);
+  /// Fault hooks of the motion model: a stalled axis accepts every command and silently stays where it is.
+  void setFaults(const SimFaults& faults);
   static constexpr const char* REFUSAL = "PTZ is locked by another user";
 
   /// Tokens the camera refused (a wrong password, a stale Created).

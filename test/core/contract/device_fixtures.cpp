@@ -29,6 +29,13 @@ std::string uniqueLink(const char* name)
   return ::testing::TempDir() + "ptz_" + name + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
 }
 
+SimFaults ignoring(Axis axis, bool ignore)
+{
+  SimFaults faults;
+  faults.stalled[axis] = ignore;
+  return faults;
+}
+
 std::vector<DeviceCommand> withoutQueries(const std::vector<DeviceCommand>& commands)
 {
   std::vector<DeviceCommand> kept;

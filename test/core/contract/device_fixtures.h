@@ -70,6 +70,15 @@ public:
   /// A word of lastLinkLoss() when breakLink() ended the goal.
   virtual std::string linkLossWords() const = 0;
 
+  /// Makes the emulated device accept every command and silently ignore \p axis from now on (it stays where it is),
+  /// or obey it again; false when this emulator cannot (the contract case then fails: every emulator must).
+  virtual bool ignoreAxis(Axis axis, bool ignore)
+  {
+    (void)axis;
+    (void)ignore;
+    return false;
+  }
+
   /// Makes the device refuse a goal: fills \p goal with one it refuses and returns the words its refusal carries,
   /// or "" for protocols without refusals (Pelco-D, PanTilt).
   virtual std::string prepareRefusal(AxisValues& goal)

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "device_fixtures.h"
+#include "ptz_action_server/core/sim_device_model.h"
 
 namespace ptz_action_server
 {
@@ -18,6 +19,9 @@ std::string hex(const std::vector<std::uint8_t>& bytes);
 
 /// A path for an emulator's pseudo-terminal link, unique in this process.
 std::string uniqueLink(const char* name);
+
+/// The emulators' fault set that makes \p axis ignore every command (or none, when \p ignore is false).
+SimFaults ignoring(Axis axis, bool ignore);
 
 /// \p commands without the state polls.
 std::vector<DeviceCommand> withoutQueries(const std::vector<DeviceCommand>& commands);

@@ -108,6 +108,11 @@ public:
   {
     return emulator_->sample();
   }
+  bool ignoreAxis(Axis axis, bool ignore) override
+  {
+    emulator_->setFaults(ignoring(axis, ignore));
+    return true;
+  }
   std::string prepareRefusal(AxisValues& goal) override
   {
     emulator_->setRefuse(true);
@@ -209,6 +214,11 @@ public:
   PtzSample deviceState() const override
   {
     return emulator_->sample();
+  }
+  bool ignoreAxis(Axis axis, bool ignore) override
+  {
+    emulator_->setFaults(ignoring(axis, ignore));
+    return true;
   }
   std::string prepareRefusal(AxisValues& goal) override
   {

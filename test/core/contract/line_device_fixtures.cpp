@@ -54,6 +54,11 @@ protected:
   {
     emulator_->port().setSilent(silent);
   }
+  bool ignoreAxis(Axis axis, bool ignore) override
+  {
+    emulator_->setFaults(ignoring(axis, ignore));
+    return true;
+  }
   void breakLink() override
   {
     emulator_->unplug();

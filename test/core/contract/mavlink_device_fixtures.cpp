@@ -94,6 +94,11 @@ public:
   {
     emulator_->setSilent(silent);
   }
+  bool ignoreAxis(Axis axis, bool ignore) override
+  {
+    emulator_->setFaults(ignoring(axis, ignore));
+    return true;
+  }
   void breakLink() override
   {
     if (emulator_config_.transport == LinkKind::SERIAL)

@@ -101,6 +101,11 @@ public:
   {
     emulator_->setSilent(silent);
   }
+  bool ignoreAxis(Axis axis, bool ignore) override
+  {
+    emulator_->panTilt().setFaults(ignoring(axis, ignore));
+    return true;
+  }
   void breakLink() override
   {
     if (emulator_config_.serial)
@@ -236,6 +241,11 @@ public:
   void setSilent(bool silent) override
   {
     emulator_->setSilent(silent);
+  }
+  bool ignoreAxis(Axis axis, bool ignore) override
+  {
+    emulator_->setFaults(ignoring(axis, ignore));
+    return true;
   }
   void breakLink() override
   {

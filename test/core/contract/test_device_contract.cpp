@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "../wait_until.h"
+#include "../goal_supervisor_fixture.h"
 #include "device_fixtures.h"
 #include "ptz_action_server/core/goal_monitor.h"
 
@@ -253,6 +254,64 @@ TEST_P(DeviceContract, ALinkThatBreaksAndReopensAtOnceEndsTheGoalAndTheRecoveryN
   backend_->goTo(target);
   ASSERT_TRUE(waitForRest(target)) << "sent " << describe(device_->commands());
   EXPECT_EQ(device_->holds(device_->commands(), target), 1u) << describe(device_->commands());
+}
+
+/// A goal the node's supervisor runs on the backend (validation, the axes it judges, its monitor), recorded.
+std::string runGoalToItsEnd(PtzBackend& backend, const AxisValues& target, double stall_timeout)
+{
+  GoalMonitorConfig config;
+  config.stall_timeout = stall_timeout;
+  GoalSupervisor supervisor(std::shared_ptr<PtzBackend>(&backend, [](PtzBackend*) {}), backend.capabilities(), config,
+                            false);
+  auto log = std::make_shared<goal_supervisor_test::GoalLog>();
+  supervisor.submit(std::make_unique<goal_supervisor_test::RecordingGoal>("position_abs", "ignored axis", log),
+                    goal_supervisor_test::positionGoal(target[PAN], target[TILT], target[ZOOM]));
+  waitUntil(
+      [&] {
+        supervisor.supervise(supervisor.sample());
+        return !log->end.empty();
+      },
+      WAIT);
+  supervisor.shutdown("the test is over");
+  return log->end;
+}
+
+TEST_P(DeviceContract, ADeviceThatIgnoresAnAxisNeverGetsASucceededForIt)
+{
+  const Capabilities capabilities = backend_->capabilities();
+  // An axis the device lacks (or cannot report): a goal that asks it to move is refused, naming it.
+  for (Axis axis : ALL_AXES)
+  {
+    const AxisCapability& capability = capabilities.axes[axis];
+    if (!capability.present || !capability.feedback || !capability.absolute)
+    {
+      AxisValues target = device_->goal(0.2, 0.1);
+      target[axis] = axis == ZOOM ? 4.0 : 0.3;
+      const std::string end = runGoalToItsEnd(*backend_, target, 1.0);
+      EXPECT_EQ(end.rfind("REJECTED: ", 0), 0u) << axisName(axis) << ": " << end;
+      EXPECT_NE(end.find(std::string(axisName(axis)) + " goals are not supported"), std::string::npos) << end;
+    }
+  }
+  // An axis the device has but silently ignores: never reported reached.
+  std::vector<Axis> axes = { PAN };
+  if (capabilities.axes[ZOOM].present && capabilities.axes[ZOOM].feedback && capabilities.axes[ZOOM].absolute)
+  {
+    axes.push_back(ZOOM);
+  }
+  for (Axis axis : axes)
+  {
+    ASSERT_TRUE(device_->ignoreAxis(axis, true)) << "the emulator cannot ignore the " << axisName(axis);
+    const PtzSample before = backend_->sample();
+    AxisValues target = device_->goal(before.position[PAN] + 0.4, before.position[TILT]);
+    if (axis == ZOOM)
+    {
+      target[ZOOM] = before.position[ZOOM] < 2.0 ? 3.0 : 1.0;
+    }
+    const std::string end = runGoalToItsEnd(*backend_, target, 1.0);
+    EXPECT_EQ(end.rfind("ABORTED: stalled: " + std::string(axisName(axis)), 0), 0u) << axisName(axis) << ": " << end;
+    ASSERT_TRUE(device_->ignoreAxis(axis, false));
+    EXPECT_TRUE(waitUntil([&] { return !backend_->sample().moving; }, WAIT));
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Devices, DeviceContract, ::testing::ValuesIn(allDeviceFixtures()),

@@ -84,6 +84,11 @@ public:
   {
     emulator_->port().setSilent(silent);
   }
+  bool ignoreAxis(Axis axis, bool ignore) override
+  {
+    emulator_->setFaults(ignoring(axis, ignore));
+    return true;
+  }
   void breakLink() override
   {
     if (emulator_config_.port.kind == PortKind::UDP)
