@@ -51,9 +51,8 @@ void ClosedLoopBackend::start()
   std::lock_guard<std::mutex> lock(mutex_);
   capabilities_ = device;
   const auto steerable = [](const AxisCapability& axis) { return axis.present && axis.velocity && axis.feedback; };
-  const bool needed = std::any_of(device.axes.begin(), device.axes.end(), [&](const AxisCapability& axis) {
-    return steerable(axis) && !axis.absolute;
-  });
+  const bool needed = std::any_of(device.axes.begin(), device.axes.end(),
+                                  [&](const AxisCapability& axis) { return steerable(axis) && !axis.absolute; });
   if (!needed || !reports_samples_)
   {
     return;  // every axis goes to positions itself, or the state cannot be followed as it comes

@@ -54,9 +54,10 @@ GoalMonitor GoalMonitor::forVelocity(const AxisValues& velocity, const PtzSample
   return GoalMonitor(Kind::VELOCITY, velocity, start, capabilities, config, now);
 }
 
-GoalMonitor GoalMonitor::forStop(const PtzSample& start, const GoalMonitorConfig& config, TimePoint now)
+GoalMonitor GoalMonitor::forStop(const PtzSample& start, const GoalMonitorConfig& config, TimePoint now,
+                                 const Capabilities& reported)
 {
-  return GoalMonitor(Kind::STOP, AxisValues{}, start, Capabilities{}, config, now);
+  return GoalMonitor(Kind::STOP, AxisValues{}, start, reported, config, now);
 }
 
 GoalMonitor GoalMonitor::forTrack(const AxisValues& aim, const PtzSample& start, const Capabilities& capabilities,
@@ -254,8 +255,17 @@ std::size_t GoalMonitor::findStalledAxis(const PtzSample& sample, TimePoint now,
 
 std::string GoalMonitor::describePosition(const PtzSample& sample) const
 {
-  return formatText("pan %.4f rad, tilt %.4f rad, zoom %.2f X", sample.position[PAN], sample.position[TILT],
-                    sample.position[ZOOM]);
+  // Only the axes the goal is judged on and the device reports: a zoom it lacks or cannot see has no position to tell.
+  std::string text;
+  for (Axis axis : ALL_AXES)
+  {
+    if (capabilities_.axes[axis].present && capabilities_.axes[axis].feedback)
+    {
+      text += (text.empty() ? "" : ", ") +
+              formatText(axis == ZOOM ? "%s %.2f X" : "%s %.4f rad", axisName(axis), sample.position[axis]);
+    }
+  }
+  return text.empty() ? std::string("a position the device does not report") : text;
 }
 
 }  // namespace ptz_action_server

@@ -105,7 +105,7 @@ void GoalSupervisor::cancel(const std::string& action, const std::string& id)
   ++goal_serial_;
   backend_->stop();
   stopping_ = true;
-  monitor_ = std::make_unique<GoalMonitor>(GoalMonitor::forStop(start, config_, clock_->now()));
+  monitor_ = std::make_unique<GoalMonitor>(GoalMonitor::forStop(start, config_, clock_->now(), limits_));
   judge(backend_->sample(), true, clock_->now());
 }
 

@@ -66,13 +66,16 @@ ValidatedGoal validate(const AxisValues& values, const Capabilities& limits, boo
                                        leavesAxisAlone(limits, axis, values[axis]);
     if (left_alone)
     {
-      goal.values[axis] = velocity ? 0.0 : capability.present ? std::numeric_limits<double>::quiet_NaN() :
-                                                                capability.range.min;
+      goal.values[axis] = velocity           ? 0.0 :
+                          capability.present ? std::numeric_limits<double>::quiet_NaN() :
+                                               capability.range.min;
       continue;
     }
-    goal.message = findUnsupported(limits, axis, velocity ? AxisRequest::VELOCITY : AxisRequest::POSITION);
-    if (!goal.message.empty())
+    const std::string unsupported =
+        findUnsupported(limits, axis, velocity ? AxisRequest::VELOCITY : AxisRequest::POSITION);
+    if (!unsupported.empty())
     {
+      goal.message = unsupported;
       return goal;
     }
     const bool in_range = velocity ? checkRange(axis, -capability.max_speed, capability.max_speed, true, clamp, goal) :

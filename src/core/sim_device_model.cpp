@@ -44,7 +44,11 @@ Capabilities SimDeviceConfig::capabilities() const
   {
     const SimAxisConfig& source = axes[axis];
     AxisCapability& target = capabilities.axes[axis];
-    target.present = source.present;
+    if (!source.present)
+    {
+      target = absentAxis();
+      continue;
+    }
     target.range = source.range;
     target.max_speed = source.motion.max_speed;
     target.acceleration = source.motion.acceleration;

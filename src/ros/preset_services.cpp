@@ -61,18 +61,21 @@ PresetConfig PresetConfig::load(const ParamReader& params)
 
 PresetServices::PresetServices(const ros::NodeHandle& node_handle, const PresetConfig& config,
                                const Capabilities& limits, std::shared_ptr<PtzBackend> backend)
-  : node_handle_(node_handle), backend_(std::move(backend)), has_zoom_(limits.axes[ZOOM].present)
+  : node_handle_(node_handle)
+  , backend_(std::move(backend))
+  , has_zoom_(limits.axes[ZOOM].present && limits.axes[ZOOM].absolute && limits.axes[ZOOM].feedback)
+  , unpositioned_zoom_(limits.axes[ZOOM].present ? 0.0 : 1.0)
 {
   node_handle_.setCallbackQueue(&queue_);
   AxisValues home = config.home;
   if (!config.home_zoom_set)
   {
-    home[ZOOM] = has_zoom_ ? limits.axes[ZOOM].range.min : 1.0;
+    home[ZOOM] = has_zoom_ ? limits.axes[ZOOM].range.min : unpositioned_zoom_;
   }
   for (Axis axis : ALL_AXES)
   {
     const AxisCapability& capability = limits.axes[axis];
-    if (capability.present && !capability.range.contains(home[axis]))
+    if (capability.present && capability.absolute && capability.feedback && !capability.range.contains(home[axis]))
     {
       ROS_WARN("home %s %.4f is outside the limits [%.4f, %.4f]: goals to home are rejected (or clamped with "
                "clamp_goals)",
@@ -114,7 +117,7 @@ bool PresetServices::save(SavePreset::Request& request, SavePreset::Response& re
   AxisValues pose = sample.position;
   if (!has_zoom_)
   {
-    pose[ZOOM] = 1.0;
+    pose[ZOOM] = unpositioned_zoom_;  // a zoom the node cannot position: the preset leaves it alone
   }
   if (!sample.link_up)
   {

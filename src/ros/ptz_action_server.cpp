@@ -7,8 +7,10 @@
 #include <tf2/exceptions.h>
 #include <tf2_eigen/tf2_eigen.h>
 
+#include "ptz_action_server/core/capabilities.h"
 #include "ptz_action_server/core/goal_validation.h"
 #include "ptz_action_server/core/text.h"
+#include "ptz_action_server/ros/capabilities_message.h"
 #include "ptz_action_server/ros/function_callback.h"
 #include "ptz_action_server/ros/goal_handle_adapter.h"
 #include "ptz_action_server/ros/state_publisher.h"
@@ -120,12 +122,14 @@ void PtzActionServer::start()
     ROS_WARN("%s: %s", backend_->name().c_str(), warning.c_str());
   }
   limits_ = intersection.limits;
+  capabilities_publisher_ = node_handle_.advertise<PtzCapabilities>("capabilities", 1, true);
+  capabilities_publisher_.publish(toMessage(backend_->name(), limits_));
   supervisor_ = std::make_unique<GoalSupervisor>(backend_, limits_, config_.monitor, config_.clamp_goals);
   supervising_ = true;
 
   // The 10 Hz state tick on its own thread; its samples reach the supervisor through the main queue.
   state_publisher_ = std::make_unique<StatePublisher>(
-      node_handle_, kinematics_, backend_, *supervisor_, config_.publish_tf, [this](const GoalSample& sample) {
+      node_handle_, kinematics_, backend_, *supervisor_, limits_, config_.publish_tf, [this](const GoalSample& sample) {
         node_handle_.getCallbackQueue()->addCallback(
             boost::make_shared<FunctionCallback>([this, sample] { supervisor_->supervise(sample); }),
             reinterpret_cast<uint64_t>(this));
@@ -155,12 +159,9 @@ void PtzActionServer::start()
   frame_server_->start();
   track_frame_server_->start();
   preset_server_->start();
-  ROS_INFO("ptz_action_server ready with backend '%s': pan [%.3f, %.3f] rad, tilt [%.3f, %.3f] rad, zoom %s",
-           backend_->name().c_str(), limits_.axes[PAN].range.min, limits_.axes[PAN].range.max,
-           limits_.axes[TILT].range.min, limits_.axes[TILT].range.max,
-           limits_.axes[ZOOM].present ?
-               formatText("[%.1f, %.1f] X", limits_.axes[ZOOM].range.min, limits_.axes[ZOOM].range.max).c_str() :
-               "none");
+  ROS_INFO("ptz_action_server ready with backend '%s': pan %s; tilt %s; zoom %s; device extras: %s",
+           backend_->name().c_str(), describeAxis(limits_, PAN).c_str(), describeAxis(limits_, TILT).c_str(),
+           describeAxis(limits_, ZOOM).c_str(), describeExtras(limits_).c_str());
 }
 
 void PtzActionServer::postStatus(StatusHold::Change change)
@@ -295,13 +296,27 @@ std::string PtzActionServer::toCommand(const PtzGoal& goal, ActionKind kind, con
   const AxisValues values{ { goal.pan, goal.tilt, goal.zoom } };
   switch (kind)
   {
-    case ActionKind::POSITION_REL:
+    case ActionKind::POSITION_REL: {
+      std::string reason = findNonFinite(values, "offset");
       command.values = values;
       for (Axis axis : ALL_AXES)
       {
-        command.values[axis] += limits_.axes[axis].present ? sample.position[axis] : 0.0;
+        const AxisCapability& capability = limits_.axes[axis];
+        if (capability.present && capability.feedback)
+        {
+          command.values[axis] += sample.position[axis];
+        }
+        else if (values[axis] != 0.0 && reason.empty())
+        {
+          reason = findUnsupported(limits_, axis, AxisRequest::OFFSET);
+        }
+        else
+        {
+          command.values[axis] = axis == ZOOM ? 0.0 : values[axis];  // zoom 0: left alone (leavesAxisAlone())
+        }
       }
-      return findNonFinite(values, "offset");
+      return reason;
+    }
     case ActionKind::VELOCITY:
       command.velocity = true;
       command.values = values;

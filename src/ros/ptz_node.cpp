@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "ptz_action_server/core/closed_loop_backend.h"
+
 namespace ptz_action_server
 {
 PtzNode::~PtzNode()
@@ -22,8 +24,11 @@ void PtzNode::start(const ros::NodeHandle& node_handle, const ros::NodeHandle& p
                       " is not set: load the URDF first (the launch file does)");
   }
   const PtzKinematics kinematics = PtzKinematics::fromUrdf(urdf, config.names);
-  // The mount maps device angles to the contract's, under everything else (goals, limits, state, tf).
-  backend_ = applyMount(loader_.load(config.backend, params, kinematics, config.mount), config.mount);
+  // Position goals on a device that only moves at a speed are steered on its state, in the device's own angles; the
+  // mount maps those to the contract's, under everything else (goals, limits, state, tf).
+  backend_ = applyMount(
+      withClosedLoop(loader_.load(config.backend, params, kinematics, config.mount), config.monitor.tolerance),
+      config.mount);
   if (wrap)
   {
     backend_ = wrap(backend_);

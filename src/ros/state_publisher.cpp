@@ -1,8 +1,11 @@
 #include "ptz_action_server/ros/state_publisher.h"
 
 #include <algorithm>
+#include <limits>
 
 #include <tf2_eigen/tf2_eigen.h>
+
+#include "ptz_action_server/core/capabilities.h"
 
 namespace ptz_action_server
 {
@@ -19,12 +22,13 @@ static_assert(static_cast<int>(GoalMode::IDLE) == PtzState::MODE_IDLE &&
 }  // namespace
 
 StatePublisher::StatePublisher(const ros::NodeHandle& node_handle, const PtzKinematics& kinematics,
-                               std::shared_ptr<PtzBackend> backend, const GoalSupervisor& supervisor, bool publish_tf,
-                               SampleHandler hand_over)
+                               std::shared_ptr<PtzBackend> backend, const GoalSupervisor& supervisor,
+                               const Capabilities& limits, bool publish_tf, SampleHandler hand_over)
   : node_handle_(node_handle)
   , kinematics_(kinematics)
   , backend_(std::move(backend))
   , supervisor_(supervisor)
+  , limits_(limits)
   , publish_tf_(publish_tf)
   , hand_over_(std::move(hand_over))
 {
@@ -44,19 +48,31 @@ void StatePublisher::start()
 {
   state_publisher_ = node_handle_.advertise<PtzState>("ptz_state", 10);
   joint_state_publisher_ = node_handle_.advertise<sensor_msgs::JointState>("joint_states", 10);
-  joint_state_message_.name = { kinematics_.panJoint().name, kinematics_.tiltJoint().name };
-  joint_state_message_.position.assign(2, 0.0);
-  joint_state_message_.velocity.assign(2, 0.0);
+  for (Axis axis : { PAN, TILT })
+  {
+    if (limits_.axes[axis].feedback)
+    {
+      reported_joints_.push_back(axis);
+      joint_state_message_.name.push_back(joint(axis).name);
+    }
+    else
+    {
+      ROS_WARN("%s: the device reports no %s position: ptz_state carries NaN for it, and joint_states and tf leave "
+               "out %s",
+               backend_->name().c_str(), axisName(axis), joint(axis).name.c_str());
+    }
+  }
+  joint_state_message_.position.assign(reported_joints_.size(), 0.0);
+  joint_state_message_.velocity.assign(reported_joints_.size(), 0.0);
   if (publish_tf_)
   {
     transform_broadcaster_ = std::make_unique<tf2_ros::TransformBroadcaster>();
     static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
-    joint_transforms_.resize(2);
-    const JointModel* joints[] = { &kinematics_.panJoint(), &kinematics_.tiltJoint() };
-    for (std::size_t index = 0; index < 2; ++index)
+    joint_transforms_.resize(reported_joints_.size());
+    for (std::size_t index = 0; index < reported_joints_.size(); ++index)
     {
-      joint_transforms_[index].header.frame_id = joints[index]->parent_link;
-      joint_transforms_[index].child_frame_id = joints[index]->child_link;
+      joint_transforms_[index].header.frame_id = joint(reported_joints_[index]).parent_link;
+      joint_transforms_[index].child_frame_id = joint(reported_joints_[index]).child_link;
     }
     publishStaticTransforms();
   }
@@ -88,34 +104,35 @@ void StatePublisher::onTick()
   const GoalSample tagged = supervisor_.sample();
   const PtzSample& sample = tagged.sample;
   state_message_.mode = static_cast<int8_t>(supervisor_.mode());
-  state_message_.pan = static_cast<float>(sample.position[PAN]);
-  state_message_.tilt = static_cast<float>(sample.position[TILT]);
-  state_message_.zoom = static_cast<float>(sample.position[ZOOM]);
+  state_message_.pan = reported(PAN, sample);
+  state_message_.tilt = reported(TILT, sample);
+  state_message_.zoom = reported(ZOOM, sample);
   state_publisher_.publish(state_message_);
   state_rate_->tick();
 
   const ros::Time stamp = toRosTime(sample.stamp);
   joint_state_message_.header.stamp = stamp;
-  joint_state_message_.position[0] = sample.position[PAN];
-  joint_state_message_.position[1] = sample.position[TILT];
-  joint_state_message_.velocity[0] = sample.velocity[PAN];
-  joint_state_message_.velocity[1] = sample.velocity[TILT];
+  for (std::size_t index = 0; index < reported_joints_.size(); ++index)
+  {
+    joint_state_message_.position[index] = sample.position[reported_joints_[index]];
+    joint_state_message_.velocity[index] = sample.velocity[reported_joints_[index]];
+  }
   joint_state_publisher_.publish(joint_state_message_);
-  if (field_of_view_)
+  if (field_of_view_ && limits_.axes[ZOOM].feedback == limits_.axes[ZOOM].present)
   {
     field_of_view_->publish(stamp, sample.position[ZOOM]);
   }
 
   // A state the device has not renewed (its link is down) is not sent again: tf takes no repeated stamps.
-  if (transform_broadcaster_ && sample.stamp > last_transform_stamp_)
+  if (transform_broadcaster_ && !joint_transforms_.empty() && sample.stamp > last_transform_stamp_)
   {
     last_transform_stamp_ = sample.stamp;
-    const double values[] = { sample.position[PAN], sample.position[TILT] };
-    const JointModel* joints[] = { &kinematics_.panJoint(), &kinematics_.tiltJoint() };
-    for (std::size_t index = 0; index < 2; ++index)
+    for (std::size_t index = 0; index < reported_joints_.size(); ++index)
     {
+      const Axis axis = reported_joints_[index];
       joint_transforms_[index].header.stamp = stamp;
-      joint_transforms_[index].transform = tf2::eigenToTransform(joints[index]->transform(values[index])).transform;
+      joint_transforms_[index].transform =
+          tf2::eigenToTransform(joint(axis).transform(sample.position[axis])).transform;
     }
     transform_broadcaster_->sendTransform(joint_transforms_);
   }
@@ -125,6 +142,19 @@ void StatePublisher::onTick()
   {
     hand_over_(tagged);
   }
+}
+
+const JointModel& StatePublisher::joint(Axis axis) const
+{
+  return axis == PAN ? kinematics_.panJoint() : kinematics_.tiltJoint();
+}
+
+float StatePublisher::reported(Axis axis, const PtzSample& sample) const
+{
+  // A zoom the device does not have is 1 (the contract); a position it does not report is unknown.
+  const AxisCapability& capability = limits_.axes[axis];
+  return capability.present && !capability.feedback ? std::numeric_limits<float>::quiet_NaN() :
+                                                      static_cast<float>(sample.position[axis]);
 }
 
 void StatePublisher::publishStaticTransforms()
@@ -161,6 +191,11 @@ void StatePublisher::diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper
   status.add("state age (s)", secondsBetween(sample.stamp, clock_.now()));
   status.add("mode", static_cast<int>(supervisor_.mode()));
   status.add("device faults", sample.fault_count);
+  for (Axis axis : ALL_AXES)
+  {
+    status.add(std::string("can: ") + axisName(axis), describeAxis(limits_, axis));
+  }
+  status.add("can: device", describeExtras(limits_));
   std::vector<DiagnosticValue> values;
   backend_->diagnostics(values);
   for (const DiagnosticValue& value : values)

@@ -2,6 +2,7 @@
  * \file
  * \brief Command-line client: sends one goal of any PTZ action, shows progress from feedback, prints the result.
  */
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +13,7 @@
 #include <ros/ros.h>
 
 #include "ptz_action_server/PtzAction.h"
+#include "ptz_action_server/PtzCapabilities.h"
 #include "ptz_action_server/PtzFrameAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
 #include "ptz_action_server/PtzState.h"
@@ -28,6 +30,7 @@ Commands (angles in rad, or degrees with --degrees; zoom as X-factor):
   abs_tf FRAME PAN TILT [ZOOM]     go to a pan and tilt expressed in the axes of a tf frame
   frame  FRAME [ZOOM]              point the camera at the origin of a tf frame
   state                            print the current PtzState once
+  capabilities                     print what the device can do (the node's latched capabilities)
 
 Options:
   --ns NAMESPACE   namespace of the node (default: /ptz)
@@ -145,6 +148,49 @@ bool currentState(const std::string& ns, ptz_action_server::PtzState& state, dou
   return true;
 }
 
+/// The zoom of a goal that gives none: the current zoom, or 0 ("leave it alone") when the device does not report it.
+double currentZoom(const Options& options)
+{
+  ptz_action_server::PtzState state;
+  if (!currentState(options.ns, state, options.wait))
+  {
+    return 1.0;
+  }
+  return std::isfinite(state.zoom) ? state.zoom : 0.0;
+}
+
+void printAxis(const char* name, const ptz_action_server::PtzAxisCapability& axis, const char* unit)
+{
+  if (!axis.present)
+  {
+    std::printf("  %-5s none%s%s\n", name, axis.limitation.empty() ? "" : ": ", axis.limitation.c_str());
+    return;
+  }
+  std::printf("  %-5s position %-3s velocity %-3s feedback %-3s [%.4f, %.4f] %s, max speed %.4f %s/s%s%s\n", name,
+              axis.absolute ? "yes" : "no", axis.velocity ? "yes" : "no", axis.feedback ? "yes" : "no", axis.min,
+              axis.max, unit, axis.max_speed, unit, axis.limitation.empty() ? "" : "\n        ",
+              axis.limitation.c_str());
+}
+
+/// Prints the node's latched capabilities; returns the exit code.
+int printCapabilities(const Options& options)
+{
+  const auto message = ros::topic::waitForMessage<ptz_action_server::PtzCapabilities>(options.ns + "/capabilities",
+                                                                                      ros::Duration(options.wait));
+  if (!message)
+  {
+    std::fprintf(stderr, "ptz_move: no PtzCapabilities on %s/capabilities\n", options.ns.c_str());
+    return 1;
+  }
+  std::printf("backend %s\n", message->backend.c_str());
+  printAxis("pan", message->pan, "rad");
+  printAxis("tilt", message->tilt, "rad");
+  printAxis("zoom", message->zoom, "X");
+  std::printf("  device: relative moves %s, presets %s, home %s\n", message->relative_moves ? "yes" : "no",
+              message->device_presets ? "yes" : "no", message->device_home ? "yes" : "no");
+  return 0;
+}
+
 /// Sends \p goal, prints each feedback on one line, cancels on Ctrl-C or after --for; returns the exit code.
 template <class Action, class Goal>
 int run(const Options& options, const std::string& action, const Goal& goal)
@@ -216,14 +262,17 @@ int main(int argc, char** argv)
     std::printf("mode %d  pan %.4f rad  tilt %.4f rad  zoom %.2f X\n", state.mode, state.pan, state.tilt, state.zoom);
     return 0;
   }
+  if (command == "capabilities")
+  {
+    return printCapabilities(options);
+  }
   if (command == "abs" || command == "rel" || command == "vel")
   {
     const std::vector<double> values = numbers(options, 1, 2, 3);
     PtzGoal goal = makePtzGoal(values[0], values[1], values.size() > 2 ? values[2] : 0.0);
     if (command == "abs" && values.size() == 2)
     {
-      PtzState state;
-      goal.zoom = currentState(options.ns, state, options.wait) ? state.zoom : 1.0;
+      goal.zoom = currentZoom(options);
     }
     const std::string action = command == "abs" ? "position_abs" : (command == "rel" ? "position_rel" : "velocity");
     return run<PtzAction>(options, action, goal);
@@ -241,8 +290,7 @@ int main(int argc, char** argv)
     goal.frame_id = options.words[1];
     goal.pan = values[0];
     goal.tilt = values[1];
-    PtzState state;
-    goal.zoom = values.size() > 2 ? values[2] : (currentState(options.ns, state, options.wait) ? state.zoom : 1.0);
+    goal.zoom = values.size() > 2 ? values[2] : currentZoom(options);
     return run<PtzRelToAction>(options, "position_abs_tf", goal);
   }
   if (command == "frame")
@@ -254,12 +302,11 @@ int main(int argc, char** argv)
     PtzFrameGoal goal;
     goal.frame_id = options.words[1];
     double zoom = 0.0;
-    PtzState state;
     if (options.words.size() == 3 && !parseNumber(options.words[2], zoom))
     {
       fail("'" + options.words[2] + "' is not a number");
     }
-    goal.zoom = options.words.size() == 3 ? zoom : (currentState(options.ns, state, options.wait) ? state.zoom : 1.0);
+    goal.zoom = options.words.size() == 3 ? zoom : currentZoom(options);
     return run<PtzFrameAction>(options, "frame", goal);
   }
   fail("unknown command '" + command + "'");

@@ -225,3 +225,47 @@ TEST_F(GoalSupervisorTest, ShutdownAbortsTheActiveGoalAndStopsTheDevice)
   EXPECT_EQ(backend_->commands.back(), "stop");
   EXPECT_FALSE(supervisor_.goalActive());
 }
+
+/// The supervisor of a device whose zoom neither goes to positions nor reports them (a camera without a zoom table).
+class BlindZoomSupervisorTest : public GoalSupervisorTest
+{
+protected:
+  static Capabilities blindZoom()
+  {
+    Capabilities limits = SimDeviceConfig::defaults().capabilities();
+    limits.axes[ZOOM].absolute = false;
+    limits.axes[ZOOM].feedback = false;
+    limits.axes[ZOOM].limitation = "this camera reports no zoom position";
+    limits.axes[ZOOM].remedy = "set axis/zoom_table";
+    return limits;
+  }
+  BlindZoomSupervisorTest() : blind_(backend_, blindZoom(), GoalMonitorConfig(), false, clock_)
+  {
+  }
+  std::shared_ptr<GoalLog> submitBlind(const GoalConverter& convert)
+  {
+    auto log = std::make_shared<GoalLog>();
+    blind_.submit(std::make_unique<RecordingGoal>("position_abs", "blind", log), convert);
+    return log;
+  }
+  GoalSupervisor blind_;
+};
+
+TEST_F(BlindZoomSupervisorTest, AZoomItCannotSeeIsRefusedAndNothingMoves)
+{
+  const auto goal = submitBlind(positionGoal(0.5, 0.0, 4.0));
+  EXPECT_EQ(goal->end, "REJECTED: this camera reports no zoom position: zoom goals are not supported; set "
+                       "axis/zoom_table");
+  EXPECT_TRUE(backend_->commands.empty());
+}
+
+TEST_F(BlindZoomSupervisorTest, AGoalThatLeavesTheZoomAloneIsJudgedOnPanAndTiltOnly)
+{
+  const auto goal = submitBlind(positionGoal(0.5, -0.1, 0.0));
+  ASSERT_TRUE(goal->accepted) << goal->end;
+  EXPECT_EQ(backend_->commands, std::vector<std::string>{ "goTo 0.50 -0.10 nan" });
+  backend_->at({ 0.5, -0.1, 7.0 }, false);  // whatever the zoom's sample says, it is not the goal's
+  clock_->advance(0.1);
+  blind_.supervise(blind_.sample());
+  EXPECT_EQ(goal->end, "SUCCEEDED: reached pan 0.5000 rad, tilt -0.1000 rad");
+}

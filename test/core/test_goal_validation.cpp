@@ -100,3 +100,70 @@ TEST(GoalValidation, VelocityAboveMaxSpeedIsRejectedOrClamped)
   EXPECT_DOUBLE_EQ(clamped.values[TILT], 0.5);
   EXPECT_NE(clamped.message.find("pan -2.0000 -> -1.5000 rad/s"), std::string::npos) << clamped.message;
 }
+
+TEST(GoalValidation, AZoomGoalOnADeviceWithoutZoomIsRefusedNamingWhatItLacks)
+{
+  Capabilities limits = cameraLimits();
+  limits.axes[ZOOM] = absentAxis();
+  // Zoom 1 (what it reports) and 0 (unset) ask nothing of it; 4 does.
+  EXPECT_TRUE(validatePositionGoal({ 0.1, 0.1, 1.0 }, limits, false).accepted);
+  const ValidatedGoal refused = validatePositionGoal({ 0.1, 0.1, 4.0 }, limits, false);
+  EXPECT_FALSE(refused.accepted);
+  EXPECT_EQ(refused.message, "the device has no zoom: zoom goals are not supported");
+  // Clamping never turns it into a goal reached at zoom 1.
+  EXPECT_FALSE(validatePositionGoal({ 0.1, 0.1, 4.0 }, limits, true).accepted);
+  EXPECT_EQ(validateVelocityGoal({ 0.0, 0.0, 0.5 }, limits, true).message, "the device has no zoom: zoom velocity "
+                                                                           "goals are not supported");
+  EXPECT_TRUE(validateVelocityGoal({ 0.2, 0.0, 0.0 }, limits, false).accepted);
+}
+
+TEST(GoalValidation, TheDevicesOwnWordsAndRemedyNameWhatIsMissing)
+{
+  Capabilities limits = cameraLimits();
+  limits.axes[ZOOM].feedback = false;
+  limits.axes[ZOOM].absolute = false;
+  limits.axes[ZOOM].limitation = "this camera reports no zoom position";
+  limits.axes[ZOOM].remedy = "set axis/zoom_table";
+  const ValidatedGoal refused = validatePositionGoal({ 0.1, 0.1, 4.0 }, limits, false);
+  EXPECT_EQ(refused.message, "this camera reports no zoom position: zoom goals are not supported; set axis/zoom_table");
+  // Zoom 0 leaves it alone: accepted, commanded as NaN ("leave it where it is") and never judged.
+  const ValidatedGoal left_alone = validatePositionGoal({ 0.1, 0.1, 0.0 }, limits, false);
+  ASSERT_TRUE(left_alone.accepted) << left_alone.message;
+  EXPECT_TRUE(std::isnan(left_alone.values[ZOOM]));
+  EXPECT_TRUE(left_alone.judged[PAN]);
+  EXPECT_TRUE(left_alone.judged[TILT]);
+  EXPECT_FALSE(left_alone.judged[ZOOM]);
+  // Its speed can still be driven.
+  const ValidatedGoal velocity = validateVelocityGoal({ 0.0, 0.0, 2.0 }, limits, false);
+  EXPECT_TRUE(velocity.accepted) << velocity.message;
+  EXPECT_TRUE(velocity.judged[ZOOM]);
+}
+
+TEST(GoalValidation, ACameraWithoutPositionFeedbackTakesVelocityGoalsOnly)
+{
+  Capabilities limits = cameraLimits();
+  for (Axis axis : { PAN, TILT })
+  {
+    limits.axes[axis].feedback = false;
+    limits.axes[axis].limitation = "GetStatus answers no position";
+  }
+  EXPECT_EQ(validatePositionGoal({ 0.1, 0.1, 2.0 }, limits, false).message, "GetStatus answers no position: pan goals "
+                                                                            "are not supported");
+  EXPECT_TRUE(validateVelocityGoal({ 0.3, -0.2, 0.0 }, limits, false).accepted);
+  EXPECT_EQ(findUnsupported(limits, TILT, AxisRequest::OFFSET), "GetStatus answers no position: tilt relative goals "
+                                                                "are not supported");
+  EXPECT_EQ(findUnsupported(limits, ZOOM, AxisRequest::OFFSET), "");
+}
+
+TEST(GoalValidation, ADeviceThatCannotDriveAnAxisAtASpeedRefusesThatVelocityOnly)
+{
+  Capabilities limits = cameraLimits();
+  limits.axes[ZOOM].velocity = false;
+  EXPECT_EQ(validateVelocityGoal({ 0.1, 0.0, 1.0 }, limits, false).message, "the device cannot move its zoom at a "
+                                                                            "speed: zoom velocity goals are not "
+                                                                            "supported");
+  const ValidatedGoal pan_only = validateVelocityGoal({ 0.1, 0.0, 0.0 }, limits, false);
+  ASSERT_TRUE(pan_only.accepted);
+  EXPECT_FALSE(pan_only.judged[ZOOM]);
+  EXPECT_TRUE(validatePositionGoal({ 0.1, 0.0, 3.0 }, limits, false).accepted);  // positions still go
+}

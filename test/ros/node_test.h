@@ -28,6 +28,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "ptz_action_server/PtzAction.h"
+#include "ptz_action_server/PtzCapabilities.h"
 #include "ptz_action_server/ros/ptz_goal.h"
 #include "ptz_action_server/PtzFrameAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
@@ -166,6 +167,24 @@ protected:
     tf_buffer_ = new tf2_ros::Buffer();
     tf_listener_ = new tf2_ros::TransformListener(*tf_buffer_);
     broadcastTestFrames();
+    // Latched once the node has started its device.
+    const auto capabilities =
+        ros::topic::waitForMessage<ptz_action_server::PtzCapabilities>("capabilities", ros::Duration(60.0));
+    if (capabilities)
+    {
+      capabilities_ = new ptz_action_server::PtzCapabilities(*capabilities);
+    }
+  }
+
+  /// True when the device's zoom takes position goals (the node's latched capabilities say so).
+  static bool zoomable()
+  {
+    return capabilities_ != nullptr && capabilities_->zoom.absolute;
+  }
+  /// \p zoom on a device whose zoom takes position goals; otherwise 1, the zoom a device without one reports.
+  static double zoomOr1(double zoom)
+  {
+    return zoomable() ? zoom : 1.0;
   }
 
   /// Static frames for the frame and position_abs_tf goals.
@@ -200,6 +219,7 @@ protected:
     ASSERT_TRUE(relative_to_->waitForServer(ros::Duration(30.0)));
     ASSERT_TRUE(frame_->waitForServer(ros::Duration(30.0)));
     ASSERT_TRUE(observer_->waitTicks(1)) << "no ptz_state";
+    ASSERT_NE(capabilities_, nullptr) << "no latched capabilities";
     setFaults(ptz_action_server::SetSimFaults::Request());  // no faults left over from another test
   }
 
@@ -269,6 +289,7 @@ protected:
   }
 
   static inline NodeObserver* observer_ = nullptr;
+  static inline ptz_action_server::PtzCapabilities* capabilities_ = nullptr;
   static inline PtzClient* absolute_ = nullptr;
   static inline PtzClient* second_absolute_ = nullptr;
   static inline PtzClient* relative_ = nullptr;

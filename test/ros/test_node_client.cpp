@@ -13,7 +13,8 @@ TEST_F(NodeTest, PositionGoalSucceedsWithFeedback)
   ASSERT_EQ(moveTo(0.0, 0.0, 1.0), State::SUCCEEDED);
   FeedbackLog<ptz_action_server::PtzFeedback> feedback;
   observer_->clear();
-  absolute_->sendGoal(makePtzGoal(0.6, -0.3, 5.0), PtzClient::SimpleDoneCallback(), PtzClient::SimpleActiveCallback(),
+  absolute_->sendGoal(makePtzGoal(0.6, -0.3, zoomOr1(5.0)), PtzClient::SimpleDoneCallback(),
+                      PtzClient::SimpleActiveCallback(),
                       [&](const PtzFeedbackConstPtr& item) { feedback.add(*item); });
   ASSERT_TRUE(absolute_->waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(absolute_->getState(), State::SUCCEEDED) << absolute_->getState().getText();
@@ -109,10 +110,10 @@ TEST_F(NodeTest, CancelDeceleratesTheDeviceToRest)
 
 TEST_F(NodeTest, RelativeGoalMovesByTheOffset)
 {
-  ASSERT_EQ(moveTo(0.1, -0.2, 3.0), State::SUCCEEDED);
+  ASSERT_EQ(moveTo(0.1, -0.2, zoomOr1(3.0)), State::SUCCEEDED);
   ASSERT_TRUE(observer_->waitTicks(2));
   const PtzState start = observer_->latest();
-  relative_->sendGoal(makePtzGoal(0.25, 0.15, 1.0));
+  relative_->sendGoal(makePtzGoal(0.25, 0.15, zoomable() ? 1.0 : 0.0));
   ASSERT_TRUE(relative_->waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(relative_->getState(), State::SUCCEEDED) << relative_->getState().getText();
   ASSERT_TRUE(observer_->waitTicks(2));

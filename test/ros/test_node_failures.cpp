@@ -11,7 +11,7 @@
 
 TEST_F(NodeTest, InvalidGoalsAreRejectedAndNothingMoves)
 {
-  ASSERT_EQ(moveTo(0.2, 0.1, 2.0), State::SUCCEEDED);
+  ASSERT_EQ(moveTo(0.2, 0.1, zoomOr1(2.0)), State::SUCCEEDED) << absolute_->getState().getText();
   ASSERT_TRUE(observer_->waitTicks(2));  // the result can come before the state that shows the goal reached
   const PtzState before = observer_->latest();
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -157,4 +157,68 @@ TEST_F(ClampTest, OutOfRangeGoalsAreClampedAndSaySo)
   absolute_->sendGoal(makePtzGoal(std::numeric_limits<double>::quiet_NaN(), 0.0, 1.0));
   ASSERT_TRUE(absolute_->waitForResult(ros::Duration(5.0)));
   EXPECT_EQ(absolute_->getState(), State::REJECTED);
+}
+
+TEST_F(NodeTest, CapabilitiesAreLatchedAndAZoomTheDeviceCannotPositionIsRefusedNamingIt)
+{
+  const ptz_action_server::PtzCapabilities& can = *capabilities_;
+  EXPECT_FALSE(can.backend.empty());
+  // Every backend's pan and tilt take position goals, report themselves, and have the limits goals are checked with.
+  for (const auto* axis : { &can.pan, &can.tilt })
+  {
+    EXPECT_TRUE(axis->present && axis->absolute && axis->feedback);
+    EXPECT_LT(axis->min, axis->max);
+    EXPECT_GT(axis->max_speed, 0.0);
+  }
+  ASSERT_EQ(moveTo(0.1, 0.0, zoomOr1(2.0)), State::SUCCEEDED) << absolute_->getState().getText();
+  ASSERT_TRUE(observer_->waitTicks(2));
+  const PtzState before = observer_->latest();
+  if (can.zoom.absolute)
+  {
+    EXPECT_TRUE(can.zoom.present && can.zoom.feedback);
+    EXPECT_LE(can.zoom.min, 1.0 + 1e-6);
+    EXPECT_GT(can.zoom.max, can.zoom.min);
+    EXPECT_FALSE(std::isnan(before.zoom));
+    return;  // the zoom goals of the other tests cover it
+  }
+  // A zoom it cannot position: a goal that asks for one is refused with the device's words, and nothing moves.
+  struct Case
+  {
+    PtzClient* client;
+    PtzGoal goal;
+    const char* reason;
+  };
+  const std::vector<Case> cases = {
+    { absolute_, makePtzGoal(0.3, 0.0, 4.0), "zoom goals are not supported" },
+    { relative_, makePtzGoal(0.1, 0.0, 1.0), "zoom relative goals are not supported" },
+    { velocity_, makePtzGoal(0.0, 0.0, 0.5), "zoom velocity goals are not supported" },
+  };
+  for (const Case& item : cases)
+  {
+    if (item.client == velocity_ && can.zoom.velocity)
+    {
+      continue;
+    }
+    item.client->sendGoal(item.goal);
+    ASSERT_TRUE(item.client->waitForResult(ros::Duration(5.0)));
+    EXPECT_EQ(item.client->getState(), State::REJECTED) << item.client->getState().getText();
+    EXPECT_NE(item.client->getState().getText().find(item.reason), std::string::npos)
+        << "'" << item.client->getState().getText() << "' should say '" << item.reason << "'";
+    if (!can.zoom.limitation.empty())
+    {
+      EXPECT_NE(item.client->getState().getText().find(can.zoom.limitation.substr(0, 20)), std::string::npos)
+          << item.client->getState().getText();
+    }
+  }
+  ASSERT_TRUE(observer_->waitTicks(3));
+  EXPECT_EQ(observer_->latest().pan, before.pan);
+  // A zoom it lacks is reported as 1, one it cannot see as NaN.
+  if (can.zoom.present)
+  {
+    EXPECT_TRUE(std::isnan(observer_->latest().zoom));
+  }
+  else
+  {
+    EXPECT_EQ(observer_->latest().zoom, 1.0f);
+  }
 }

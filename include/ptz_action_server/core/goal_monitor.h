@@ -56,8 +56,10 @@ public:
   /// it); a lost link or a device fault aborts it. remaining is aim minus position; retarget() moves the aim.
   static GoalMonitor forTrack(const AxisValues& aim, const PtzSample& start, const Capabilities& capabilities,
                               const GoalMonitorConfig& config, TimePoint now);
-  /// A cancelled goal whose device is being stopped: it ends once the device rests (or stop_timeout passes).
-  static GoalMonitor forStop(const PtzSample& start, const GoalMonitorConfig& config, TimePoint now);
+  /// A cancelled goal whose device is being stopped: it ends once the device rests (or stop_timeout passes). Its
+  /// final text names the position of the axes \p reported has present and reporting.
+  static GoalMonitor forStop(const PtzSample& start, const GoalMonitorConfig& config, TimePoint now,
+                             const Capabilities& reported = Capabilities());
 
   /// A tracking goal's new aim (positions).
   void retarget(const AxisValues& aim)

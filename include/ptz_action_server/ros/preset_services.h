@@ -67,6 +67,9 @@ private:
   ros::NodeHandle node_handle_;  ///< the node's namespace, on queue_
   std::shared_ptr<PtzBackend> backend_;
   bool has_zoom_;
+  /// The zoom a preset holds on a device whose zoom takes no position goals: 1 without zoom (what it reports), 0 (left
+  /// alone) for a zoom the node cannot position or see.
+  double unpositioned_zoom_;
   std::unique_ptr<PresetStore> store_;
   ros::ServiceServer save_service_;
   ros::ServiceServer delete_service_;

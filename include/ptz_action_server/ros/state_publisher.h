@@ -32,6 +32,9 @@ namespace ptz_action_server
  * PtzState (with the supervisor's mode), joint_states and the pan and tilt transforms, updates the diagnostics
  * (backend status, measured ptz_state rate), and while a goal is active passes the sample to the handler. The
  * messages are built once in start() and reused, so a tick allocates nothing of its own.
+ *
+ * An axis whose device reports no position (AxisCapability::feedback false) is published as NaN in PtzState and is
+ * left out of joint_states and tf: its pose is unknown, and a made-up one would mislead rviz and the clients.
  */
 class StatePublisher
 {
@@ -40,9 +43,10 @@ public:
   using SampleHandler = std::function<void(const GoalSample&)>;
 
   /// \p supervisor must outlive the publisher; only its thread-safe sample(), mode() and goalActive() are used.
+  /// \p limits are the node's (the device's capabilities within the URDF's limits).
   StatePublisher(const ros::NodeHandle& node_handle, const PtzKinematics& kinematics,
-                 std::shared_ptr<PtzBackend> backend, const GoalSupervisor& supervisor, bool publish_tf,
-                 SampleHandler hand_over);
+                 std::shared_ptr<PtzBackend> backend, const GoalSupervisor& supervisor, const Capabilities& limits,
+                 bool publish_tf, SampleHandler hand_over);
   /// Stops the timer and its spinner: once it returns, the handler is not called any more.
   ~StatePublisher();
 
@@ -58,6 +62,10 @@ public:
 private:
   void onTick();
   void publishStaticTransforms();
+  /// The URDF joint of pan or tilt.
+  const JointModel& joint(Axis axis) const;
+  /// What PtzState carries for \p axis: its position, or NaN when the device does not report it.
+  float reported(Axis axis, const PtzSample& sample) const;
   void diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper& status);
   ros::Time toRosTime(TimePoint stamp) const;
 
@@ -66,6 +74,8 @@ private:
   PtzKinematics kinematics_;
   std::shared_ptr<PtzBackend> backend_;
   const GoalSupervisor& supervisor_;
+  const Capabilities limits_;
+  std::vector<Axis> reported_joints_;  ///< pan and tilt, those the device reports, in joint_states and tf
   const bool publish_tf_;
   const SampleHandler hand_over_;
   SystemClock clock_;
@@ -75,7 +85,7 @@ private:
   ros::Publisher joint_state_publisher_;
   PtzState state_message_;
   sensor_msgs::JointState joint_state_message_;
-  std::vector<geometry_msgs::TransformStamped> joint_transforms_;  ///< pan and tilt, reused every tick
+  std::vector<geometry_msgs::TransformStamped> joint_transforms_;  ///< of reported_joints_, reused every tick
   TimePoint last_transform_stamp_{};                               ///< of the state the joint tf was last sent for
   std::unique_ptr<tf2_ros::TransformBroadcaster> transform_broadcaster_;
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;

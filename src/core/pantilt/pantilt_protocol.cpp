@@ -29,8 +29,8 @@ Capabilities PanTiltProtocol::capabilities() const
     capabilities.axes[axis] = settings_.axes[axis];
     capabilities.axes[axis].max_speed *= speed_share[axis];
   }
-  capabilities.axes[ZOOM].present = false;
-  capabilities.axes[ZOOM].range = AxisRange{ 1.0, 1.0 };
+  capabilities.axes[ZOOM] = absentAxis("a PanTilt controller has no zoom");
+  capabilities.device_home = true;  // GO_TO_HOME
   return capabilities;
 }
 

@@ -70,8 +70,10 @@ Capabilities PelcoProtocol::capabilities() const
   }
   if (!capabilities.axes[ZOOM].present)
   {
-    capabilities.axes[ZOOM].range = AxisRange{ 1.0, 1.0 };
+    capabilities.axes[ZOOM] = absentAxis("this Pelco-D device is configured without zoom");
+    capabilities.axes[ZOOM].remedy = "set serial/pelco/zoom/present if it has one";
   }
+  capabilities.device_presets = true;  // set, clear and go to preset (0x03, 0x05, 0x07)
   return capabilities;
 }
 

@@ -58,6 +58,9 @@ Capabilities ViscaProtocol::capabilities() const
 {
   Capabilities capabilities;
   capabilities.axes = settings_.model.capabilities();
+  capabilities.relative_moves = true;  // 8x 01 06 03
+  capabilities.device_presets = true;  // memory set / recall (8x 01 04 3F)
+  capabilities.device_home = true;     // 8x 01 06 04
   return capabilities;
 }
 

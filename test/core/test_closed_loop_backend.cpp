@@ -1,0 +1,198 @@
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <thread>
+
+#include "ptz_action_server/core/closed_loop_backend.h"
+#include "ptz_action_server/core/goal_monitor.h"
+#include "ptz_action_server/core/sim_backend.h"
+#include "wait_until.h"
+
+using namespace ptz_action_server;
+
+namespace
+{
+constexpr double WAIT = 20.0;  ///< s: generous, for a loaded machine
+
+/**
+ * A camera that only moves at a speed (ContinuousMove only) and is polled for its position every 50 ms, as a
+ * DeviceSession polls one: the simulated device underneath, its pan and tilt declared without `absolute`, and every
+ * goTo() that reaches it counted (a real camera of the kind would refuse it).
+ */
+class ContinuousOnlyCamera : public ForwardingBackend
+{
+public:
+  explicit ContinuousOnlyCamera(bool absolute = false)
+    : ForwardingBackend(std::make_shared<SimBackend>(SimDeviceConfig::defaults())), absolute_(absolute)
+  {
+  }
+  ~ContinuousOnlyCamera() override
+  {
+    running_ = false;
+    if (poller_.joinable())
+    {
+      poller_.join();
+    }
+  }
+  Capabilities capabilities() const override
+  {
+    Capabilities capabilities = inner().capabilities();
+    for (Axis axis : ALL_AXES)
+    {
+      capabilities.axes[axis].absolute = absolute_;
+      capabilities.axes[axis].limitation = absolute_ ? "" : "this camera takes no AbsoluteMove";
+    }
+    return capabilities;
+  }
+  bool setSampleListener(SampleListener listener) override
+  {
+    listener_ = std::move(listener);
+    return true;
+  }
+  void start() override
+  {
+    inner().start();
+    poller_ = std::thread([this] {
+      while (running_)
+      {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        if (listener_)  // as a DeviceSession: after each report, and when the link is lost
+        {
+          listener_();
+        }
+      }
+    });
+  }
+  void goTo(const AxisValues& position) override
+  {
+    ++positions_;
+    if (absolute_)
+    {
+      inner().goTo(position);
+    }
+  }
+  void moveAtVelocity(const AxisValues& velocity) override
+  {
+    ++velocities_;
+    inner().moveAtVelocity(velocity);
+  }
+  void stop() override
+  {
+    ++stops_;
+    inner().stop();
+  }
+  SimBackend& device()
+  {
+    return static_cast<SimBackend&>(inner());
+  }
+
+  std::atomic<int> positions_{ 0 };
+  std::atomic<int> velocities_{ 0 };
+  std::atomic<int> stops_{ 0 };
+
+private:
+  const bool absolute_;
+  SampleListener listener_;
+  std::atomic<bool> running_{ true };
+  std::thread poller_;
+};
+
+class ClosedLoopBackendTest : public ::testing::Test
+{
+protected:
+  void startWith(bool absolute)
+  {
+    camera_ = std::make_shared<ContinuousOnlyCamera>(absolute);
+    backend_ = std::make_unique<ClosedLoopBackend>(camera_, config_);
+    ASSERT_TRUE(backend_->setSampleListener([this] { ++reports_; }));
+    backend_->start();
+  }
+
+  bool restsAt(const AxisValues& target, double slack) const
+  {
+    const PtzSample sample = backend_->sample();
+    return !sample.moving && std::abs(sample.position[PAN] - target[PAN]) <= slack &&
+           std::abs(sample.position[TILT] - target[TILT]) <= slack;
+  }
+
+  ClosedLoopConfig config_;
+  std::shared_ptr<ContinuousOnlyCamera> camera_;
+  std::unique_ptr<ClosedLoopBackend> backend_;
+  std::atomic<int> reports_{ 0 };
+};
+}  // namespace
+
+TEST_F(ClosedLoopBackendTest, APositionGoalIsReachedThroughSpeedsAloneAndJudgedAsOnAnyDevice)
+{
+  startWith(false);
+  EXPECT_TRUE(backend_->steers());
+  const Capabilities capabilities = backend_->capabilities();
+  EXPECT_TRUE(capabilities.axes[PAN].absolute);
+  EXPECT_TRUE(capabilities.axes[TILT].absolute);
+  EXPECT_TRUE(capabilities.axes[PAN].limitation.empty()) << capabilities.axes[PAN].limitation;
+
+  const AxisValues target{ { 0.8, -0.3, std::nan("") } };
+  backend_->goTo(target);
+  // Within the node's default tolerance (0.005 rad), at rest, and never through an absolute move.
+  ASSERT_TRUE(waitUntil([&] { return restsAt(target, GoalMonitorConfig().tolerance[PAN]); }, WAIT))
+      << "pan " << backend_->sample().position[PAN] << ", tilt " << backend_->sample().position[TILT];
+  EXPECT_EQ(camera_->positions_, 0);
+  EXPECT_GT(camera_->velocities_, 0);
+  EXPECT_GE(camera_->stops_, 1);
+  EXPECT_GT(reports_, 0);  // the node's listener still hears every report
+}
+
+TEST_F(ClosedLoopBackendTest, TheZoomANaNLeavesAloneIsNotDriven)
+{
+  startWith(false);
+  const double zoom_before = backend_->sample().position[ZOOM];
+  backend_->goTo({ { -0.4, 0.2, std::nan("") } });
+  ASSERT_TRUE(waitUntil([&] { return restsAt({ { -0.4, 0.2, 0.0 } }, 0.005); }, WAIT));
+  EXPECT_DOUBLE_EQ(backend_->sample().position[ZOOM], zoom_before);
+}
+
+TEST_F(ClosedLoopBackendTest, AStopEndsTheSteeringAndTheDeviceStaysWhereItStopped)
+{
+  startWith(false);
+  backend_->goTo({ { 2.5, 0.0, std::nan("") } });
+  ASSERT_TRUE(waitUntil([&] { return backend_->sample().position[PAN] > 0.5; }, WAIT));
+  backend_->stop();
+  ASSERT_TRUE(waitUntil([&] { return !backend_->sample().moving; }, WAIT));
+  const int commands = camera_->velocities_;
+  const double stopped_at = backend_->sample().position[PAN];
+  // Several reports later nothing has been commanded and the device has not moved on towards 2.5 rad.
+  const int reports = reports_;
+  ASSERT_TRUE(waitUntil([&] { return reports_ > reports + 5; }, WAIT));
+  EXPECT_EQ(camera_->velocities_, commands);
+  EXPECT_DOUBLE_EQ(backend_->sample().position[PAN], stopped_at);
+  EXPECT_LT(stopped_at, 2.0);
+}
+
+TEST_F(ClosedLoopBackendTest, ALostLinkEndsTheSteeringForGood)
+{
+  startWith(false);
+  backend_->goTo({ { 2.5, 0.0, std::nan("") } });
+  ASSERT_TRUE(waitUntil([&] { return backend_->sample().position[PAN] > 0.5; }, WAIT));
+  camera_->device().setFaults(SimFaults(), true);  // the device falls silent
+  ASSERT_TRUE(waitUntil([&] { return !backend_->sample().link_up; }, WAIT));
+  const int reports = reports_;
+  camera_->device().setFaults(SimFaults(), false);  // and answers again
+  ASSERT_TRUE(waitUntil([&] { return reports_ > reports + 5; }, WAIT));
+  // The steering step that saw the link down ended the goal: nothing resumes it when the device is back.
+  const int commands = camera_->velocities_;
+  const int more_reports = reports_;
+  ASSERT_TRUE(waitUntil([&] { return reports_ > more_reports + 5; }, WAIT));
+  EXPECT_EQ(camera_->velocities_, commands);
+}
+
+TEST_F(ClosedLoopBackendTest, ADeviceThatGoesToPositionsItselfPassesThrough)
+{
+  startWith(true);
+  EXPECT_FALSE(backend_->steers());
+  backend_->goTo({ { 0.3, 0.1, 2.0 } });
+  EXPECT_EQ(camera_->positions_, 1);
+  ASSERT_TRUE(waitUntil([&] { return restsAt({ { 0.3, 0.1, 2.0 } }, 0.002); }, WAIT));
+  EXPECT_EQ(camera_->velocities_, 0);
+}
