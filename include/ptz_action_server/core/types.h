@@ -125,6 +125,29 @@ struct AxisCapability
   std::string remedy;
 };
 
+/// An axis that goes to positions, moves at a speed and reports where it is, within \p range.
+inline AxisCapability fullAxis(const AxisRange& range, double max_speed, double acceleration)
+{
+  AxisCapability axis;
+  axis.range = range;
+  axis.max_speed = max_speed;
+  axis.acceleration = acceleration;
+  return axis;
+}
+
+/// An axis the device does not have (zoom of a pan-tilt unit): range [1, 1] for zoom, and \p limitation says why.
+inline AxisCapability absentAxis(const std::string& limitation = "")
+{
+  AxisCapability axis;
+  axis.present = false;
+  axis.absolute = false;
+  axis.velocity = false;
+  axis.feedback = false;
+  axis.range = AxisRange{ 1.0, 1.0 };
+  axis.limitation = limitation;
+  return axis;
+}
+
 /// What a backend's device can do; the node intersects the ranges with the URDF joint limits.
 struct Capabilities
 {

@@ -47,10 +47,9 @@ std::string DigiViewProtocol::deviceName() const
 Capabilities DigiViewProtocol::capabilities() const
 {
   Capabilities capabilities;
-  capabilities.axes[PAN] = AxisCapability{ true, { -M_PI, M_PI }, settings_.slew_rate, settings_.acceleration };
-  capabilities.axes[TILT] =
-      AxisCapability{ true, { -M_PI / 2.0, M_PI / 2.0 }, settings_.slew_rate, settings_.acceleration };
-  capabilities.axes[ZOOM] = AxisCapability{ true, { 1.0, settings_.zoomMax() }, ZOOM_RATE, 0.0 };
+  capabilities.axes[PAN] = fullAxis({ -M_PI, M_PI }, settings_.slew_rate, settings_.acceleration);
+  capabilities.axes[TILT] = fullAxis({ -M_PI / 2.0, M_PI / 2.0 }, settings_.slew_rate, settings_.acceleration);
+  capabilities.axes[ZOOM] = fullAxis({ 1.0, settings_.zoomMax() }, ZOOM_RATE, 0.0);
   return capabilities;
 }
 

@@ -56,7 +56,7 @@ Capabilities MavlinkGimbalProtocol::capabilities() const
   Capabilities capabilities;
   capabilities.axes[PAN] = settings_.pan;
   capabilities.axes[TILT] = settings_.tilt;
-  capabilities.axes[ZOOM] = AxisCapability{ false, { 1.0, 1.0 }, 1.0, 0.0 };
+  capabilities.axes[ZOOM] = absentAxis("a MAVLink gimbal has no zoom");
   return capabilities;
 }
 

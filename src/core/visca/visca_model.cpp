@@ -138,14 +138,11 @@ std::array<AxisCapability, AXIS_COUNT> ViscaModel::capabilities() const
   for (Axis axis : { PAN, TILT })
   {
     const ViscaAxis& visca_axis = axes[axis];
-    result[axis] = AxisCapability{ true,
-                                   { toRadians(visca_axis.min_degrees), toRadians(visca_axis.max_degrees) },
-                                   toRadians(visca_axis.max_speed),
-                                   acceleration };
+    result[axis] = fullAxis({ toRadians(visca_axis.min_degrees), toRadians(visca_axis.max_degrees) },
+                            toRadians(visca_axis.max_speed), acceleration);
   }
-  result[ZOOM] = has_zoom ?
-                     AxisCapability{ true, { zoom_table.front().zoom, zoom_table.back().zoom }, zoom_rate, 0.0 } :
-                     AxisCapability{ false, { 1.0, 1.0 }, 1.0, 0.0 };
+  result[ZOOM] = has_zoom ? fullAxis({ zoom_table.front().zoom, zoom_table.back().zoom }, zoom_rate, 0.0) :
+                            absentAxis("this VISCA model has no zoom");
   return result;
 }
 

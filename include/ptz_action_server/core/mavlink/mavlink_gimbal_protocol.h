@@ -31,8 +31,8 @@ struct MavlinkGimbalSettings
   double attitude_interval = 0.05;    ///< s between GIMBAL_DEVICE_ATTITUDE_STATUS, asked with SET_MESSAGE_INTERVAL
   double rate_period = 0.1;           ///< s between the rate setpoints of a velocity goal (managers time rates out)
   double resend_period = 1.0;         ///< s between repeats of a position setpoint, and of an unanswered request
-  AxisCapability pan{ true, { -M_PI, M_PI }, 1.0, 0.0 };  ///< max_speed and acceleration: for goal timeouts
-  AxisCapability tilt{ true, { -M_PI / 2.0, M_PI / 4.0 }, 1.0, 0.0 };
+  AxisCapability pan = fullAxis({ -M_PI, M_PI }, 1.0, 0.0);  ///< max_speed and acceleration: for goal timeouts
+  AxisCapability tilt = fullAxis({ -M_PI / 2.0, M_PI / 4.0 }, 1.0, 0.0);
 };
 
 /// Everything a mavlink_gimbal backend is built from.

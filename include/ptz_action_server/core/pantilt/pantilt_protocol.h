@@ -22,8 +22,8 @@ struct PanTiltSettings
   double pan_speed = 100.0;           ///< % of the max speed for position goals
   double tilt_speed = 100.0;          ///< %
   /// Pan and tilt ranges (rad), max speeds at 100 % (rad/s) and accelerations (rad/s^2). Zoom: none.
-  std::array<AxisCapability, 2> axes{ { { true, { -M_PI, M_PI }, 1.5, 3.0 },
-                                        { true, { -M_PI / 2.0, M_PI / 2.0 }, 1.0, 3.0 } } };
+  std::array<AxisCapability, 2> axes{ { fullAxis({ -M_PI, M_PI }, 1.5, 3.0),
+                                        fullAxis({ -M_PI / 2.0, M_PI / 2.0 }, 1.0, 3.0) } };
 };
 
 /// Everything a PanTilt backend is built from.

@@ -21,9 +21,9 @@ struct PelcoSettings
   pelco::TiltEncoding tilt_encoding = pelco::TiltEncoding::DOWN_POSITIVE;
   bool general_reply = false;  ///< the device acknowledges commands with 4-byte general replies
   /// Ranges (rad, X), speed at 0x3F (rad/s; zoom: X/s) and acceleration (for timeouts) of each axis.
-  std::array<AxisCapability, AXIS_COUNT> axes{ { { true, { -M_PI, M_PI }, 1.5, 3.0 },
-                                                 { true, { -M_PI / 2.0, M_PI / 2.0 }, 1.0, 3.0 },
-                                                 { true, { 1.0, 24.0 }, 8.0, 0.0 } } };
+  std::array<AxisCapability, AXIS_COUNT> axes{ { fullAxis({ -M_PI, M_PI }, 1.5, 3.0),
+                                                 fullAxis({ -M_PI / 2.0, M_PI / 2.0 }, 1.0, 3.0),
+                                                 fullAxis({ 1.0, 24.0 }, 8.0, 0.0) } };
   std::uint16_t zoom_position_max = 0xFFFF;  ///< the zoom position value at the longest focal length
   std::uint8_t turbo_byte = 0;               ///< the device's pan turbo speed byte (0x40, 0xFF, ...); 0: no turbo
   double turbo_speed = 0.0;                  ///< rad/s the pan turns at with turbo (above axes[PAN].max_speed)

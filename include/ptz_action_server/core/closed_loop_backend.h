@@ -1,0 +1,94 @@
+/**
+ * \file
+ * \brief Position goals on a device that only moves at a speed (a ContinuousMove-only camera): steered closed-loop on
+ * the positions it reports.
+ */
+#pragma once
+
+#include <array>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "ptz_action_server/core/forwarding_backend.h"
+
+namespace ptz_action_server
+{
+/// How ClosedLoopBackend steers.
+struct ClosedLoopConfig
+{
+  /// Half the node's goal tolerance: the axis is stopped once this close (rad, rad, X).
+  AxisValues stop_within{ { 0.0025, 0.0025, 0.025 } };
+  double gain = 2.0;  ///< 1/s: commanded speed per unit of remaining distance, until the speed or braking bound
+  /// Share of an axis' max speed below which it is not driven slower (a camera may not move at all below it).
+  double min_speed_share = 0.02;
+  /// Deceleration assumed when the device states none (rad/s^2, X/s^2).
+  double default_deceleration = 1.0;
+};
+
+/**
+ * \brief Runs goTo() as velocity commands on a device whose axes lack `absolute` but have `velocity` and `feedback`.
+ *
+ * After start(), if any present axis of the wrapped device cannot go to a position but can move at a speed and
+ * reports where it is, every present axis that can move at a speed and reports itself is steered here: on each state
+ * report (the backend's sample listener, on its I/O thread), each axis gets the speed that brings it to the target
+ * without overshoot (bounded by the max speed, by braking at half the device's acceleration, and by the gain), and
+ * the device is stopped once every axis is within stop_within. Those axes then report `absolute`. The goal itself is
+ * judged by the node, as on any device.
+ *
+ * Devices whose axes all go to positions, and devices that cannot report state as it comes, pass through unchanged.
+ * moveAtVelocity() and stop() end the steering. A lost link ends it too: the recovery never resumes an old goal.
+ * Thread-safe.
+ */
+class ClosedLoopBackend : public ForwardingBackend
+{
+public:
+  ClosedLoopBackend(std::shared_ptr<PtzBackend> inner, const ClosedLoopConfig& config);
+  ~ClosedLoopBackend() override;
+  ClosedLoopBackend(const ClosedLoopBackend&) = delete;
+  ClosedLoopBackend& operator=(const ClosedLoopBackend&) = delete;
+
+  Capabilities capabilities() const override;
+  void start() override;
+  void goTo(const AxisValues& position) override;
+  void moveAtVelocity(const AxisValues& velocity) override;
+  void stop() override;
+  bool setSampleListener(SampleListener listener) override;
+  void diagnostics(std::vector<DiagnosticValue>& values) const override;
+
+  /// True when position goals are steered here (known after start()).
+  bool steers() const;
+
+private:
+  /// On the wrapped backend's thread, after each state report: the next speeds, or the stop.
+  void steer();
+  void steerLocked();
+  /// The speed that brings \p axis from \p position to the target.
+  double speedFor(Axis axis, double position) const;
+
+  const ClosedLoopConfig config_;
+  SampleListener listener_;  ///< the node's, called after each steering step
+  bool reports_samples_ = false;
+  /// What the wrapped backend's listener reaches this object through; the destructor cuts it (the wrapped backend's
+  /// thread may report until it is joined, after this object's members are gone).
+  struct ListenerTarget
+  {
+    std::mutex mutex;
+    ClosedLoopBackend* backend = nullptr;
+  };
+  std::shared_ptr<ListenerTarget> listener_target_;
+
+  mutable std::mutex mutex_;  ///< guards everything below
+  Capabilities capabilities_;
+  std::array<bool, AXIS_COUNT> steered_{};  ///< axes run here (set once by start())
+  bool steering_ = false;                   ///< a goTo() is under way
+  AxisValues target_{};
+  AxisValues sent_velocity_{};  ///< the last speeds commanded while steering
+  std::uint64_t steps_ = 0;     ///< speed commands sent while steering
+};
+
+/// Wraps \p backend in a ClosedLoopBackend configured for the goal tolerances \p tolerance.
+std::shared_ptr<PtzBackend> withClosedLoop(std::shared_ptr<PtzBackend> backend, const AxisValues& tolerance);
+
+}  // namespace ptz_action_server
