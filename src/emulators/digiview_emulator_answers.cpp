@@ -126,7 +126,8 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
         answer(MessageType::DATA_ERROR, param);
         return;
       }
-      // 1.0: interval_ms subscribes (100 ms or more) or cancels (0); a GET with less is ignored, as a GET_INTERVAL.
+      // 1.0, 1.1: interval_ms subscribes (100 ms or more) or cancels (0); a GET with less is ignored, as a
+      // GET_INTERVAL.
       if (message.interval_ms != 0 && message.interval_ms < MIN_INTERVAL_MS)
       {
         return;
@@ -135,7 +136,7 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
       if (current(param, camera, state))
       {
         reply(session, state);
-        if (format == Format::V1_0)
+        if (subscribesWithGet(format))
         {
           subscribe(session, IntervalRequest{ param, camera, message.interval_ms });
         }

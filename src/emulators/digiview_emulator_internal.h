@@ -45,7 +45,7 @@ inline std::vector<digiview::BoundingBox> viewsOf(std::uint8_t layout_mode)
 }
 }  // namespace digiview_views
 
-/// A subscription (0.5: GET_INTERVAL, 1.0: a GET with interval_ms): its request and its timer.
+/// A subscription (0.5: GET_INTERVAL, 1.0 and 1.1: a GET with interval_ms): its request and its timer.
 struct DigiViewEmulator::Subscription
 {
   digiview::IntervalRequest request;

@@ -25,7 +25,7 @@ public:
     readSessionTiming(params, config.session);
 
     DigiViewSettings& digiview = config.digiview;
-    digiview::parseFormat(params.choice("format", "0.5", { "0.5", "1.0" }), digiview.wire.format);
+    digiview::parseFormat(params.choice("format", "0.5", { "0.5", "1.0", "1.1" }), digiview.wire.format);
     digiview::parseChecksumRule(params.choice("checksum", "required", { "required", "zero_accepted" }),
                                 digiview.wire.checksum);
     digiview.stream_name = params.text("stream_name", digiview.stream_name);

@@ -1,6 +1,6 @@
 /**
  * \file
- * \brief digiview_emulator: a DigiView emulator (message format 0.5 or 1.0) with virtual views that slew.
+ * \brief digiview_emulator: a DigiView emulator (message format 0.5, 1.0 or 1.1) with virtual views that slew.
  */
 #include <cstdio>
 #include <string>
@@ -16,14 +16,15 @@ const char* USAGE = R"(usage: digiview_emulator [options]
 
 Answers as DigiView does (CRC-8/BLUETOOTH over the bytes before the checksum): ACKNOWLEDGEMENT for SET
 CAM_TARGETING and CAM_OPTICS_AND_CONTROL, CURRENT_PARAMETERS for GETs and subscriptions (>= 100 ms, 0 cancels;
-format 0.5: GET_INTERVAL, 1.0: a GET with interval_ms), CHECKSUM_ERROR, DATA_ERROR, UNKNOWN, FORBIDDEN when told to
-refuse; QUIT closes the connection.
+format 0.5: GET_INTERVAL, 1.0 and 1.1: a GET with interval_ms), CHECKSUM_ERROR, DATA_ERROR, UNKNOWN, FORBIDDEN when
+told to refuse; QUIT closes the connection.
 
 Options:
   --host HOST            address to listen on (default 127.0.0.1)
   --port PORT            port (default 5500; 0 = any free port)
   --transport tcp|udp    default tcp
-  --format 0.5|1.0       the message format: 0.5 (80 bytes, default) or 1.0 (88 bytes, interval_ms in the header)
+  --format 0.5|1.0|1.1   the message format (msg_defs.hpp revision): 0.5 (80 bytes, 72c80d2; default), 1.0 (88 bytes,
+                         interval_ms in the header; 835b28e) or 1.1 (1.0 with CAM_TARGETING's detection_id; 305a8ab)
   --checksum RULE        required (default) or zero_accepted: a client's checksum byte of 0 is taken unverified
   --unfilled-checksum    send a checksum byte of 0, as a DigiView built on the published helpers (they never fill it)
   --stream NAME          a stream name (default main; repeat for more streams)
@@ -62,7 +63,7 @@ int main(int argc, char** argv)
         else if (arg == "--format")
         {
           ptz_action_server::digiview::parseFormat(
-              emulator_main::choice(PROGRAM, value(), arg, { "0.5", "1.0" }, USAGE), config.wire.format);
+              emulator_main::choice(PROGRAM, value(), arg, { "0.5", "1.0", "1.1" }, USAGE), config.wire.format);
         }
         else if (arg == "--checksum")
         {

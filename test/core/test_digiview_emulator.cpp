@@ -92,7 +92,7 @@ TEST_P(DigiViewEmulatorAnswers, AnswersLikeDigiView)
   targeting.yaw = 0.1;
   EXPECT_EQ(exchange(packTargeting(format, MessageType::SET_PARAMETERS, targeting)).message_type,
             MessageType::ACKNOWLEDGEMENT);
-  EXPECT_EQ(last_[9], format == Format::V1_0 ? 4 : 5);  // renumbered in 1.0
+  EXPECT_EQ(last_[9], format == Format::V0_5 ? 5 : 4);  // renumbered in 1.0 and 1.1
   Bytes broken = packTargeting(format, MessageType::SET_PARAMETERS, targeting).pack();
   broken[30] ^= 0x10;
   EXPECT_EQ(exchange(broken).message_type, MessageType::CHECKSUM_ERROR);

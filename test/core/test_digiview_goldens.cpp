@@ -1,7 +1,8 @@
 /**
  * \file
- * \brief The DigiView codec against the frames the published implementations print (published-wire-facts.md section
- * 1.5), in both formats: packing gives them byte for byte, unpacking reads them, and what is read packs back the same.
+ * \brief The DigiView codec against the golden frames (digiview_golden_frames.h: for 0.5 and 1.0 what the published
+ * implementations print, for 1.1 computed from its layout), in every format: packing gives them byte for byte,
+ * unpacking reads them, and what is read packs back the same.
  */
 #include <gtest/gtest.h>
 
@@ -199,6 +200,7 @@ TEST_P(DigiViewGoldens, TheFieldsReadAreThePublishedValues)
   EXPECT_DOUBLE_EQ(targeting.target_latitude, 59.329);  // 0.5: from @28, not from its copy @32
   EXPECT_DOUBLE_EQ(targeting.target_longitude, 18.068);
   EXPECT_DOUBLE_EQ(targeting.target_altitude, 120.5);
+  EXPECT_EQ(targeting.detection_id, -1);  // 1.1: FF FF @40; the others carry none
 
   SystemStatus status;
   ASSERT_EQ(unpackSystemStatus(read(goldens()[3]), status), UnpackError::NONE);
@@ -218,7 +220,7 @@ TEST_P(DigiViewGoldens, TheFieldsReadAreThePublishedValues)
   EXPECT_EQ(output.single_detection_size, 160);
 
   const Message ack = read(goldens()[7]);
-  EXPECT_EQ(ack.message_type, MessageType::ACKNOWLEDGEMENT);  // wire 5 in 0.5, 4 in 1.0
+  EXPECT_EQ(ack.message_type, MessageType::ACKNOWLEDGEMENT);  // wire 5 in 0.5, 4 in 1.0 and 1.1
   EXPECT_EQ(ack.param_type, digiview::ParamType::CAM_TARGETING);
 }
 
@@ -255,10 +257,27 @@ INSTANTIATE_TEST_SUITE_P(Formats, DigiViewGoldens, ::testing::ValuesIn(digiview_
 
 TEST(DigiViewGoldenExtras, FormatSpecificFrames)
 {
-  // 1.0: a GET with interval_ms @12 in the header subscribes.
+  // 1.0 and 1.1: a GET with interval_ms @12 in the header subscribes.
   EXPECT_EQ(
       toHex(packInterval(Format::V1_0, IntervalRequest{ digiview::ParamType::CAM_TARGETING, MAIN_1, 100 }).pack()),
       GET_CAM_TARGETING_EVERY_100_MS_V1_0);
+  EXPECT_EQ(
+      toHex(packInterval(Format::V1_1, IntervalRequest{ digiview::ParamType::CAM_TARGETING, MAIN_1, 100 }).pack()),
+      GET_CAM_TARGETING_EVERY_100_MS_V1_1);
+  // 1.1: detection_id, int16 @40 of CAM_TARGETING's data, packed and read.
+  CamTargeting detection = goldenTargeting();
+  detection.targeting_mode = 2;
+  detection.detection_id = 1234;
+  EXPECT_EQ(toHex(packTargeting(Format::V1_1, MessageType::SET_PARAMETERS, detection).pack()),
+            SET_CAM_TARGETING_DETECTION_1234_V1_1);
+  const Bytes detection_bytes = fromHex(SET_CAM_TARGETING_DETECTION_1234_V1_1);
+  Message detection_message;
+  ASSERT_EQ(Message::unpack(detection_bytes.data(), detection_bytes.size(), Wire{ Format::V1_1 }, detection_message),
+            UnpackError::NONE);
+  CamTargeting detection_read;
+  ASSERT_EQ(unpackTargeting(detection_message, detection_read), UnpackError::NONE);
+  EXPECT_EQ(detection_read.targeting_mode, 2);
+  EXPECT_EQ(detection_read.detection_id, 1234);
   // The first 0.5 revision's SYSTEM_STATUS had no temperature: its zeros read as 0 degrees.
   const Bytes old_status = fromHex(CURRENT_SYSTEM_STATUS_WITHOUT_TEMPERATURE_V0_5);
   EXPECT_EQ(toHex(packSystemStatus(Format::V0_5, MessageType::CURRENT_PARAMETERS, SystemStatus{ 1, 0, 0.0 }).pack()),
@@ -283,7 +302,7 @@ TEST(DigiViewGoldenExtras, TheFormatsAreToldApartByLengthAndTheirTypeNumbers)
   const Bytes v1_0 = fromHex(ack.frame.v1_0);
   EXPECT_EQ(Message::unpack(v0_5.data(), v0_5.size(), Wire{ Format::V1_0 }, message), UnpackError::BAD_SIZE);
   EXPECT_EQ(Message::unpack(v1_0.data(), v1_0.size(), Wire{ Format::V0_5 }, message), UnpackError::BAD_SIZE);
-  // Wire values: 0.5 as the seed; 1.0 has no GET_INTERVAL and every reply one lower.
+  // Wire values: 0.5 as the seed; 1.0 and 1.1 have no GET_INTERVAL and every reply one lower.
   const std::vector<std::pair<MessageType, int>> v1_0_values = {
     { MessageType::EMPTY, 0 },          { MessageType::GET_PARAMETERS, 1 },
     { MessageType::SET_PARAMETERS, 2 }, { MessageType::CURRENT_PARAMETERS, 3 },
@@ -298,23 +317,53 @@ TEST(DigiViewGoldenExtras, TheFormatsAreToldApartByLengthAndTheirTypeNumbers)
     MessageType back = MessageType::EMPTY;
     ASSERT_TRUE(toWire(Format::V0_5, type, wire));
     EXPECT_EQ(wire, static_cast<std::uint8_t>(type));
-    EXPECT_EQ(toWire(Format::V1_0, type, wire), value >= 0) << toString(type);
-    if (value >= 0)
+    for (Format renumbered : { Format::V1_0, Format::V1_1 })
     {
-      EXPECT_EQ(wire, value) << toString(type);
-      ASSERT_TRUE(fromWire(Format::V1_0, wire, back));
-      EXPECT_EQ(back, type);
+      EXPECT_EQ(toWire(renumbered, type, wire), value >= 0) << toString(type);
+      if (value >= 0)
+      {
+        EXPECT_EQ(wire, value) << toString(type);
+        ASSERT_TRUE(fromWire(renumbered, wire, back));
+        EXPECT_EQ(back, type);
+      }
     }
   }
   std::uint8_t wire = 0;
   MessageType type = MessageType::EMPTY;
   EXPECT_FALSE(fromWire(Format::V1_0, 9, type));
+  EXPECT_FALSE(fromWire(Format::V1_1, 9, type));
   EXPECT_FALSE(fromWire(Format::V0_5, 10, type));
   EXPECT_FALSE(toWire(Format::V1_0, MessageType::GET_INTERVAL, wire));
   // What a format cannot carry is not packed.
   EXPECT_THROW(packBare(Format::V1_0, MessageType::GET_INTERVAL, digiview::ParamType::CAM_TARGETING).pack(),
                std::invalid_argument);
+  EXPECT_THROW(packBare(Format::V1_1, MessageType::GET_INTERVAL, digiview::ParamType::CAM_TARGETING).pack(),
+               std::invalid_argument);
   Message with_interval = packGet(Format::V0_5, digiview::ParamType::CAM_TARGETING, MAIN_1);
   with_interval.interval_ms = 100;
   EXPECT_THROW(with_interval.pack(), std::invalid_argument);
+}
+
+TEST(DigiViewGoldenExtras, OneAndOneOneReadEachOtherButForDetectionId)
+{
+  // Same size, types, checksum and layout: a 1.1 frame is a valid 1.0 frame (its detection_id unread), and a 1.0
+  // frame reads in 1.1 as detection_id 0, the zeros 1.0 leaves there. Nothing in a message tells them apart.
+  for (const Golden& item : goldens())
+  {
+    EXPECT_EQ(item.frame.v1_0 == std::string(item.frame.v1_1), item.name != std::string("SET CAM_TARGETING"))
+        << item.name;
+  }
+  const Bytes v1_1 = fromHex(SET_CAM_TARGETING.v1_1);
+  const Bytes v1_0 = fromHex(SET_CAM_TARGETING.v1_0);
+  Message message;
+  CamTargeting as_1_0;
+  ASSERT_EQ(Message::unpack(v1_1.data(), v1_1.size(), Wire{ Format::V1_0 }, message), UnpackError::NONE);
+  ASSERT_EQ(unpackTargeting(message, as_1_0), UnpackError::NONE);
+  EXPECT_DOUBLE_EQ(as_1_0.target_altitude, 120.5);
+  EXPECT_EQ(as_1_0.detection_id, -1);  // not read: the default
+  CamTargeting as_1_1;
+  ASSERT_EQ(Message::unpack(v1_0.data(), v1_0.size(), Wire{ Format::V1_1 }, message), UnpackError::NONE);
+  ASSERT_EQ(unpackTargeting(message, as_1_1), UnpackError::NONE);
+  EXPECT_DOUBLE_EQ(as_1_1.yaw, 0.5);
+  EXPECT_EQ(as_1_1.detection_id, 0);
 }

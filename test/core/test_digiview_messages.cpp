@@ -60,7 +60,7 @@ CameraId mainCamera(std::uint8_t cam_id = 0)
   return CameraId{ "main", cam_id };
 }
 
-/// The codec tests that hold in both formats.
+/// The codec tests that hold in every format.
 class DigiViewMessages : public ::testing::TestWithParam<Format>
 {
 protected:
@@ -126,7 +126,12 @@ TEST_P(DigiViewMessages, HeaderChecksumAndTruncatedFields)
   EXPECT_EQ(int16At(bytes, data + 24), 16383);   // 0.5 x 32767 = 16383.5, truncated
   EXPECT_EQ(int16At(bytes, data + 26), -32767);  // never -32768
   EXPECT_EQ(int32At(bytes, data + 28), -89999);
-  EXPECT_EQ(int32At(bytes, data + (format() == Format::V1_0 ? 36 : 40)), std::numeric_limits<std::int32_t>::max());
+  EXPECT_EQ(int32At(bytes, data + (format() == Format::V0_5 ? 40 : 36)), std::numeric_limits<std::int32_t>::max());
+  // 1.1 appends detection_id after the altitude (-1 unless set: no detection); 1.0 leaves those bytes zero.
+  if (format() != Format::V0_5)
+  {
+    EXPECT_EQ(int16At(bytes, data + 40), format() == Format::V1_1 ? -1 : 0);
+  }
   // The checksum covers every byte before it; padding is zero.
   EXPECT_EQ(bytes[layout().checksum_offset], bitwiseCrc(bytes.data(), layout().checksum_offset));
   for (std::size_t at = layout().checksum_offset + 1; at < bytes.size(); ++at)
@@ -163,9 +168,9 @@ TEST_P(DigiViewMessages, WhereEachFormatPutsTheSubscriptionInterval)
   EXPECT_EQ(request.param, digiview::ParamType::CAM_TARGETING);
   EXPECT_EQ(request.interval_ms, 250u);
   EXPECT_EQ(request.camera.cam_id, 1);
-  // A plain GET: a subscription request with interval 0 in 1.0 (a one-shot GET), none in 0.5.
+  // A plain GET: a subscription request with interval 0 in 1.0 and 1.1 (a one-shot GET), none in 0.5.
   const Message get = unpacked(packGet(format(), digiview::ParamType::CAM_TARGETING, mainCamera()).pack());
-  EXPECT_EQ(unpackInterval(get, request), format() == Format::V1_0 ? UnpackError::NONE : UnpackError::BAD_DATA);
+  EXPECT_EQ(unpackInterval(get, request), subscribesWithGet(format()) ? UnpackError::NONE : UnpackError::BAD_DATA);
   EXPECT_EQ(request.interval_ms, 0u);
 }
 
@@ -184,6 +189,7 @@ TEST_P(DigiViewMessages, RoundTripOfEveryMessageAPtzClientNeeds)
   targeting.target_latitude = -90.0;
   targeting.target_longitude = 179.999;
   targeting.target_altitude = -1000.0;
+  targeting.detection_id = -32768;
   Message message = unpacked(packTargeting(format(), MessageType::CURRENT_PARAMETERS, targeting).pack());
   EXPECT_EQ(message.message_type, MessageType::CURRENT_PARAMETERS);
   EXPECT_EQ(message.format, format());
@@ -202,6 +208,7 @@ TEST_P(DigiViewMessages, RoundTripOfEveryMessageAPtzClientNeeds)
   EXPECT_DOUBLE_EQ(back.target_latitude, -90.0);
   EXPECT_DOUBLE_EQ(back.target_longitude, 179.999);
   EXPECT_DOUBLE_EQ(back.target_altitude, -1000.0);
+  EXPECT_EQ(back.detection_id, format() == Format::V1_1 ? -32768 : -1);  // only 1.1 carries it
 
   message = unpacked(
       packOptics(format(), MessageType::SET_PARAMETERS, CamOpticsAndControl{ mainCamera(2), 127, 3.14, 1 }).pack());
@@ -306,7 +313,7 @@ TEST_P(DigiViewMessages, EveryMalformedMessageHasOneReasonAndLeavesDefinedOutput
     { "yaw 3.2 rad", withInt32(11, 3200), size, UnpackError::NONE, UnpackError::BAD_DATA },
     { "pitch -1.6 rad", withInt32(15, -1600), size, UnpackError::NONE, UnpackError::BAD_DATA },
     { "latitude 91", withInt32(28, 91000), size, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "longitude 180", withInt32(format() == Format::V1_0 ? 32 : 36, 180000), size, UnpackError::NONE,
+    { "longitude 180", withInt32(format() == Format::V0_5 ? 36 : 32, 180000), size, UnpackError::NONE,
       UnpackError::BAD_DATA },
   };
   for (const Case& item : cases)

@@ -1,10 +1,12 @@
 /**
  * \file
- * \brief What only the digiview backend does, in both formats, against the DigiView emulator on 127.0.0.1 and
+ * \brief What only the digiview backend does, in every format, against the DigiView emulator on 127.0.0.1 and
  * against a DigiView that answers with the published implementations' frames (the backend contract suite covers what
  * every device does).
  */
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "wait_until.h"
 
@@ -49,18 +51,18 @@ DigiViewEmulatorConfig emulatorConfig(Format format, LinkKind transport = LinkKi
 std::function<bool(const ReceivedMessage&)> is(MessageType type, digiview::ParamType param, std::uint32_t interval = 0)
 {
   return [type, param, interval](const ReceivedMessage& item) {
-    IntervalRequest request;  // 0.5: GET_INTERVAL's data; 1.0: a GET's interval_ms
+    IntervalRequest request;  // 0.5: GET_INTERVAL's data; 1.0, 1.1: a GET's interval_ms
     const std::uint32_t asked = unpackInterval(item.message, request) == UnpackError::NONE ? request.interval_ms : 0;
     return item.error == UnpackError::NONE && item.message.message_type == type && item.message.param_type == param &&
            asked == interval;
   };
 }
 
-/// The subscription to \p param at \p interval ms in \p format: 0.5 GET_INTERVAL, 1.0 a GET with interval_ms.
+/// The subscription to \p param at \p interval ms in \p format: 0.5 GET_INTERVAL, 1.0 and 1.1 a GET with interval_ms.
 std::function<bool(const ReceivedMessage&)> subscription(Format format, digiview::ParamType param,
                                                          std::uint32_t interval)
 {
-  return is(format == Format::V1_0 ? MessageType::GET_PARAMETERS : MessageType::GET_INTERVAL, param, interval);
+  return is(subscribesWithGet(format) ? MessageType::GET_PARAMETERS : MessageType::GET_INTERVAL, param, interval);
 }
 
 /**
@@ -181,6 +183,18 @@ TEST_P(DigiViewBackend, StartupSubscribesToTheViewAndLearnsTheStream)
   const std::uint64_t states = backend->protocol<DigiViewProtocol>().counters().states;
   EXPECT_TRUE(waitUntil([&] { return backend->protocol<DigiViewProtocol>().counters().states >= states + 6; }, WAIT));
   EXPECT_DOUBLE_EQ(backend->capabilities().axes[ZOOM].range.max, 12.0);  // fov_wide / 0.1
+  // What DigiView does for a view, in every format: every axis goes to positions, moves at a speed (a moving target)
+  // and is reported (zoom through the field of view); the view turns by an offset of its own (euler_delta).
+  const Capabilities capabilities = backend->capabilities();
+  for (Axis axis : ALL_AXES)
+  {
+    const AxisCapability& capability = capabilities.axes[axis];
+    EXPECT_TRUE(capability.present && capability.absolute && capability.velocity && capability.feedback) << axis;
+    EXPECT_EQ(capability.limitation, "") << axis;
+  }
+  EXPECT_TRUE(capabilities.relative_moves);
+  EXPECT_FALSE(capabilities.device_presets);
+  EXPECT_FALSE(capabilities.device_home);
   for (const ReceivedMessage& item : emulator.received().items())
   {
     EXPECT_EQ(item.error, UnpackError::NONE) << "the emulator could not read a message of the backend's";
@@ -228,20 +242,64 @@ TEST_P(DigiViewBackend, ACameraTheStreamDoesNotHaveFailsAtStart)
   EXPECT_NE(text.find("stream 'main' has 1 user view(s), so cam_id 1 does not exist"), std::string::npos) << text;
 }
 
-TEST_P(DigiViewBackend, ADigiViewOfTheOtherFormatFailsAtStartSayingSo)
+TEST_P(DigiViewBackend, ADigiViewOfAFormatOfAnotherSizeFailsAtStartSayingSo)
 {
-  const Format other = GetParam() == Format::V0_5 ? Format::V1_0 : Format::V0_5;
-  for (LinkKind transport : { LinkKind::TCP, LinkKind::UDP })
+  for (Format other : FORMATS)
   {
-    DigiViewEmulator emulator(emulatorConfig(other, transport));
-    auto backend = makeDigiViewBackend(backendConfig(emulator.port(), GetParam(), transport));
-    const std::string text = startupError(*backend);
-    const std::string expected =
-        formatText("DigiView speaks format %s (%zu-byte messages), but format is set to "
-                   "\"%s\" (%zu-byte messages)",
-                   toString(other), layoutOf(other).size, toString(GetParam()), layoutOf(GetParam()).size);
-    EXPECT_NE(text.find(expected), std::string::npos) << toString(transport) << ": " << text;
+    if (layoutOf(other).size == layoutOf(GetParam()).size)
+    {
+      continue;  // 1.0 and 1.1 read each other (see OneAndOneOneReadEachOtherButForDetectionId)
+    }
+    const char* names = layoutOf(other).size == 80 ? "0.5" : "1.0 or 1.1";
+    for (LinkKind transport : { LinkKind::TCP, LinkKind::UDP })
+    {
+      DigiViewEmulator emulator(emulatorConfig(other, transport));
+      auto backend = makeDigiViewBackend(backendConfig(emulator.port(), GetParam(), transport));
+      const std::string text = startupError(*backend);
+      const std::string expected =
+          formatText("DigiView speaks format %s (%zu-byte messages), but format is set to "
+                     "\"%s\" (%zu-byte messages)",
+                     names, layoutOf(other).size, toString(GetParam()), layoutOf(GetParam()).size);
+      EXPECT_NE(text.find(expected), std::string::npos)
+          << toString(other) << " " << toString(transport) << ": " << text;
+    }
   }
+}
+
+TEST_P(DigiViewBackend, AimsInDirectionalModeAndInOneOneNamesNoDetection)
+{
+  DigiViewEmulator emulator(emulatorConfig(GetParam()));
+  auto backend = makeDigiViewBackend(backendConfig(emulator.port(), GetParam()));
+  backend->start();
+  ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
+  backend->goTo(AxisValues{ { 0.3, -0.2, 2.0 } });
+  auto targeting = [](const ReceivedMessage& item) {
+    return item.error == UnpackError::NONE && item.message.message_type == MessageType::SET_PARAMETERS &&
+           item.message.param_type == digiview::ParamType::CAM_TARGETING;
+  };
+  ASSERT_TRUE(emulator.received().waitFor(targeting, WAIT));
+  for (const ReceivedMessage& item : emulator.received().items())
+  {
+    if (!targeting(item))
+    {
+      continue;
+    }
+    CamTargeting sent;
+    ASSERT_EQ(unpackTargeting(item.message, sent), UnpackError::NONE);
+    EXPECT_EQ(sent.targeting_mode, 0);
+    EXPECT_NEAR(sent.yaw, 0.3, 1e-3);
+    EXPECT_NEAR(sent.pitch, -0.2, 1e-3);
+    // 1.1 carries detection_id -1 (no detection: FF FF); the others have no such field.
+    EXPECT_EQ(sent.detection_id, -1);
+    const std::size_t at = layoutOf(GetParam()).data_offset + 40;
+    if (GetParam() == Format::V1_1)
+    {
+      const Bytes bytes = item.message.pack();
+      EXPECT_EQ(bytes[at], 0xFF);
+      EXPECT_EQ(bytes[at + 1], 0xFF);
+    }
+  }
+  EXPECT_TRUE(waitUntil([&] { return std::abs(backend->sample().position[PAN] - 0.3) < 0.01; }, WAIT));
 }
 
 TEST_P(DigiViewBackend, ADigiViewThatLeavesTheChecksumZeroIsUsedOnlyWhenTheSettingSaysSo)

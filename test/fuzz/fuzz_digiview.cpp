@@ -1,7 +1,7 @@
 /**
  * \file
- * \brief libFuzzer target: DigiView Message::unpack and every payload unpack, on arbitrary bytes, in both formats
- * (0.5, 1.0) and both checksum rules.
+ * \brief libFuzzer target: DigiView Message::unpack and every payload unpack, on arbitrary bytes, in every format
+ * (0.5, 1.0, 1.1) and both checksum rules.
  *
  * Beyond "no crash, no out-of-bounds read" (ASan, UBSan), it checks that a refused message leaves a default message,
  * that a checksum byte of 0 is taken unverified only where the rule allows it, that what unpacks packs back to the
@@ -41,7 +41,7 @@ Bytes canonical(const std::uint8_t* data, Format format)
   Bytes bytes(data, data + layout.size);
   if (layout.interval_offset != 0)
   {
-    bytes[layout.interval_offset - 1] = 0;  // 1.0: the padding byte before interval_ms
+    bytes[layout.interval_offset - 1] = 0;  // 1.0, 1.1: the padding byte before interval_ms
   }
   std::fill(bytes.begin() + static_cast<std::ptrdiff_t>(layout.checksum_offset) + 1, bytes.end(), 0);
   bytes[layout.checksum_offset] = crc8(bytes.data(), layout.checksum_offset);
@@ -82,7 +82,7 @@ void checkPayloads(const Message& message)
            withinOneUnit(a.x_offset, b.x_offset, 32767.0) && withinOneUnit(a.y_offset, b.y_offset, 32767.0) &&
            withinOneUnit(a.target_latitude, b.target_latitude, 1000.0) &&
            withinOneUnit(a.target_longitude, b.target_longitude, 1000.0) &&
-           withinOneUnit(a.target_altitude, b.target_altitude, 1000.0);
+           withinOneUnit(a.target_altitude, b.target_altitude, 1000.0) && a.detection_id == b.detection_id;
   });
   checkRepacked(message, &unpackOptics, &packOptics, [](const CamOpticsAndControl& a, const CamOpticsAndControl& b) {
     return sameCamera(a.camera, b.camera) && a.zoom == b.zoom && a.crop_mode == b.crop_mode &&
@@ -141,7 +141,7 @@ void checkUnpacked(const std::uint8_t* data, std::size_t size, const Wire& wire)
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
-  for (Format format : { Format::V0_5, Format::V1_0 })
+  for (Format format : FORMATS)
   {
     for (ChecksumRule rule : { ChecksumRule::REQUIRED, ChecksumRule::ZERO_ACCEPTED })
     {

@@ -1,6 +1,6 @@
 /**
  * \file
- * \brief A DigiView emulator: answers the messages of format 0.5 or 1.0 over TCP or UDP, with virtual views that
+ * \brief A DigiView emulator: answers the messages of format 0.5, 1.0 or 1.1 over TCP or UDP, with virtual views that
  * slew.
  */
 #pragma once
@@ -31,7 +31,8 @@ struct DigiViewEmulatorConfig
   std::string host = "127.0.0.1";
   std::uint16_t port = 0;              ///< 0: an ephemeral port (see port())
   LinkKind transport = LinkKind::TCP;  ///< TCP or UDP
-  /// The format it speaks (0.5: 80-byte messages, 1.0: 88), and what it takes for a checksum from its clients.
+  /// The format it speaks (0.5: 80-byte messages, 1.0 and 1.1: 88), and what it takes for a checksum from its
+  /// clients.
   digiview::Wire wire;
   /// false: every message it sends carries a checksum byte of 0, as from a DigiView built on the published helpers,
   /// which never fill it.
@@ -59,7 +60,7 @@ struct ReceivedMessage
  * Speaks one format (config.wire), cutting a TCP stream by its size. ACKNOWLEDGEMENT for accepted SETs (CAM_TARGETING
  * in directional mode, absolute or delta; CAM_OPTICS_AND_CONTROL), CURRENT_PARAMETERS for GETs (SYSTEM_STATUS,
  * VIDEO_OUTPUT, CAM_TARGETING, CAM_OPTICS_AND_CONTROL), periodic CURRENT_PARAMETERS for subscriptions (0.5:
- * GET_INTERVAL, answered by its reports only; 1.0: a GET with interval_ms, answered at once too; at least 100 ms
+ * GET_INTERVAL, answered by its reports only; 1.0, 1.1: a GET with interval_ms, answered at once too; at least 100 ms
  * subscribes, 0 cancels, a request with less is ignored), CHECKSUM_ERROR for a bad checksum, DATA_ERROR for data out of
  * range, UNKNOWN for types it does not know or model, FORBIDDEN for SETs while told to refuse, and QUIT closes the
  * connection. Requests about an unknown stream or camera are ignored, as the seed says. Owns its I/O thread.

@@ -33,22 +33,34 @@ constexpr std::array<std::uint8_t, 256> CRC_TABLE = makeCrcTable();
 
 const char* toString(Format format)
 {
-  return format == Format::V1_0 ? "1.0" : "0.5";
+  switch (format)
+  {
+    case Format::V0_5:
+      return "0.5";
+    case Format::V1_0:
+      return "1.0";
+    case Format::V1_1:
+      return "1.1";
+  }
+  return "?";
 }
 
 bool parseFormat(const std::string& text, Format& format)
 {
-  if (text != "0.5" && text != "1.0")
+  for (Format candidate : FORMATS)
   {
-    return false;
+    if (text == toString(candidate))
+    {
+      format = candidate;
+      return true;
+    }
   }
-  format = text == "1.0" ? Format::V1_0 : Format::V0_5;
-  return true;
+  return false;
 }
 
 Layout layoutOf(Format format)
 {
-  return format == Format::V1_0 ? Layout{ 88, 16, 80, 12 } : Layout{ 80, 11, 75, 0 };
+  return format == Format::V0_5 ? Layout{ 80, 11, 75, 0 } : Layout{ 88, 16, 80, 12 };
 }
 
 const char* toString(ChecksumRule rule)
@@ -79,7 +91,7 @@ bool toWire(Format format, MessageType type, std::uint8_t& wire)
   {
     return false;
   }
-  wire = static_cast<std::uint8_t>(value - 1);  // 1.0 removed GET_INTERVAL: the replies moved down by one
+  wire = static_cast<std::uint8_t>(value - 1);  // 1.0 removed GET_INTERVAL: the replies moved down by one (1.1 too)
   return true;
 }
 
@@ -97,7 +109,7 @@ bool fromWire(Format format, std::uint8_t wire, MessageType& type)
     type = static_cast<MessageType>(wire);
     return true;
   }
-  if (format == Format::V1_0 && wire < last)
+  if (format != Format::V0_5 && wire < last)
   {
     type = static_cast<MessageType>(wire + 1);
     return true;

@@ -10,7 +10,8 @@ namespace digiview
 {
 using namespace detail;
 
-/// Where a format puts CAM_TARGETING's coordinates: 0.5 as its packer writes them (latitude twice), 1.0 in order.
+/// Where a format puts CAM_TARGETING's coordinates: 0.5 as its packer writes them (latitude twice), 1.0 and 1.1 in
+/// order.
 struct CoordinateOffsets
 {
   std::size_t latitude;
@@ -20,8 +21,11 @@ struct CoordinateOffsets
 
 CoordinateOffsets coordinatesOf(Format format)
 {
-  return format == Format::V1_0 ? CoordinateOffsets{ 28, 32, 36 } : CoordinateOffsets{ 28, 36, 40 };
+  return format == Format::V0_5 ? CoordinateOffsets{ 28, 36, 40 } : CoordinateOffsets{ 28, 32, 36 };
 }
+
+/// 1.1 appends detection_id to CAM_TARGETING, after the altitude.
+constexpr std::size_t DETECTION_ID_OFFSET = 40;
 
 Message packTargeting(Format format, MessageType type, const CamTargeting& targeting)
 {
@@ -44,6 +48,10 @@ Message packTargeting(Format format, MessageType type, const CamTargeting& targe
   payload.scaled32(at.latitude, targeting.target_latitude, MILLI_SCALE);
   payload.scaled32(at.longitude, targeting.target_longitude, MILLI_SCALE);
   payload.scaled32(at.altitude, targeting.target_altitude, MILLI_SCALE);
+  if (format == Format::V1_1)
+  {
+    payload.u16(DETECTION_ID_OFFSET, static_cast<std::uint16_t>(targeting.detection_id));
+  }
   return message;
 }
 
@@ -85,6 +93,10 @@ UnpackError unpackTargeting(const Message& message, CamTargeting& targeting)
   read.target_latitude = unscaled(latitude, MILLI_SCALE);
   read.target_longitude = unscaled(longitude, MILLI_SCALE);
   read.target_altitude = unscaled(altitude, MILLI_SCALE);
+  if (message.format == Format::V1_1)
+  {
+    read.detection_id = reader.i16(DETECTION_ID_OFFSET);  // any value: DigiView judges it in detection mode
+  }
   targeting = read;
   return UnpackError::NONE;
 }
@@ -230,7 +242,7 @@ UnpackError unpackCamera(const Message& message, CameraId& camera)
 
 Message packInterval(Format format, const IntervalRequest& request)
 {
-  if (format == Format::V1_0)
+  if (subscribesWithGet(format))
   {
     Message message = packGet(format, request.param, request.camera);
     message.interval_ms = request.interval_ms;
@@ -247,7 +259,8 @@ UnpackError unpackInterval(const Message& message, IntervalRequest& request)
 {
   request = IntervalRequest();
   const bool get_interval = message.message_type == MessageType::GET_INTERVAL;  // only 0.5 has one
-  const bool get_with_interval = message.format == Format::V1_0 && message.message_type == MessageType::GET_PARAMETERS;
+  const bool get_with_interval =
+      subscribesWithGet(message.format) && message.message_type == MessageType::GET_PARAMETERS;
   const Reader reader(message.data);
   IntervalRequest read;
   if (!(get_interval || get_with_interval) || !readCamera(reader, read.camera))

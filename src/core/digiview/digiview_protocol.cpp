@@ -24,6 +24,20 @@ bool sameCamera(const CameraId& a, const CameraId& b)
 {
   return a.stream_name == b.stream_name && a.cam_id == b.cam_id;
 }
+
+/// The formats whose messages are \p size bytes, for messages: "0.5", "1.0 or 1.1".
+std::string formatsOfSize(std::size_t size)
+{
+  std::string names;
+  for (Format format : FORMATS)
+  {
+    if (layoutOf(format).size == size)
+    {
+      names += (names.empty() ? "" : " or ") + std::string(toString(format));
+    }
+  }
+  return names;
+}
 }  // namespace
 
 double DigiViewSettings::zoomMax() const
@@ -46,10 +60,16 @@ std::string DigiViewProtocol::deviceName() const
 
 Capabilities DigiViewProtocol::capabilities() const
 {
+  // The same in every format, and nothing to learn from DigiView beyond its settings: a view goes to a commanded yaw,
+  // pitch and field of view (absolute), the backend moves its target at a commanded rate (velocity), and the view's
+  // CAM_TARGETING and CAM_OPTICS_AND_CONTROL reports say where it is (feedback; zoom as fov_wide / fov).
   Capabilities capabilities;
   capabilities.axes[PAN] = fullAxis({ -M_PI, M_PI }, settings_.slew_rate, settings_.acceleration);
   capabilities.axes[TILT] = fullAxis({ -M_PI / 2.0, M_PI / 2.0 }, settings_.slew_rate, settings_.acceleration);
   capabilities.axes[ZOOM] = fullAxis({ 1.0, settings_.zoomMax() }, ZOOM_RATE, 0.0);
+  capabilities.relative_moves = true;  // CAM_TARGETING's euler_delta (the backend itself sends absolute targets)
+  capabilities.device_presets = false;
+  capabilities.device_home = false;
   return capabilities;
 }
 
@@ -164,28 +184,40 @@ void DigiViewProtocol::handle(const std::uint8_t* bytes, std::size_t size)
 
 void DigiViewProtocol::checkOtherFormat(const std::uint8_t* bytes, std::size_t size)
 {
-  const Format other = settings_.wire.format == Format::V0_5 ? Format::V1_0 : Format::V0_5;
-  const std::size_t other_size = layoutOf(other).size;
-  // A datagram is one message. On a stream, the connection's first bytes must be two messages of the other format
-  // (one could verify by chance).
+  // A datagram is one message. On a stream, the connection's first bytes must be two messages of the other size (one
+  // could verify by chance). Formats of the same size (1.0, 1.1) read each other: nothing to tell.
   const bool datagrams = session_.carriesDatagrams();
-  const std::uint8_t* first = datagrams ? bytes : opening_.data();
-  const std::size_t needed = datagrams ? other_size : 2 * other_size;
-  if (datagrams ? size != other_size : opening_size_ < needed)
+  for (Format other : FORMATS)
   {
-    return;
-  }
-  for (std::size_t at = 0; at < needed; at += other_size)
-  {
-    Message probe;
-    if (Message::unpack(first + at, other_size, Wire{ other, ChecksumRule::REQUIRED }, probe) != UnpackError::NONE)
+    const std::size_t other_size = layoutOf(other).size;
+    const bool size_tried = std::any_of(std::begin(FORMATS), std::find(std::begin(FORMATS), std::end(FORMATS), other),
+                                        [other_size](Format earlier) { return layoutOf(earlier).size == other_size; });
+    if (other_size == message_size_ || size_tried)
     {
+      continue;
+    }
+    const std::uint8_t* first = datagrams ? bytes : opening_.data();
+    const std::size_t needed = datagrams ? other_size : 2 * other_size;
+    if (datagrams ? size != other_size : opening_size_ < needed)
+    {
+      continue;
+    }
+    bool understood = true;
+    for (std::size_t at = 0; at < needed && understood; at += other_size)
+    {
+      Message probe;
+      understood =
+          Message::unpack(first + at, other_size, Wire{ other, ChecksumRule::REQUIRED }, probe) == UnpackError::NONE;
+    }
+    if (understood)
+    {
+      session_.failStartup(formatText("DigiView speaks format %s (%zu-byte messages), but format is set to \"%s\" "
+                                      "(%zu-byte messages)",
+                                      formatsOfSize(other_size).c_str(), other_size, toString(settings_.wire.format),
+                                      message_size_));
       return;
     }
   }
-  session_.failStartup(formatText("DigiView speaks format %s (%zu-byte messages), but format is set to \"%s\" "
-                                  "(%zu-byte messages)",
-                                  toString(other), other_size, toString(settings_.wire.format), message_size_));
 }
 
 void DigiViewProtocol::handleState(const Message& message)

@@ -343,6 +343,8 @@ std::vector<FixtureMaker> networkDeviceFixtures()
     { "DigiViewUdpV0_5", [] { return std::make_unique<DigiViewFixture>(LinkKind::UDP, digiview::Format::V0_5); } },
     { "DigiViewTcpV1_0", [] { return std::make_unique<DigiViewFixture>(LinkKind::TCP, digiview::Format::V1_0); } },
     { "DigiViewUdpV1_0", [] { return std::make_unique<DigiViewFixture>(LinkKind::UDP, digiview::Format::V1_0); } },
+    { "DigiViewTcpV1_1", [] { return std::make_unique<DigiViewFixture>(LinkKind::TCP, digiview::Format::V1_1); } },
+    { "DigiViewUdpV1_1", [] { return std::make_unique<DigiViewFixture>(LinkKind::UDP, digiview::Format::V1_1); } },
   };
 }
 

@@ -1,37 +1,41 @@
 /**
  * \file
- * \brief DigiView (Synclair Vision) message definitions in the two wire formats in the field: "0.5" (80-byte
- * messages, the seed's tables) and "1.0" (88-byte messages, the newest published msg_defs.hpp).
+ * \brief DigiView (Synclair Vision) message definitions in the wire formats in the field: "0.5" (80-byte messages, the
+ * seed's tables; msg_defs.hpp 72c80d2), "1.0" (88-byte messages; msg_defs.hpp 835b28e, 2026-01-26) and "1.1" (1.0
+ * with detection_id at the end of CAM_TARGETING; msg_defs.hpp 305a8ab, 2026-03-24, the first with a checksum helper).
  *
  * A message is the published `struct message` as x86-64 lays it out and `memcpy`s it: little-endian, natural padding.
  *
- * | field                          | 0.5    | 1.0    |
- * |--------------------------------|--------|--------|
- * | timestamp uint64               | 0..7   | 0..7   |
- * | version uint8 (0 in both)      | 8      | 8      |
- * | message_type uint8             | 9      | 9      |
- * | param_type uint8               | 10     | 10     |
- * | padding                        | -      | 11     |
- * | interval_ms uint32             | -      | 12..15 |
- * | data[64]                       | 11..74 | 16..79 |
- * | checksum uint8                 | 75     | 80     |
- * | padding                        | 76..79 | 81..87 |
+ * | field                          | 0.5    | 1.0, 1.1 |
+ * |--------------------------------|--------|----------|
+ * | timestamp uint64               | 0..7   | 0..7     |
+ * | version uint8 (0 in all)       | 8      | 8        |
+ * | message_type uint8             | 9      | 9        |
+ * | param_type uint8               | 10     | 10       |
+ * | padding                        | -      | 11       |
+ * | interval_ms uint32             | -      | 12..15   |
+ * | data[64]                       | 11..74 | 16..79   |
+ * | checksum uint8                 | 75     | 80       |
+ * | padding                        | 76..79 | 81..87   |
  *
- * MessageType holds the seed's values, which are format 0.5's on the wire. Format 1.0 has no GET_INTERVAL and
- * numbers the replies one lower: ACKNOWLEDGEMENT 4, CHECKSUM_ERROR 5, DATA_ERROR 6, FORBIDDEN 7, UNKNOWN 8. The
- * version byte is 0 in both, so nothing in a message names its format: sender and receiver are configured with one.
+ * MessageType holds the seed's values, which are format 0.5's on the wire. Formats 1.0 and 1.1 have no GET_INTERVAL
+ * and number the replies one lower: ACKNOWLEDGEMENT 4, CHECKSUM_ERROR 5, DATA_ERROR 6, FORBIDDEN 7, UNKNOWN 8. The
+ * version byte is 0 in all, so nothing in a message names its format: sender and receiver are configured with one.
+ * 1.0 and 1.1 differ only in CAM_TARGETING's detection_id (int16 @40 of data in 1.1, where 1.0 leaves zeros), so a
+ * message of one reads as the other (detection_id aside).
  *
  * Where the published code is silent, this library decides (the README says the same):
- * - Checksum: CRC-8/BLUETOOTH over bytes [0, offsetof(checksum)), i.e. 0..74 (0.5) and 0..79 (1.0), the rule of
- *   the first published helper that fills it. Every message packed here carries it. The published helpers of both
- *   formats never fill it, so a receiver can be told that its peer does not (ChecksumRule::ZERO_ACCEPTED): a
- *   message whose checksum byte is 0 is then accepted unverified, and unpack() says so; any other byte must verify.
+ * - Checksum: CRC-8/BLUETOOTH over bytes [0, offsetof(checksum)), i.e. 0..74 (0.5) and 0..79 (1.0, 1.1), the rule of
+ *   the first published helper that fills it (1.1's add_checksum_for_digiview_message). Every message packed here
+ *   carries it. The published helpers of 0.5 and 1.0 never fill it, so a receiver can be told that its peer does not
+ *   (ChecksumRule::ZERO_ACCEPTED): a message whose checksum byte is 0 is then accepted unverified, and unpack() says
+ *   so; any other byte must verify.
  * - Padding bytes and data bytes a payload does not use are zero when packed and ignored when unpacked.
  * - Subscriptions: in 0.5, GET_INTERVAL carries the GET's request data (stream_name @0, cam_id @8) and the interval in
- *   milliseconds as uint32 @12 of data (the published 0.5 code defines no field for it). In 1.0, a GET_PARAMETERS
- *   with interval_ms set in the header subscribes, as the published 1.0 helpers intend. In both, 100 ms
- *   (MIN_INTERVAL_MS) or more subscribes, 0 cancels, anything between is ignored (the whole request). A 1.0 GET that
- *   is not ignored is answered at once; a 0.5 GET_INTERVAL only by its reports.
+ *   milliseconds as uint32 @12 of data (the published 0.5 code defines no field for it). In 1.0 and 1.1, a
+ *   GET_PARAMETERS with interval_ms set in the header subscribes, as the published helpers intend. In all, 100 ms
+ *   (MIN_INTERVAL_MS) or more subscribes, 0 cancels, anything between is ignored (the whole request). A 1.0 or 1.1 GET
+ *   that is not ignored is answered at once; a 0.5 GET_INTERVAL only by its reports.
  * - Replies: CURRENT_PARAMETERS carries the parameter's payload as its request's packer lays it out, interval_ms 0;
  *   ACKNOWLEDGEMENT and the error replies carry the request's param_type and no data (nothing published defines more).
  * - Scaled fields are packed as the published packers do: the value as a float, times 1000 (angles in milliradians,
@@ -42,7 +46,8 @@
  *   lock_flags @23, x_offset int16 @24, y_offset @26; then in 0.5 what its packer writes, latitude @28 and again
  *   @32, longitude @36, altitude @40 (44 bytes: what every 0.5 sender sends; the published 0.5 unpacker reads
  *   longitude @32 and altitude @36 instead, which its own packer never wrote); in 1.0 latitude @28, longitude @32,
- *   altitude @36 (40 bytes).
+ *   altitude @36 (40 bytes); 1.1 as 1.0, then detection_id int16 @40 (42 bytes; int16 and -1 for "no detection"
+ *   as the repository's message-definitions.md documents the field).
  * - SYSTEM_STATUS: status @0, error @1, jetson_temp int32 (x 1000) @2. The first 0.5 revision sent no temperature:
  *   its zero bytes read as 0 degrees.
  * - VIDEO_OUTPUT: stream_name @0, width uint16 @8, height @10, fps @12, layout_mode @13, detection_overlay_mode @14,
@@ -69,14 +74,17 @@ constexpr std::uint8_t VERSION = 0;
 constexpr std::size_t NAME_SIZE = 8;
 constexpr std::uint32_t MIN_INTERVAL_MS = 100;
 
-/// The wire formats in the field.
+/// The wire formats in the field, each a published revision of msg_defs.hpp (SynclairVision/message-definitions).
 enum class Format : std::uint8_t
 {
-  V0_5,  ///< "0.5": 80-byte messages, the seed's tables
-  V1_0,  ///< "1.0": 88-byte messages, interval_ms in the header, no GET_INTERVAL, replies renumbered
+  V0_5,  ///< "0.5": 80-byte messages, the seed's tables (72c80d2, 2025-10-17)
+  V1_0,  ///< "1.0": 88-byte messages, interval_ms in the header, no GET_INTERVAL, replies renumbered (835b28e)
+  V1_1,  ///< "1.1": 1.0 with detection_id appended to CAM_TARGETING, and a checksum helper (305a8ab, 2026-03-24)
 };
-const char* toString(Format format);  ///< "0.5", "1.0"
-/// "0.5" or "1.0" into \p format; false for anything else.
+/// Every format, oldest first.
+inline constexpr Format FORMATS[] = { Format::V0_5, Format::V1_0, Format::V1_1 };
+const char* toString(Format format);  ///< "0.5", "1.0", "1.1"
+/// "0.5", "1.0" or "1.1" into \p format; false for anything else.
 bool parseFormat(const std::string& text, Format& format);
 
 /// Where a format puts the parts of a message (offsets in bytes).
@@ -85,9 +93,14 @@ struct Layout
   std::size_t size;
   std::size_t data_offset;
   std::size_t checksum_offset;  ///< also the number of bytes the checksum covers
-  std::size_t interval_offset;  ///< 0: the format has no interval_ms
+  std::size_t interval_offset;  ///< 0: the format has no interval_ms (and has GET_INTERVAL instead)
 };
 Layout layoutOf(Format format);
+/// A subscription is a GET_PARAMETERS with interval_ms in the header (1.0, 1.1), not a GET_INTERVAL (0.5).
+inline bool subscribesWithGet(Format format)
+{
+  return layoutOf(format).interval_offset != 0;
+}
 
 /// What a receiver takes for a checksum.
 enum class ChecksumRule : std::uint8_t
@@ -138,7 +151,7 @@ enum class ParamType : std::uint8_t
   SINGLE_TARGET_TRACKING = 12,
 };
 
-/// The byte \p type is in \p format; false for GET_INTERVAL in 1.0, which has none.
+/// The byte \p type is in \p format; false for GET_INTERVAL in 1.0 and 1.1, which have none.
 bool toWire(Format format, MessageType type, std::uint8_t& wire);
 /// The message type the byte \p wire is in \p format; false if it is none.
 bool fromWire(Format format, std::uint8_t wire, MessageType& type);
@@ -175,11 +188,11 @@ struct Message
   std::uint8_t version = VERSION;
   MessageType message_type = MessageType::EMPTY;
   ParamType param_type = ParamType::SYSTEM_STATUS;
-  std::uint32_t interval_ms = 0;  ///< 1.0 only: a GET with it subscribes (0.5 has no such field)
+  std::uint32_t interval_ms = 0;  ///< 1.0, 1.1: a GET with it subscribes (0.5 has no such field)
   std::array<std::uint8_t, DATA_SIZE> data{};
 
   /// The message in its format, with its checksum, padding zero. Throws std::invalid_argument for what the format
-  /// cannot carry (GET_INTERVAL in 1.0, an interval_ms in 0.5).
+  /// cannot carry (GET_INTERVAL in 1.0 and 1.1, an interval_ms in 0.5).
   Bytes pack() const;
   /// Checks size, checksum (by \p wire's rule), version and types; never reads outside [bytes, bytes + size).
   /// \p unverified (if given) tells whether a checksum byte of 0 was accepted without verifying.
@@ -205,9 +218,10 @@ struct CamTargeting
   std::uint8_t lock_flags = 0;  ///< 3 LSB: yaw, pitch, roll locked
   double x_offset = 0.0;        ///< [-1, 1] of the view
   double y_offset = 0.0;
-  double target_latitude = 0.0;   ///< deg
-  double target_longitude = 0.0;  ///< deg
-  double target_altitude = 0.0;   ///< m, relative to the system
+  double target_latitude = 0.0;    ///< deg
+  double target_longitude = 0.0;   ///< deg
+  double target_altitude = 0.0;    ///< m, relative to the system
+  std::int16_t detection_id = -1;  ///< 1.1 only: the detection to aim at in detection mode; -1: none
 };
 
 struct CamOpticsAndControl
@@ -262,7 +276,7 @@ Message packSystemStatus(Format format, MessageType type, const SystemStatus& st
 Message packVideoOutput(Format format, MessageType type, const VideoOutput& output);
 /// A GET_PARAMETERS request for \p param about \p camera (stream_name @0, cam_id @8).
 Message packGet(Format format, ParamType param, const CameraId& camera);
-/// 0.5: a GET_INTERVAL (interval @12 of data); 1.0: a GET_PARAMETERS with interval_ms.
+/// 0.5: a GET_INTERVAL (interval @12 of data); 1.0, 1.1: a GET_PARAMETERS with interval_ms.
 Message packInterval(Format format, const IntervalRequest& request);
 /// A message without payload (ACKNOWLEDGEMENT, an error, QUIT) about \p param.
 Message packBare(Format format, MessageType type, ParamType param);
@@ -273,7 +287,7 @@ UnpackError unpackOptics(const Message& message, CamOpticsAndControl& optics);
 UnpackError unpackSystemStatus(const Message& message, SystemStatus& status);
 UnpackError unpackVideoOutput(const Message& message, VideoOutput& output);
 UnpackError unpackCamera(const Message& message, CameraId& camera);
-/// A 0.5 GET_INTERVAL, or a 1.0 GET_PARAMETERS (whose interval_ms may be 0: a plain GET).
+/// A 0.5 GET_INTERVAL, or a 1.0 / 1.1 GET_PARAMETERS (whose interval_ms may be 0: a plain GET).
 UnpackError unpackInterval(const Message& message, IntervalRequest& request);
 
 }  // namespace digiview

@@ -70,9 +70,10 @@ struct DigiViewCounters
  * clockwise from north and its pitch positive up, the same signs as the contract) and SET CAM_OPTICS_AND_CONTROL
  * (fov = fov_wide / zoom). DigiView has no velocity command: a velocity goal is a target moved every
  * velocity_period. State comes from subscriptions (100 ms) to CAM_TARGETING and CAM_OPTICS_AND_CONTROL: GET_INTERVAL
- * in format 0.5, a GET with interval_ms in 1.0. Both formats are cut from a TCP stream by their own size. A SET that
- * DigiView refuses is a device fault with DigiView's reason. After a loss the
- * view is held where it is; at shutdown the subscriptions are cancelled and QUIT is sent.
+ * in format 0.5, a GET with interval_ms in 1.0 and 1.1 (whose CAM_TARGETING carries detection_id -1: no detection).
+ * Every format is cut from a TCP stream by its own size. A SET that DigiView refuses is a device fault with
+ * DigiView's reason. After a loss the view is held where it is; at shutdown the subscriptions are cancelled and QUIT
+ * is sent.
  */
 class DigiViewProtocol : public DeviceProtocol
 {
@@ -89,7 +90,7 @@ public:
   /// GET VIDEO_OUTPUT (the number of views), SYSTEM_STATUS, and the view's state, then every 100 ms.
   void onConnected() override;
   /// Messages of the configured format's size: cut from the stream on TCP, one per datagram on UDP. When nothing
-  /// unpacked yet and the first message is one of the other format, start() fails saying so.
+  /// unpacked yet and the first messages are of a format of another size, start() fails saying so.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   void onDisconnected() override;
   /// Subscribes again after three missed states (over UDP nothing else tells that DigiView restarted), and asks
@@ -128,7 +129,7 @@ private:
   /// Describe the stream, report the view every 100 ms.
   void subscribe();
   void handle(const std::uint8_t* bytes, std::size_t size);
-  /// Nothing unpacked on this connection: if what came is the other format's, start() fails saying so.
+  /// Nothing unpacked on this connection: if what came is of a format of another size, start() fails saying so.
   void checkOtherFormat(const std::uint8_t* bytes, std::size_t size);
   void handleState(const digiview::Message& message);
   void handleAnswer(const digiview::Message& message);
