@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "ptz_action_server/core/units.h"
 
@@ -17,12 +19,21 @@ constexpr double UDP_TICK = 0.01;  ///< s: the longest the UDP thread waits befo
 constexpr float UNCHANGED = -1.0f;
 constexpr float MANAGER_ITSELF = -2.0f;
 constexpr float RELEASE = -3.0f;
-/// GIMBAL_MANAGER_CAP_FLAGS of a two-axis gimbal: HAS_PITCH_AXIS | HAS_PITCH_FOLLOW | HAS_PITCH_LOCK |
-/// HAS_YAW_AXIS | HAS_YAW_FOLLOW | HAS_YAW_LOCK.
-constexpr std::uint32_t CAPABILITIES = 0x10 | 0x20 | 0x40 | 0x80 | 0x100 | 0x200;
+/// GIMBAL_MANAGER_CAP_FLAGS of a two-axis gimbal that goes to neutral, follows or locks pitch and yaw.
+constexpr std::uint32_t CAPABILITIES =
+    gimbal_caps::HAS_NEUTRAL | gimbal_caps::HAS_PITCH_AXIS | gimbal_caps::HAS_PITCH_FOLLOW |
+    gimbal_caps::HAS_PITCH_LOCK | gimbal_caps::HAS_YAW_AXIS | gimbal_caps::HAS_YAW_FOLLOW | gimbal_caps::HAS_YAW_LOCK;
+constexpr std::uint8_t MAV_TYPE_QUADROTOR = 2;
+constexpr std::uint8_t MAV_AUTOPILOT_PX4 = 12;
+
+std::uint32_t millisecondsOf(TimePoint at)
+{
+  return static_cast<std::uint32_t>(
+      std::chrono::duration_cast<std::chrono::milliseconds>(at.time_since_epoch()).count());
+}
 }  // namespace
 
-SimDeviceConfig MavlinkGimbalEmulatorConfig::defaultDevice()
+SimDeviceConfig defaultMavlinkGimbalDevice()
 {
   SimDeviceConfig device = SimDeviceConfig::defaults();
   device.axes[TILT].range = AxisRange{ -M_PI / 2.0, M_PI / 4.0 };
@@ -33,13 +44,105 @@ SimDeviceConfig MavlinkGimbalEmulatorConfig::defaultDevice()
   return device;
 }
 
+/// One gimbal and its manager's state for it.
+struct MavlinkGimbalEmulator::Gimbal
+{
+  Gimbal(const MavlinkEmulatedGimbal& config, std::uint8_t manager, double attitude_interval, TimePoint now)
+    : device_id(config.device_id)
+    , manager(manager)
+    , device(config.device)
+    , model(config.device, now)
+    , attitude_interval(attitude_interval)
+  {
+  }
+  /// A MAVLink gimbal device of its own (not inside its manager's component).
+  bool separate() const
+  {
+    return !isInternalGimbalId(device_id);
+  }
+  /// The component that sends its attitude.
+  std::uint8_t attitudeComponent() const
+  {
+    return separate() ? device_id : manager;
+  }
+
+  const std::uint8_t device_id;
+  const std::uint8_t manager;
+  const SimDeviceConfig device;
+  SimDeviceModel model;
+  std::uint8_t primary_system = 0;
+  std::uint8_t primary_component = 0;
+  bool control_kept = false;  ///< another controller holds control and refuses to give it up
+  double attitude_interval;
+  TimePoint attitude_at{};
+  bool rates_active = false;
+  TimePoint rates_until{};
+};
+
 MavlinkGimbalEmulator::MavlinkGimbalEmulator(const MavlinkGimbalEmulatorConfig& config,
                                              std::shared_ptr<const Clock> clock)
-  : config_(config)
-  , clock_(std::move(clock))
-  , model_(config.device, clock_->now())
-  , attitude_interval_(config.attitude_interval)
+  : config_(config), clock_(std::move(clock))
 {
+  if (config_.gimbals.empty())
+  {
+    throw std::invalid_argument("a MAVLink gimbal emulator needs at least one gimbal");
+  }
+  const TimePoint now = clock_->now();
+  for (const MavlinkEmulatedGimbal& gimbal : config_.gimbals)
+  {
+    const std::uint8_t manager = gimbal.manager_component != 0 ? gimbal.manager_component : config_.component_id;
+    const std::string name = "gimbal_device_id " + std::to_string(gimbal.device_id);
+    if (manager == 0)
+    {
+      throw std::invalid_argument(name + ": its manager needs a component id (1..255)");
+    }
+    if (gimbal.device_id == 0)
+    {
+      throw std::invalid_argument("gimbal_device_id 0 means \"every gimbal\" in commands: a gimbal's id is 1..6 "
+                                  "(inside "
+                                  "its manager's component) or its own component id");
+    }
+    if (!isInternalGimbalId(gimbal.device_id) && gimbal.device_id == manager)
+    {
+      throw std::invalid_argument(name + " is its manager's own component: a gimbal inside its manager's component "
+                                         "takes a gimbal_device_id 1..6 (a gimbal device of its own, another "
+                                         "component id)");
+    }
+    for (const auto& other : gimbals_)
+    {
+      if (other->manager == manager && other->device_id == gimbal.device_id)
+      {
+        throw std::invalid_argument(name + " twice in the gimbal manager at component " + std::to_string(manager));
+      }
+      if (other->separate() && other->device_id == gimbal.device_id)
+      {
+        throw std::invalid_argument(name + ": the gimbal device at component " + std::to_string(gimbal.device_id) +
+                                    " is there already");
+      }
+    }
+    gimbals_.push_back(std::make_unique<Gimbal>(gimbal, manager, config_.attitude_interval, now));
+    counters_.executed_per_gimbal.push_back(0);
+  }
+  for (const auto& gimbal : gimbals_)
+  {
+    if (std::find(components_.begin(), components_.end(), gimbal->manager) == components_.end())
+    {
+      components_.push_back(gimbal->manager);
+    }
+  }
+  for (const auto& gimbal : gimbals_)
+  {
+    if (gimbal->separate())
+    {
+      if (std::find(components_.begin(), components_.end(), gimbal->device_id) != components_.end())
+      {
+        throw std::invalid_argument("component " + std::to_string(gimbal->device_id) +
+                                    " cannot be a gimbal manager and a gimbal device beside it");
+      }
+      components_.push_back(gimbal->device_id);
+    }
+  }
+
   if (config_.transport == LinkKind::UDP)
   {
     udp_.bind(config_.host, config_.port);
@@ -81,6 +184,16 @@ std::string MavlinkGimbalEmulator::path() const
   return line_ ? line_->path() : std::string();
 }
 
+MavlinkGimbalEmulator::Gimbal& MavlinkGimbalEmulator::at(std::size_t index) const
+{
+  if (index >= gimbals_.size())
+  {
+    throw std::out_of_range("the emulator has " + std::to_string(gimbals_.size()) + " gimbals, not " +
+                            std::to_string(index + 1));
+  }
+  return *gimbals_[index];
+}
+
 void MavlinkGimbalEmulator::setSilent(bool silent)
 {
   silent_ = silent;
@@ -95,27 +208,30 @@ void MavlinkGimbalEmulator::setRefuse(bool refuse)
   refuse_ = refuse;
 }
 
-void MavlinkGimbalEmulator::setFaults(const SimFaults& faults)
+void MavlinkGimbalEmulator::setFaults(const SimFaults& faults, std::size_t gimbal)
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  model_.setFaults(faults, clock_->now());
+  at(gimbal).model.setFaults(faults, clock_->now());
 }
 
-void MavlinkGimbalEmulator::giveControlTo(std::uint8_t system_id, std::uint8_t component_id)
+void MavlinkGimbalEmulator::giveControlTo(std::uint8_t system_id, std::uint8_t component_id, bool keep,
+                                          std::size_t gimbal)
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  primary_system_ = system_id;
-  primary_component_ = component_id;
-  control_kept_ = true;
-  sendStatus();
+  Gimbal& taken = at(gimbal);
+  taken.primary_system = system_id;
+  taken.primary_component = component_id;
+  taken.control_kept = keep;
+  sendStatus(taken);
 }
 
-void MavlinkGimbalEmulator::releaseControl()
+void MavlinkGimbalEmulator::releaseControl(std::size_t gimbal)
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  primary_system_ = primary_component_ = 0;
-  control_kept_ = false;
-  sendStatus();
+  Gimbal& released = at(gimbal);
+  released.primary_system = released.primary_component = 0;
+  released.control_kept = false;
+  sendStatus(released);
 }
 
 void MavlinkGimbalEmulator::unplug()
@@ -134,16 +250,17 @@ void MavlinkGimbalEmulator::replug()
   }
 }
 
-std::pair<std::uint8_t, std::uint8_t> MavlinkGimbalEmulator::primaryController() const
+std::pair<std::uint8_t, std::uint8_t> MavlinkGimbalEmulator::primaryController(std::size_t gimbal) const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  return { primary_system_, primary_component_ };
+  const Gimbal& asked = at(gimbal);
+  return { asked.primary_system, asked.primary_component };
 }
 
-PtzSample MavlinkGimbalEmulator::gimbal() const
+PtzSample MavlinkGimbalEmulator::gimbal(std::size_t gimbal) const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  return model_.sample(clock_->now());
+  return at(gimbal).model.sample(clock_->now());
 }
 
 MavlinkGimbalEmulatorCounters MavlinkGimbalEmulator::counters() const
@@ -197,14 +314,14 @@ void MavlinkGimbalEmulator::receive(const std::uint8_t* data, std::size_t size)
 }
 
 template <class Message>
-void MavlinkGimbalEmulator::send(const Message& message)
+void MavlinkGimbalEmulator::send(std::uint8_t component, const Message& message)
 {
   // With mutex_ held.
   if (silent_)
   {
     return;
   }
-  const EncodedFrame frame = encode(FrameHeader{ sequence_++, config_.system_id, config_.component_id }, message);
+  const EncodedFrame frame = encode(FrameHeader{ sequence_++, config_.system_id, component }, message);
   if (line_)
   {
     line_->send(frame.data(), frame.size);
@@ -219,62 +336,76 @@ void MavlinkGimbalEmulator::tick()
 {
   const TimePoint now = clock_->now();
   std::lock_guard<std::mutex> lock(mutex_);
-  if (rates_active_ && now >= rates_until_)
+  for (const auto& gimbal : gimbals_)
   {
-    rates_active_ = false;
-    ++counters_.rate_timeouts;
-    model_.stop(now);
+    if (gimbal->rates_active && now >= gimbal->rates_until)
+    {
+      gimbal->rates_active = false;
+      ++counters_.rate_timeouts;
+      gimbal->model.stop(now);
+    }
   }
   if (secondsBetween(heartbeat_at_, now) >= config_.heartbeat_period)
   {
     heartbeat_at_ = now;
-    Heartbeat heartbeat;
-    const bool autopilot = config_.component_id == MAV_COMP_ID_AUTOPILOT1;
-    heartbeat.type = autopilot ? 2 : MAV_TYPE_GIMBAL;              // 2: a quadrotor
-    heartbeat.autopilot = autopilot ? 12 : MAV_AUTOPILOT_INVALID;  // 12: PX4
-    send(heartbeat);
+    for (std::uint8_t component : components_)
+    {
+      Heartbeat heartbeat;
+      const bool autopilot = component == MAV_COMP_ID_AUTOPILOT1;
+      heartbeat.type = autopilot ? MAV_TYPE_QUADROTOR : MAV_TYPE_GIMBAL;
+      heartbeat.autopilot = autopilot ? MAV_AUTOPILOT_PX4 : MAV_AUTOPILOT_INVALID;
+      send(component, heartbeat);
+    }
   }
   if (secondsBetween(status_at_, now) >= config_.status_period)
   {
-    sendStatus();
+    status_at_ = now;
+    for (const auto& gimbal : gimbals_)
+    {
+      sendStatus(*gimbal);
+    }
   }
-  if (attitude_interval_ > 0.0 && secondsBetween(attitude_at_, now) >= attitude_interval_)
+  for (const auto& gimbal : gimbals_)
   {
-    sendAttitude(now);
+    if (gimbal->attitude_interval > 0.0 && secondsBetween(gimbal->attitude_at, now) >= gimbal->attitude_interval)
+    {
+      sendAttitude(*gimbal, now);
+    }
   }
 }
 
-// ---------------------------------------------------------------- what the manager sends
+// ---------------------------------------------------------------- what the components send
 
-void MavlinkGimbalEmulator::sendStatus()
+void MavlinkGimbalEmulator::sendStatus(const Gimbal& gimbal)
 {
-  status_at_ = clock_->now();
   GimbalManagerStatus status;
-  status.time_boot_ms = static_cast<std::uint32_t>(
-      std::chrono::duration_cast<std::chrono::milliseconds>(status_at_.time_since_epoch()).count());
-  status.gimbal_device_id = config_.gimbal_device_id;
-  status.primary_control_sysid = primary_system_;
-  status.primary_control_compid = primary_component_;
-  send(status);
+  status.time_boot_ms = millisecondsOf(clock_->now());
+  status.gimbal_device_id = gimbal.device_id;
+  status.primary_control_sysid = gimbal.primary_system;
+  status.primary_control_compid = gimbal.primary_component;
+  send(gimbal.manager, status);
 }
 
-void MavlinkGimbalEmulator::sendInformation()
+void MavlinkGimbalEmulator::sendInformation(const Gimbal& gimbal)
 {
   GimbalManagerInformation information;
+  information.time_boot_ms = millisecondsOf(clock_->now());
   information.cap_flags = CAPABILITIES;
-  information.pitch_min = static_cast<float>(config_.device.axes[TILT].range.min);
-  information.pitch_max = static_cast<float>(config_.device.axes[TILT].range.max);
-  information.yaw_min = static_cast<float>(config_.device.axes[PAN].range.min);
-  information.yaw_max = static_cast<float>(config_.device.axes[PAN].range.max);
-  information.gimbal_device_id = config_.gimbal_device_id;
-  send(information);
+  information.roll_min = information.roll_max = 0.0f;  // no roll axis
+  information.pitch_min = static_cast<float>(gimbal.device.axes[TILT].range.min);
+  information.pitch_max = static_cast<float>(gimbal.device.axes[TILT].range.max);
+  information.yaw_min = static_cast<float>(gimbal.device.axes[PAN].range.min);
+  information.yaw_max = static_cast<float>(gimbal.device.axes[PAN].range.max);
+  information.gimbal_device_id = gimbal.device_id;
+  send(gimbal.manager, information);
 }
 
-void MavlinkGimbalEmulator::sendAttitude(TimePoint now)
+void MavlinkGimbalEmulator::sendAttitude(Gimbal& gimbal, TimePoint now)
 {
-  attitude_at_ = now;
-  const PtzSample state = model_.sample(now);
+  gimbal.attitude_at = now;
+  const PtzSample state = gimbal.model.sample(now);
   GimbalDeviceAttitudeStatus attitude;
+  attitude.time_boot_ms = millisecondsOf(now);
   const double yaw = state.position[PAN] + (config_.report_earth_frame ? config_.vehicle_yaw : 0.0);
   attitude.q = quaternionFromPanTilt(yaw, state.position[TILT]);
   attitude.angular_velocity_x = 0.0f;
@@ -283,94 +414,176 @@ void MavlinkGimbalEmulator::sendAttitude(TimePoint now)
   attitude.flags = static_cast<std::uint16_t>(config_.report_earth_frame ? gimbal_flags::YAW_IN_EARTH_FRAME :
                                                                            gimbal_flags::YAW_IN_VEHICLE_FRAME);
   attitude.delta_yaw = static_cast<float>(config_.vehicle_yaw);
-  attitude.gimbal_device_id = config_.gimbal_device_id;
-  send(attitude);
+  // 1..6 when the manager's component sends it for a gimbal inside it; 0 from a gimbal device's own component.
+  attitude.gimbal_device_id = gimbal.separate() ? 0 : gimbal.device_id;
+  send(gimbal.attitudeComponent(), attitude);
 }
 
-// ---------------------------------------------------------------- what the manager receives
+// ---------------------------------------------------------------- what the components receive
 
-bool MavlinkGimbalEmulator::fromPrimary(const Frame& frame) const
+bool MavlinkGimbalEmulator::fromPrimary(const Gimbal& gimbal, const Frame& frame) const
 {
-  return frame.header.system_id == primary_system_ && frame.header.component_id == primary_component_;
+  return frame.header.system_id == gimbal.primary_system && frame.header.component_id == gimbal.primary_component;
+}
+
+std::vector<MavlinkGimbalEmulator::Gimbal*> MavlinkGimbalEmulator::addressed(std::uint8_t component,
+                                                                             std::uint8_t gimbal_device_id)
+{
+  std::vector<Gimbal*> found;
+  for (const auto& gimbal : gimbals_)
+  {
+    if (gimbal->manager == component && (gimbal_device_id == 0 || gimbal->device_id == gimbal_device_id))
+    {
+      found.push_back(gimbal.get());
+    }
+  }
+  return found;
 }
 
 void MavlinkGimbalEmulator::handle(const Frame& frame, TimePoint now)
 {
-  if (frame.message_id == message_id::COMMAND_LONG)
+  switch (frame.message_id)
   {
-    const CommandLong command = decode<CommandLong>(frame);
-    if ((command.target_system == config_.system_id || command.target_system == 0) &&
-        (command.target_component == config_.component_id || command.target_component == 0))
-    {
-      handleCommand(frame, command, now);
-    }
-  }
-  else if (frame.message_id == message_id::GIMBAL_MANAGER_SET_PITCHYAW)
-  {
-    const GimbalManagerSetPitchYaw setpoint = decode<GimbalManagerSetPitchYaw>(frame);
-    if (setpoint.target_system != config_.system_id || setpoint.target_component != config_.component_id ||
-        (setpoint.gimbal_device_id != 0 && setpoint.gimbal_device_id != config_.gimbal_device_id))
-    {
+    case message_id::COMMAND_LONG: {
+      const CommandLong command = decode<CommandLong>(frame);
+      if (command.target_system != config_.system_id && command.target_system != 0)
+      {
+        return;
+      }
+      for (std::uint8_t component : components_)
+      {
+        if (command.target_component == component || command.target_component == 0)
+        {
+          handleCommand(component, frame, command, now);
+        }
+      }
       return;
     }
-    if (!fromPrimary(frame))
-    {
-      ++counters_.setpoints_ignored;  // as PX4 does: no answer to a message from a non-primary sender
+    case message_id::GIMBAL_MANAGER_SET_PITCHYAW: {
+      const GimbalManagerSetPitchYaw message = decode<GimbalManagerSetPitchYaw>(frame);
+      if (message.target_system == config_.system_id)
+      {
+        for (Gimbal* gimbal : addressed(message.target_component, message.gimbal_device_id))
+        {
+          setpoint(*gimbal, frame, message.flags, message.pitch, message.yaw, message.pitch_rate, message.yaw_rate,
+                   now);
+        }
+      }
       return;
     }
-    setPitchYaw(setpoint, now);
+    case message_id::GIMBAL_MANAGER_SET_ATTITUDE: {
+      const GimbalManagerSetAttitude message = decode<GimbalManagerSetAttitude>(frame);
+      if (message.target_system != config_.system_id)
+      {
+        return;
+      }
+      // The quaternion, all NaN when only rates are set; x (roll) is not modelled: a two-axis gimbal.
+      float pitch = UNSET, yaw = UNSET;
+      if (std::all_of(message.q.begin(), message.q.end(), [](float value) { return std::isfinite(value); }))
+      {
+        const PanTilt angles = panTiltFromQuaternion(message.q);
+        pitch = static_cast<float>(angles.tilt);
+        yaw = static_cast<float>(angles.pan);
+      }
+      for (Gimbal* gimbal : addressed(message.target_component, message.gimbal_device_id))
+      {
+        setpoint(*gimbal, frame, message.flags, pitch, yaw, message.angular_velocity_y, message.angular_velocity_z,
+                 now);
+      }
+      return;
+    }
+    default:
+      return;
   }
 }
 
-void MavlinkGimbalEmulator::handleCommand(const Frame& frame, const CommandLong& command, TimePoint now)
+void MavlinkGimbalEmulator::handleCommand(std::uint8_t component, const Frame& frame, const CommandLong& command,
+                                          TimePoint now)
 {
   CommandAck ack;
   ack.command = command.command;
   ack.target_system = frame.header.system_id;
   ack.target_component = frame.header.component_id;
   ack.result = Result::ACCEPTED;
-  bool answer_information = false;
-  bool answer_status = false;
+  const std::vector<Gimbal*> managed = addressed(component, 0);
+  const bool manager = !managed.empty();
+  std::vector<const Gimbal*> informed, reported;  // answered with their information, their status
   switch (command.command)
   {
     case command_id::REQUEST_MESSAGE:
-      answer_information = command.params[0] == static_cast<float>(message_id::GIMBAL_MANAGER_INFORMATION);
-      answer_status = command.params[0] == static_cast<float>(message_id::GIMBAL_MANAGER_STATUS);
-      ack.result = answer_information || answer_status ? Result::ACCEPTED : Result::UNSUPPORTED;
-      break;
-    case command_id::SET_MESSAGE_INTERVAL:
-      if (command.params[0] == static_cast<float>(message_id::GIMBAL_DEVICE_ATTITUDE_STATUS))
+      if (manager && command.params[0] == static_cast<float>(message_id::GIMBAL_MANAGER_INFORMATION))
       {
-        const float interval_us = command.params[1];
-        attitude_interval_ = interval_us < 0.0f  ? 0.0 :
-                             interval_us == 0.0f ? config_.attitude_interval :
-                                                   interval_us / 1e6;
+        informed.assign(managed.begin(), managed.end());
+      }
+      else if (manager && command.params[0] == static_cast<float>(message_id::GIMBAL_MANAGER_STATUS))
+      {
+        reported.assign(managed.begin(), managed.end());
       }
       else
+      {
+        ack.result = Result::UNSUPPORTED;  // a gimbal device is no manager; other messages are not modelled
+      }
+      break;
+    case command_id::SET_MESSAGE_INTERVAL: {
+      ack.result = Result::UNSUPPORTED;
+      if (command.params[0] != static_cast<float>(message_id::GIMBAL_DEVICE_ATTITUDE_STATUS))
+      {
+        break;
+      }
+      const float interval_us = command.params[1];
+      for (const auto& gimbal : gimbals_)
+      {
+        if (gimbal->attitudeComponent() == component)  // the attitudes this component sends
+        {
+          gimbal->attitude_interval = interval_us < 0.0f  ? 0.0 :
+                                      interval_us == 0.0f ? config_.attitude_interval :
+                                                            interval_us / 1e6;
+          ack.result = Result::ACCEPTED;
+        }
+      }
+      break;
+    }
+    case command_id::DO_GIMBAL_MANAGER_CONFIGURE: {
+      if (!manager)
       {
         ack.result = Result::UNSUPPORTED;
+        break;
       }
-      break;
-    case command_id::DO_GIMBAL_MANAGER_CONFIGURE:
-      ack.result = configure(frame, command);
-      answer_status = ack.result == Result::ACCEPTED;
-      break;
-    case command_id::DO_GIMBAL_MANAGER_PITCHYAW:
-      if (refuse_ || !fromPrimary(frame))
+      const std::vector<Gimbal*> targets = addressed(component, static_cast<std::uint8_t>(command.params[6]));
+      ack.result = targets.empty() ? Result::DENIED : Result::ACCEPTED;  // no such gimbal here
+      for (Gimbal* gimbal : targets)
       {
-        ack.result = Result::DENIED;
-      }
-      else
-      {
-        GimbalManagerSetPitchYaw setpoint;  // the command's degrees as the message's radians
-        setpoint.flags = static_cast<std::uint32_t>(command.params[4]);
-        setpoint.pitch = static_cast<float>(toRadians(command.params[0]));
-        setpoint.yaw = static_cast<float>(toRadians(command.params[1]));
-        setpoint.pitch_rate = static_cast<float>(toRadians(command.params[2]));
-        setpoint.yaw_rate = static_cast<float>(toRadians(command.params[3]));
-        setPitchYaw(setpoint, now);
+        if (configure(*gimbal, frame, command) != Result::ACCEPTED)
+        {
+          ack.result = Result::DENIED;
+        }
+        reported.push_back(gimbal);
       }
       break;
+    }
+    case command_id::DO_GIMBAL_MANAGER_PITCHYAW: {
+      if (!manager)
+      {
+        ack.result = Result::UNSUPPORTED;
+        break;
+      }
+      const std::vector<Gimbal*> targets = addressed(component, static_cast<std::uint8_t>(command.params[6]));
+      ack.result = targets.empty() ? Result::DENIED : Result::ACCEPTED;
+      for (Gimbal* gimbal : targets)
+      {
+        if (refuse_ || !fromPrimary(*gimbal, frame))
+        {
+          ack.result = Result::DENIED;
+          continue;
+        }
+        // The command's degrees as the message's radians.
+        execute(*gimbal, static_cast<std::uint32_t>(command.params[4]),
+                static_cast<float>(toRadians(command.params[0])), static_cast<float>(toRadians(command.params[1])),
+                static_cast<float>(toRadians(command.params[2])), static_cast<float>(toRadians(command.params[3])),
+                now);
+      }
+      break;
+    }
     default:
       ack.result = Result::UNSUPPORTED;
   }
@@ -378,18 +591,18 @@ void MavlinkGimbalEmulator::handleCommand(const Frame& frame, const CommandLong&
   {
     ++counters_.commands_denied;
   }
-  send(ack);
-  if (answer_information)
+  send(component, ack);
+  for (const Gimbal* gimbal : informed)
   {
-    sendInformation();
+    sendInformation(*gimbal);
   }
-  if (answer_status)
+  for (const Gimbal* gimbal : reported)
   {
-    sendStatus();
+    sendStatus(*gimbal);
   }
 }
 
-Result MavlinkGimbalEmulator::configure(const Frame& frame, const CommandLong& command)
+Result MavlinkGimbalEmulator::configure(Gimbal& gimbal, const Frame& frame, const CommandLong& command)
 {
   if (refuse_)
   {
@@ -401,58 +614,91 @@ Result MavlinkGimbalEmulator::configure(const Frame& frame, const CommandLong& c
   {
     return Result::ACCEPTED;
   }
-  const bool holder_keeps = control_kept_ && !fromPrimary(frame) && (primary_system_ != 0 || primary_component_ != 0);
-  if (holder_keeps)
+  const bool held = gimbal.primary_system != 0 || gimbal.primary_component != 0;
+  if (gimbal.control_kept && held && !fromPrimary(gimbal, frame))
   {
     return Result::DENIED;
   }
   if (system == RELEASE)
   {
-    primary_system_ = primary_component_ = 0;
+    if (fromPrimary(gimbal, frame))  // "remove control if currently in control"
+    {
+      gimbal.primary_system = gimbal.primary_component = 0;
+    }
+    return Result::ACCEPTED;
   }
-  else if (system == MANAGER_ITSELF)
+  if (system == MANAGER_ITSELF)
   {
-    primary_system_ = config_.system_id;
-    primary_component_ = config_.component_id;
+    gimbal.primary_system = config_.system_id;
+    gimbal.primary_component = gimbal.manager;
   }
   else if (system >= 0.0f && system <= 255.0f && component >= 0.0f && component <= 255.0f)
   {
-    primary_system_ = static_cast<std::uint8_t>(system);
-    primary_component_ = static_cast<std::uint8_t>(component);
+    gimbal.primary_system = static_cast<std::uint8_t>(system);
+    gimbal.primary_component = static_cast<std::uint8_t>(component);
   }
   else
   {
     return Result::DENIED;
   }
-  control_kept_ = false;
+  gimbal.control_kept = false;
   return Result::ACCEPTED;
 }
 
-void MavlinkGimbalEmulator::setPitchYaw(const GimbalManagerSetPitchYaw& setpoint, TimePoint now)
+void MavlinkGimbalEmulator::setpoint(Gimbal& gimbal, const Frame& frame, std::uint32_t flags, float pitch, float yaw,
+                                     float pitch_rate, float yaw_rate, TimePoint now)
+{
+  if (!fromPrimary(gimbal, frame))
+  {
+    ++counters_.setpoints_ignored;  // as PX4 does: no answer to a message from a non-primary sender
+    return;
+  }
+  execute(gimbal, flags, pitch, yaw, pitch_rate, yaw_rate, now);
+}
+
+void MavlinkGimbalEmulator::execute(Gimbal& gimbal, std::uint32_t flags, float pitch, float yaw, float pitch_rate,
+                                    float yaw_rate, TimePoint now)
 {
   ++counters_.setpoints_executed;
-  // YAW_LOCK: the yaw is relative to North; the model turns in the vehicle frame.
-  const double yaw_offset = (setpoint.flags & gimbal_flags::YAW_LOCK) != 0 ? -config_.vehicle_yaw : 0.0;
-  const bool angles = std::isfinite(setpoint.pitch) || std::isfinite(setpoint.yaw);
-  if (angles)
+  for (std::size_t index = 0; index < gimbals_.size(); ++index)
   {
-    rates_active_ = false;
-    if (std::isfinite(setpoint.yaw))
+    if (gimbals_[index].get() == &gimbal)
     {
-      model_.goToAxis(PAN, std::remainder(setpoint.yaw + yaw_offset, 2.0 * M_PI), now);
+      ++counters_.executed_per_gimbal[index];
     }
-    if (std::isfinite(setpoint.pitch))
+  }
+  if ((flags & gimbal_flags::RETRACT) != 0)
+  {
+    return;  // no retracted position (no HAS_RETRACT): stays where it is
+  }
+  if ((flags & gimbal_flags::NEUTRAL) != 0)
+  {
+    gimbal.rates_active = false;
+    gimbal.model.goToAxis(PAN, 0.0, now);
+    gimbal.model.goToAxis(TILT, 0.0, now);
+    return;
+  }
+  // A yaw relative to North: the model turns in the vehicle frame.
+  const double yaw_offset = yawInEarthFrame(flags) ? -config_.vehicle_yaw : 0.0;
+  if (std::isfinite(pitch) || std::isfinite(yaw))
+  {
+    gimbal.rates_active = false;
+    if (std::isfinite(yaw))
     {
-      model_.goToAxis(TILT, setpoint.pitch, now);
+      gimbal.model.goToAxis(PAN, std::remainder(yaw + yaw_offset, 2.0 * M_PI), now);
+    }
+    if (std::isfinite(pitch))
+    {
+      gimbal.model.goToAxis(TILT, pitch, now);
     }
     return;
   }
-  if (std::isfinite(setpoint.yaw_rate) || std::isfinite(setpoint.pitch_rate))
+  if (std::isfinite(yaw_rate) || std::isfinite(pitch_rate))
   {
-    model_.moveAxisAtVelocity(PAN, std::isfinite(setpoint.yaw_rate) ? setpoint.yaw_rate : 0.0, now);
-    model_.moveAxisAtVelocity(TILT, std::isfinite(setpoint.pitch_rate) ? setpoint.pitch_rate : 0.0, now);
-    rates_active_ = true;
-    rates_until_ = now + toDuration(config_.rate_timeout);
+    gimbal.model.moveAxisAtVelocity(PAN, std::isfinite(yaw_rate) ? yaw_rate : 0.0, now);
+    gimbal.model.moveAxisAtVelocity(TILT, std::isfinite(pitch_rate) ? pitch_rate : 0.0, now);
+    gimbal.rates_active = true;
+    gimbal.rates_until = now + toDuration(config_.rate_timeout);
   }
 }
 

@@ -2,6 +2,7 @@
 #include <string>
 
 #include <pluginlib/class_list_macros.hpp>
+#include <ros/console.h>
 
 #include "plugin_params.h"
 #include "ptz_action_server/core/mavlink/mavlink_gimbal_protocol.h"
@@ -42,11 +43,13 @@ public:
     gimbal.gimbal_device_id = id("gimbal_device_id", gimbal.gimbal_device_id, 0);
     gimbal.yaw_lock = params.choice("yaw_frame", "vehicle", { "vehicle", "north" }) == "north";
     gimbal.heartbeat_period = params.number("heartbeat_period", gimbal.heartbeat_period, 0.1, 5.0);
+    gimbal.discovery_time = params.number("discovery_time", gimbal.discovery_time, 0.0, 30.0);
     gimbal.attitude_interval = params.number("attitude_interval", gimbal.attitude_interval, 0.005, 1.0);
     gimbal.rate_period = params.number("rate_period", gimbal.rate_period, 0.01, 1.0);
     gimbal.resend_period = params.number("resend_period", gimbal.resend_period, 0.05, 10.0);
     readAxis(params.child("pan"), context.urdf_limits.axes[PAN].range, M_PI, gimbal.pan);
     readAxis(params.child("tilt"), context.urdf_limits.axes[TILT].range, M_PI / 2.0, gimbal.tilt);
+    gimbal.warn = [](const std::string& text) { ROS_WARN("mavlink_gimbal: %s", text.c_str()); };
     return makeMavlinkGimbalBackend(config, context.clock);
   }
 };

@@ -1,6 +1,6 @@
 /**
  * \file
- * \brief A MAVLink gimbal manager (Gimbal Protocol v2) with its gimbal, on the simulated motion model, over UDP or
+ * \brief MAVLink gimbal managers (Gimbal Protocol v2) with their gimbals, on the simulated motion model, over UDP or
  * a pseudo-terminal: the emulator behind `mavlink_gimbal_emulator` and the backend's tests.
  */
 #pragma once
@@ -9,6 +9,8 @@
 #include <memory>
 #include <mutex>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "ptz_action_server/core/mavlink/mavlink_messages.h"
 #include "ptz_action_server/core/sim_device_model.h"
@@ -19,65 +21,97 @@
 
 namespace ptz_action_server
 {
+/// A gimbal: pan +-pi at 1.5 rad/s, tilt -pi/2 .. pi/4 at 1 rad/s, no zoom.
+SimDeviceConfig defaultMavlinkGimbalDevice();
+
+/**
+ * \brief One emulated gimbal and where it sits, as Gimbal Protocol v2 defines gimbal_device_id.
+ *
+ * - device_id 1..6: a gimbal inside its manager's component (no MAVLink component of its own, as a gimbal an
+ *   autopilot drives over PWM, or a camera-gimbal that is its own manager). The manager's component sends its
+ *   GIMBAL_DEVICE_ATTITUDE_STATUS, with gimbal_device_id = device_id.
+ * - device_id 7..255: a MAVLink gimbal device with that component id (154 = MAV_COMP_ID_GIMBAL, 171..175), beside its
+ *   manager. It sends HEARTBEATs (MAV_TYPE_GIMBAL) and its own GIMBAL_DEVICE_ATTITUDE_STATUS with gimbal_device_id 0,
+ *   as the message's definition asks of a device whose component is not its manager's.
+ *
+ * Either way the manager's messages (GIMBAL_MANAGER_INFORMATION, GIMBAL_MANAGER_STATUS) name the gimbal by device_id,
+ * and commands and setpoints to the manager address it by device_id (0: every gimbal of that manager).
+ */
+struct MavlinkEmulatedGimbal
+{
+  std::uint8_t device_id = 1;
+  std::uint8_t manager_component = 0;  ///< the component hosting its gimbal manager; 0: the config's component_id
+  SimDeviceConfig device = defaultMavlinkGimbalDevice();
+};
+
 struct MavlinkGimbalEmulatorConfig
 {
   LinkKind transport = LinkKind::UDP;  ///< UDP, or SERIAL (a pseudo-terminal, see line)
   std::string host = "127.0.0.1";      ///< udp: where to listen
   std::uint16_t port = 0;              ///< udp: 0 = any free port (see endpoint())
   DevicePortConfig line;               ///< serial: the pseudo-terminal
-  std::uint8_t system_id = 1;
-  std::uint8_t component_id = mavlink::MAV_COMP_ID_AUTOPILOT1;  ///< the manager: an autopilot, as PX4 and ArduPilot
-  std::uint8_t gimbal_device_id = 1;  ///< 1..6: a gimbal the autopilot drives (not itself a MAVLink component)
+  std::uint8_t system_id = 1;          ///< the vehicle: every component emulated here is part of it
+  /// The component hosting the gimbal managers: an autopilot (1, as PX4 and ArduPilot), or a gimbal that manages
+  /// itself.
+  std::uint8_t component_id = mavlink::MAV_COMP_ID_AUTOPILOT1;
+  /// The gimbals (at least one): by default one gimbal inside the manager's component, gimbal_device_id 1.
+  std::vector<MavlinkEmulatedGimbal> gimbals{ MavlinkEmulatedGimbal{} };
   double heartbeat_period = 1.0;
   double status_period = 0.2;       ///< s between GIMBAL_MANAGER_STATUS (5 Hz, as the protocol asks)
   double attitude_interval = 1.0;   ///< s between GIMBAL_DEVICE_ATTITUDE_STATUS until SET_MESSAGE_INTERVAL
   double rate_timeout = 0.5;        ///< s a rate setpoint lasts unless repeated
   double vehicle_yaw = 0.0;         ///< rad: the vehicle's heading, delta_yaw in every attitude
   bool report_earth_frame = false;  ///< attitudes with the yaw relative to North (YAW_IN_EARTH_FRAME)
-  SimDeviceConfig device = defaultDevice();
-
-  /// A gimbal: pan +-pi at 1.5 rad/s, tilt -pi/2 .. pi/4 at 1 rad/s, no zoom.
-  static SimDeviceConfig defaultDevice();
 };
 
-/// A frame as it reached the manager.
+/// A frame as it reached the emulator (whichever of its components it was for).
 struct ReceivedMavlinkFrame
 {
   TimePoint at;
   mavlink::Frame frame;
 };
 
-/// What the manager has seen and done.
+/// What the managers have seen and done.
 struct MavlinkGimbalEmulatorCounters
 {
-  std::uint64_t setpoints_executed = 0;  ///< SET_PITCHYAW and DO_GIMBAL_MANAGER_PITCHYAW from the primary controller
-  std::uint64_t setpoints_ignored = 0;   ///< the same from anyone else
+  /// SET_PITCHYAW, SET_ATTITUDE and DO_GIMBAL_MANAGER_PITCHYAW from the primary controller, counted per gimbal driven
+  std::uint64_t setpoints_executed = 0;
+  std::uint64_t setpoints_ignored = 0;  ///< the same from anyone else
   std::uint64_t commands_denied = 0;
-  std::uint64_t rate_timeouts = 0;  ///< rate setpoints not repeated in time: the gimbal stopped
+  std::uint64_t rate_timeouts = 0;                 ///< rate setpoints not repeated in time: the gimbal stopped
+  std::vector<std::uint64_t> executed_per_gimbal;  ///< setpoints_executed by gimbal, in the config's order
   std::array<std::uint64_t, mavlink::FRAME_ERROR_COUNT> dropped{};
 };
 
 /**
- * \brief Behaves as a gimbal manager does towards a controller.
+ * \brief Behaves as the gimbal managers and gimbal devices of one vehicle do towards a controller.
  *
- * HEARTBEAT every heartbeat_period, GIMBAL_MANAGER_STATUS every status_period, GIMBAL_DEVICE_ATTITUDE_STATUS at
- * the interval SET_MESSAGE_INTERVAL asks for; REQUEST_MESSAGE answers GIMBAL_MANAGER_INFORMATION (the model's
- * limits) and GIMBAL_MANAGER_STATUS; DO_GIMBAL_MANAGER_CONFIGURE hands primary control over (-1 unchanged,
- * -2 the manager itself, -3 released) and is DENIED while refusing or while another controller holds control and
- * keeps it; setpoints from anyone but the primary controller are ignored (SET_PITCHYAW) or DENIED
- * (DO_GIMBAL_MANAGER_PITCHYAW); rates stop unless repeated within rate_timeout. Every command gets a COMMAND_ACK
- * (UNSUPPORTED for those it does not model). Owns its I/O thread.
+ * Every component (the managers' and each MAVLink gimbal device's) sends a HEARTBEAT every heartbeat_period (an
+ * autopilot's at component 1, MAV_TYPE_GIMBAL elsewhere). Per gimbal: GIMBAL_MANAGER_STATUS every status_period from
+ * its manager, GIMBAL_DEVICE_ATTITUDE_STATUS at the interval SET_MESSAGE_INTERVAL asks of the component that sends it.
+ * A manager answers REQUEST_MESSAGE with one GIMBAL_MANAGER_INFORMATION (the model's limits) or GIMBAL_MANAGER_STATUS
+ * per gimbal; DO_GIMBAL_MANAGER_CONFIGURE hands primary control of the gimbal param7 names (0: all of the manager's)
+ * over (-1 unchanged, -2 the manager itself, -3 released if the sender holds it) and is DENIED while refusing, for a
+ * gimbal the manager does not have, or while another controller holds control and keeps it. Setpoints
+ * (GIMBAL_MANAGER_SET_PITCHYAW, GIMBAL_MANAGER_SET_ATTITUDE with its quaternion and rates,
+ * DO_GIMBAL_MANAGER_PITCHYAW) drive the gimbal they name (0: all of the manager's) when they come from its primary
+ * controller, and are ignored (messages) or DENIED (the command) otherwise; NEUTRAL goes to pan 0 tilt 0; the yaw
+ * is the vehicle's unless YAW_IN_EARTH_FRAME (or, without either frame flag, YAW_LOCK) says North; rates stop
+ * unless repeated within rate_timeout. A gimbal device that is not a manager answers manager requests UNSUPPORTED.
+ * Every command gets a COMMAND_ACK from each component it addresses (UNSUPPORTED for those it does not model).
+ * Owns its I/O thread. The gimbal index of the methods below is its place in the config's gimbals.
  */
 class MavlinkGimbalEmulator
 {
 public:
+  /// Throws std::invalid_argument for gimbals the protocol cannot address (see MavlinkEmulatedGimbal).
   explicit MavlinkGimbalEmulator(const MavlinkGimbalEmulatorConfig& config,
                                  std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
   ~MavlinkGimbalEmulator();
   MavlinkGimbalEmulator(const MavlinkGimbalEmulator&) = delete;
   MavlinkGimbalEmulator& operator=(const MavlinkGimbalEmulator&) = delete;
 
-  /// udp: where the manager listens; "host:port".
+  /// udp: where the components listen; "host:port".
   std::string address() const;
   std::uint16_t udpPort() const;
   /// serial: the pseudo-terminal (or its link).
@@ -87,20 +121,25 @@ public:
   void setSilent(bool silent);
   /// Refuse: DO_GIMBAL_MANAGER_CONFIGURE and DO_GIMBAL_MANAGER_PITCHYAW are DENIED.
   void setRefuse(bool refuse);
-  /// Fault hooks of the motion model: a stalled axis accepts every command and silently stays where it is.
-  void setFaults(const SimFaults& faults);
-  /// Another controller (\p system_id / \p component_id) takes primary control and keeps it until released with
-  /// releaseControl().
-  void giveControlTo(std::uint8_t system_id, std::uint8_t component_id);
-  void releaseControl();
+  /// Fault hooks of a gimbal's motion model: a stalled axis accepts every command and silently stays where it is.
+  void setFaults(const SimFaults& faults, std::size_t gimbal = 0);
+  /// Another controller (\p system_id / \p component_id) takes primary control of a gimbal. With \p keep it refuses
+  /// to give it up until releaseControl(); without, it yields to a DO_GIMBAL_MANAGER_CONFIGURE (a ground station
+  /// that took control earlier and left it).
+  void giveControlTo(std::uint8_t system_id, std::uint8_t component_id, bool keep = true, std::size_t gimbal = 0);
+  void releaseControl(std::size_t gimbal = 0);
   /// serial: the port vanishes / comes back.
   void unplug();
   void replug();
 
-  /// The primary controller (0/0: none).
-  std::pair<std::uint8_t, std::uint8_t> primaryController() const;
-  /// The gimbal: pan (yaw in the vehicle frame), tilt (pitch) in rad; zoom 1.
-  PtzSample gimbal() const;
+  std::size_t gimbalCount() const
+  {
+    return config_.gimbals.size();
+  }
+  /// A gimbal's primary controller (0/0: none).
+  std::pair<std::uint8_t, std::uint8_t> primaryController(std::size_t gimbal = 0) const;
+  /// A gimbal: pan (yaw in the vehicle frame), tilt (pitch) in rad; zoom 1.
+  PtzSample gimbal(std::size_t gimbal = 0) const;
   MavlinkGimbalEmulatorCounters counters() const;
   ReceivedLog<ReceivedMavlinkFrame>& received()
   {
@@ -112,19 +151,29 @@ public:
   }
 
 private:
+  struct Gimbal;
+
   void runUdp();
   void receive(const std::uint8_t* data, std::size_t size);
   void tick();
   void handle(const mavlink::Frame& frame, TimePoint now);
-  void handleCommand(const mavlink::Frame& frame, const mavlink::CommandLong& command, TimePoint now);
-  mavlink::Result configure(const mavlink::Frame& frame, const mavlink::CommandLong& command);
-  void setPitchYaw(const mavlink::GimbalManagerSetPitchYaw& setpoint, TimePoint now);
-  bool fromPrimary(const mavlink::Frame& frame) const;
+  void handleCommand(std::uint8_t component, const mavlink::Frame& frame, const mavlink::CommandLong& command,
+                     TimePoint now);
+  mavlink::Result configure(Gimbal& gimbal, const mavlink::Frame& frame, const mavlink::CommandLong& command);
+  /// The gimbals the manager at \p component drives for \p gimbal_device_id (0: all of them).
+  std::vector<Gimbal*> addressed(std::uint8_t component, std::uint8_t gimbal_device_id);
+  /// A setpoint (angles or rates in rad, rad/s; NaN: not set) for \p gimbal from \p frame's sender.
+  void setpoint(Gimbal& gimbal, const mavlink::Frame& frame, std::uint32_t flags, float pitch, float yaw,
+                float pitch_rate, float yaw_rate, TimePoint now);
+  void execute(Gimbal& gimbal, std::uint32_t flags, float pitch, float yaw, float pitch_rate, float yaw_rate,
+               TimePoint now);
+  bool fromPrimary(const Gimbal& gimbal, const mavlink::Frame& frame) const;
   template <class Message>
-  void send(const Message& message);
-  void sendStatus();
-  void sendInformation();
-  void sendAttitude(TimePoint now);
+  void send(std::uint8_t component, const Message& message);
+  void sendStatus(const Gimbal& gimbal);
+  void sendInformation(const Gimbal& gimbal);
+  void sendAttitude(Gimbal& gimbal, TimePoint now);
+  Gimbal& at(std::size_t index) const;
 
   const MavlinkGimbalEmulatorConfig config_;
   const std::shared_ptr<const Clock> clock_;
@@ -132,18 +181,13 @@ private:
   std::atomic<bool> silent_{ false };
   std::atomic<bool> refuse_{ false };
 
-  mutable std::mutex mutex_;      ///< guards everything below up to the transports
-  mutable SimDeviceModel model_;  ///< mutable: sampling advances it
+  mutable std::mutex mutex_;  ///< guards everything below up to the transports
+  std::vector<std::unique_ptr<Gimbal>> gimbals_;
+  std::vector<std::uint8_t> components_;  ///< every component emulated: the managers, then the gimbal devices
   mavlink::FrameParser parser_;
   MavlinkGimbalEmulatorCounters counters_;
-  std::uint8_t primary_system_ = 0;
-  std::uint8_t primary_component_ = 0;
-  bool control_kept_ = false;  ///< another controller holds control and refuses to give it up
   std::uint8_t sequence_ = 0;
-  double attitude_interval_;
-  TimePoint heartbeat_at_{}, status_at_{}, attitude_at_{};
-  bool rates_active_ = false;
-  TimePoint rates_until_{};
+  TimePoint heartbeat_at_{}, status_at_{};
   ReceivedLog<ReceivedMavlinkFrame> received_;
 
   // The transport: a UDP socket with its thread, or a device port (which has its own).

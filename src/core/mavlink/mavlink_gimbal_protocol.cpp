@@ -20,25 +20,48 @@ constexpr double STOP_REPEAT = 0.5;
 
 }  // namespace
 
+std::string MavlinkGimbalAddress::describe() const
+{
+  const std::string manager =
+      " of the gimbal manager " + std::to_string(system_id) + "/" + std::to_string(manager_component);
+  if (device_id == 0)
+  {
+    return "the gimbal (gimbal_device_id 0)" + manager;
+  }
+  if (isInternalGimbalId(device_id))
+  {
+    return "gimbal_device_id " + std::to_string(device_id) + manager;
+  }
+  return "gimbal_device_id " + std::to_string(device_id) + " (the gimbal device " + std::to_string(system_id) + "/" +
+         std::to_string(device_id) + ")" + manager;
+}
+
 MavlinkGimbalProtocol::MavlinkGimbalProtocol(const MavlinkGimbalSettings& settings, DeviceSession& session)
   : settings_(settings), session_(session)
 {
-  gimbal_device_id_ = settings_.gimbal_device_id;
 }
 
 std::string MavlinkGimbalProtocol::deviceName() const
 {
-  return "the MAVLink gimbal manager" + managerName();
+  std::lock_guard<std::mutex> lock(names_mutex_);
+  if (!chosen_)
+  {
+    return "the MAVLink gimbal manager";
+  }
+  // "the MAVLink gimbal manager 1/1 (gimbal_device_id 154, the gimbal device 1/154)"
+  std::string text = "the MAVLink gimbal manager " + controllerName(gimbal_.system_id, gimbal_.manager_component) +
+                     " (gimbal_device_id " + std::to_string(gimbal_.device_id);
+  if (gimbal_.device_id != 0 && !isInternalGimbalId(gimbal_.device_id))
+  {
+    text += ", the gimbal device " + controllerName(gimbal_.system_id, gimbal_.device_id);
+  }
+  return text + ")";
 }
 
-std::string MavlinkGimbalProtocol::managerName() const
+MavlinkGimbalAddress MavlinkGimbalProtocol::gimbal() const
 {
   std::lock_guard<std::mutex> lock(names_mutex_);
-  if (manager_system_ == 0 && manager_component_ == 0)
-  {
-    return "";
-  }
-  return " " + controllerName(manager_system_, manager_component_);
+  return chosen_ ? gimbal_ : MavlinkGimbalAddress{};
 }
 
 std::string MavlinkGimbalProtocol::heldBy() const
@@ -56,7 +79,16 @@ Capabilities MavlinkGimbalProtocol::capabilities() const
   Capabilities capabilities;
   capabilities.axes[PAN] = settings_.pan;
   capabilities.axes[TILT] = settings_.tilt;
-  capabilities.axes[ZOOM] = absentAxis("a MAVLink gimbal has no zoom");
+  for (Axis axis : { PAN, TILT })
+  {
+    // GIMBAL_MANAGER_SET_PITCHYAW takes angles and rates; GIMBAL_DEVICE_ATTITUDE_STATUS reports the attitude.
+    capabilities.axes[axis].present = true;
+    capabilities.axes[axis].absolute = true;
+    capabilities.axes[axis].velocity = true;
+    capabilities.axes[axis].feedback = true;
+  }
+  capabilities.axes[ZOOM] = absentAxis("a MAVLink gimbal has no zoom (a camera's zoom is not part of Gimbal Protocol "
+                                       "v2)");
   return capabilities;
 }
 
@@ -69,14 +101,27 @@ void MavlinkGimbalProtocol::onConnected()
   in_control_ = false;
   informed_ = false;
   ready_ = false;
+  status_seen_ = false;
+  control_requested_ = false;
   attitude_requested_ = false;
+  attitude_asks_ = 0;
   holder_system_ = holder_component_ = 0;
   const TimePoint now = session_.now();
   heartbeat_at_ = now;
+  listening_since_ = now;
+  chosen_at_ = now;
   send(Heartbeat{});
-  if (settings_.target_system != 0 && settings_.target_component != 0)
+  if (chosen_)
   {
-    chooseManager(settings_.target_system, settings_.target_component);
+    requestInformation(gimbal_.system_id, gimbal_.manager_component);  // the manager may have restarted: its limits
+  }
+  else
+  {
+    asked_.clear();
+    if (settings_.target_system != 0 && settings_.target_component != 0)
+    {
+      askCandidate(settings_.target_system, settings_.target_component);
+    }
   }
 }
 
@@ -110,19 +155,26 @@ void MavlinkGimbalProtocol::poll()
     heartbeat_at_ = now;
     send(Heartbeat{});
   }
-  if (manager_known_)
+  if (!chosen_)
+  {
+    discover();
+  }
+  else
   {
     if (!informed_ && due(information_asked_at_, settings_.resend_period))
     {
-      requestInformation();
+      requestInformation(gimbal_.system_id, gimbal_.manager_component);
     }
-    // Take control at start-up, and back when it comes free; never from another controller unasked.
+    // Take control at start-up, and back when it comes free; never from another controller unasked. Look at the
+    // gimbal's status first (who holds control), waiting for it no longer than resend_period.
     const bool control_free = holder_system_ == 0 && holder_component_ == 0;
-    if (informed_ && !in_control_ && (control_free || !ever_ready_) && due(control_asked_at_, settings_.resend_period))
+    const bool status_known = status_seen_ || due(chosen_at_, settings_.resend_period);
+    if (informed_ && !in_control_ && status_known && (control_free || !ever_ready_) &&
+        due(control_asked_at_, settings_.resend_period))
     {
       takeControl();
     }
-    if (informed_ && !attitude_requested_ && due(attitude_asked_at_, settings_.resend_period))
+    if (!attitude_requested_ && due(attitude_asked_at_, settings_.resend_period))
     {
       requestAttitude();
     }
@@ -163,7 +215,7 @@ void MavlinkGimbalProtocol::send(const Message& message)
 
 void MavlinkGimbalProtocol::sendCommand(std::uint16_t command, const std::array<float, 7>& params)
 {
-  sendCommandTo(manager_system_, manager_component_, command, params);
+  sendCommandTo(gimbal_.system_id, gimbal_.manager_component, command, params);
 }
 
 void MavlinkGimbalProtocol::sendCommandTo(std::uint8_t system_id, std::uint8_t component_id, std::uint16_t command,
@@ -174,13 +226,10 @@ void MavlinkGimbalProtocol::sendCommandTo(std::uint8_t system_id, std::uint8_t c
   message.command = command;
   message.target_system = system_id;
   message.target_component = component_id;
-  pending_[command] = PendingCommand{ session_.currentCommand(), session_.now() };
+  const std::uint32_t key =
+      static_cast<std::uint32_t>(command) << 16 | static_cast<std::uint32_t>(system_id) << 8 | component_id;
+  pending_[key] = PendingCommand{ session_.currentCommand(), session_.now() };
   send(message);
-}
-
-void MavlinkGimbalProtocol::requestInformation()
-{
-  requestInformation(manager_system_, manager_component_);
 }
 
 void MavlinkGimbalProtocol::requestInformation(std::uint8_t system_id, std::uint8_t component_id)
@@ -192,18 +241,50 @@ void MavlinkGimbalProtocol::requestInformation(std::uint8_t system_id, std::uint
 
 void MavlinkGimbalProtocol::takeControl()
 {
+  if (!ever_ready_ && (holder_system_ != 0 || holder_component_ != 0) &&
+      !(holder_system_ == settings_.system_id && holder_component_ == settings_.component_id))
+  {
+    warnPreviousController(holder_system_, holder_component_);
+  }
   control_asked_at_ = session_.now();
+  control_requested_ = true;
+  // param7: this gimbal only (0 would configure every gimbal of the manager's component).
   sendCommand(command_id::DO_GIMBAL_MANAGER_CONFIGURE,
               { static_cast<float>(settings_.system_id), static_cast<float>(settings_.component_id), UNCHANGED,
-                UNCHANGED, 0, 0, static_cast<float>(gimbal_device_id_.load()) });
+                UNCHANGED, 0, 0, static_cast<float>(gimbal_.device_id) });
+}
+
+void MavlinkGimbalProtocol::warnPreviousController(std::uint8_t system_id, std::uint8_t component_id)
+{
+  if (warned_)
+  {
+    return;
+  }
+  warned_ = true;
+  {
+    std::lock_guard<std::mutex> lock(names_mutex_);
+    previous_controller_ = controllerName(system_id, component_id);
+  }
+  if (settings_.warn)
+  {
+    settings_.warn(formatText("taking primary control of %s from %s, which held it (GIMBAL_MANAGER_STATUS); it may "
+                              "have been driving the gimbal (a mission, a ground station, a tracker)",
+                              gimbal_.describe().c_str(), controllerName(system_id, component_id).c_str()));
+  }
 }
 
 void MavlinkGimbalProtocol::requestAttitude()
 {
+  // Asked of the component that sends the attitude; one that never answers is asked three times, then left to its
+  // own rate (the state timeout judges it).
   attitude_asked_at_ = session_.now();
-  sendCommand(command_id::SET_MESSAGE_INTERVAL,
-              { static_cast<float>(message_id::GIMBAL_DEVICE_ATTITUDE_STATUS),
-                static_cast<float>(settings_.attitude_interval * 1e6), 0, 0, 0, 0, 0 });
+  if (++attitude_asks_ >= 3)
+  {
+    attitude_requested_ = true;
+  }
+  sendCommandTo(gimbal_.system_id, gimbal_.attitudeComponent(), command_id::SET_MESSAGE_INTERVAL,
+                { static_cast<float>(message_id::GIMBAL_DEVICE_ATTITUDE_STATUS),
+                  static_cast<float>(settings_.attitude_interval * 1e6), 0, 0, 0, 0, 0 });
 }
 
 std::uint32_t MavlinkGimbalProtocol::setpointFlags() const
@@ -233,9 +314,13 @@ void MavlinkGimbalProtocol::sendSetpoint()
     case Setpoint::NONE:
       return;
   }
-  message.target_system = manager_system_;
-  message.target_component = manager_component_;
-  message.gimbal_device_id = gimbal_device_id_;
+  if (!chosen_)
+  {
+    return;  // sent once there is a gimbal to send it to
+  }
+  message.target_system = gimbal_.system_id;
+  message.target_component = gimbal_.manager_component;
+  message.gimbal_device_id = gimbal_.device_id;
   setpoint_sent_at_ = session_.now();
   ++counters_.setpoints;
   send(message);
@@ -247,7 +332,7 @@ void MavlinkGimbalProtocol::goTo(const AxisValues& position)
 {
   setpoint_ = Setpoint::POSITION;
   setpoint_values_ = position;
-  if (!in_control_ && manager_known_)
+  if (!in_control_ && informed_)
   {
     takeControl();  // refused: the goal aborts with the manager's result
   }
@@ -263,7 +348,7 @@ void MavlinkGimbalProtocol::moveAtVelocity(const AxisValues& velocity)
   }
   setpoint_ = Setpoint::RATES;
   setpoint_values_ = velocity;
-  if (!in_control_ && manager_known_)
+  if (!in_control_ && informed_)
   {
     takeControl();
   }
@@ -279,23 +364,32 @@ void MavlinkGimbalProtocol::stop()
 
 void MavlinkGimbalProtocol::shutdown()
 {
-  if (!in_control_ || !session_.connected())
+  // Release what we asked for (control may have been granted without its status having come yet), of our gimbal
+  // only: -3 releases it if it is ours, and leaves it to another controller that took it since.
+  if (!chosen_ || !session_.connected() || !(in_control_ || control_requested_))
   {
     return;
   }
   stop();
   sendCommand(command_id::DO_GIMBAL_MANAGER_CONFIGURE,
-              { RELEASE, RELEASE, UNCHANGED, UNCHANGED, 0, 0, static_cast<float>(gimbal_device_id_.load()) });
+              { RELEASE, RELEASE, UNCHANGED, UNCHANGED, 0, 0, static_cast<float>(gimbal_.device_id) });
 }
 
 void MavlinkGimbalProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 {
-  values.emplace_back("gimbal manager", managerName().empty() ? "not found yet" : managerName().substr(1));
-  values.emplace_back("gimbal device id", std::to_string(gimbal_device_id_.load()));
+  {
+    std::lock_guard<std::mutex> lock(names_mutex_);
+    values.emplace_back("gimbal manager",
+                        chosen_ ? controllerName(gimbal_.system_id, gimbal_.manager_component) : "not chosen yet");
+    values.emplace_back("gimbal", chosen_ ? gimbal_.describe() : "not chosen yet");
+    values.emplace_back("gimbals found", found_names_.empty() ? "none yet" : found_names_);
+    values.emplace_back("previous controller", previous_controller_.empty() ? "none" : previous_controller_);
+  }
   values.emplace_back("primary control", in_control_ ? "ours" : "not ours");
   values.emplace_back("yaw frame", settings_.yaw_lock ? "North (YAW_LOCK)" : "vehicle");
   addCounts(values, { { "frames", counters_.frames },
                       { "attitudes", counters_.attitudes },
+                      { "attitudes of other gimbals", counters_.other_attitudes },
                       { "setpoints sent", counters_.setpoints },
                       { "commands refused", counters_.acks_refused },
                       { "control lost", counters_.control_lost },

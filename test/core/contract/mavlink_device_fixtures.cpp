@@ -13,12 +13,25 @@ namespace
 using Kind = DeviceCommand::Kind;
 using namespace mavlink;
 
-/// The gimbal manager emulator over UDP or a pseudo-terminal, and the mavlink_gimbal backend configured for it.
+/// Where the gimbal is.
+enum class Setup
+{
+  GIMBAL_INSIDE_MANAGER,  ///< the autopilot's manager drives gimbal 1 inside it (a PWM gimbal): gimbal_device_id 1
+  AUTOPILOT_HOSTED,  ///< the autopilot's manager (1/1) drives the MAVLink gimbal device 1/154: gimbal_device_id 154
+};
+
+/// The gimbal manager emulator over UDP or a pseudo-terminal, and the mavlink_gimbal backend configured for it (with
+/// no gimbal named: the only one found is chosen).
 class MavlinkGimbalFixture : public DeviceFixture
 {
 public:
-  explicit MavlinkGimbalFixture(LinkKind transport)
+  MavlinkGimbalFixture(LinkKind transport, Setup setup)
   {
+    if (setup == Setup::AUTOPILOT_HOSTED)
+    {
+      emulator_config_.component_id = MAV_COMP_ID_AUTOPILOT1;
+      emulator_config_.gimbals.front().device_id = MAV_COMP_ID_GIMBAL;
+    }
     emulator_config_.transport = transport;
     if (transport == LinkKind::SERIAL)
     {
@@ -156,7 +169,7 @@ public:
         EXPECT_EQ(setpoint.flags, 0u) << "yaw in the vehicle frame";
         EXPECT_EQ(setpoint.target_system, emulator_config_.system_id);
         EXPECT_EQ(setpoint.target_component, emulator_config_.component_id);
-        EXPECT_EQ(setpoint.gimbal_device_id, emulator_config_.gimbal_device_id);
+        EXPECT_EQ(setpoint.gimbal_device_id, emulator_config_.gimbals.front().device_id);
       }
     }
   }
@@ -184,8 +197,12 @@ private:
 std::vector<FixtureMaker> mavlinkDeviceFixtures()
 {
   return {
-    { "MavlinkGimbalUdp", [] { return std::make_unique<MavlinkGimbalFixture>(LinkKind::UDP); } },
-    { "MavlinkGimbalSerial", [] { return std::make_unique<MavlinkGimbalFixture>(LinkKind::SERIAL); } },
+    { "MavlinkGimbalUdp",
+      [] { return std::make_unique<MavlinkGimbalFixture>(LinkKind::UDP, Setup::GIMBAL_INSIDE_MANAGER); } },
+    { "MavlinkGimbalSerial",
+      [] { return std::make_unique<MavlinkGimbalFixture>(LinkKind::SERIAL, Setup::GIMBAL_INSIDE_MANAGER); } },
+    { "MavlinkGimbalAutopilotHostedUdp",
+      [] { return std::make_unique<MavlinkGimbalFixture>(LinkKind::UDP, Setup::AUTOPILOT_HOSTED); } },
   };
 }
 

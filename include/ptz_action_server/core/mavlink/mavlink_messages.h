@@ -74,6 +74,34 @@ constexpr std::uint32_t YAW_IN_VEHICLE_FRAME = 32;
 constexpr std::uint32_t YAW_IN_EARTH_FRAME = 64;
 }  // namespace gimbal_flags
 
+/// The yaw of a setpoint or an attitude with \p flags is relative to North (the earth frame): YAW_IN_EARTH_FRAME,
+/// or, when neither frame flag is set (senders from before those flags), YAW_LOCK.
+inline bool yawInEarthFrame(std::uint32_t flags)
+{
+  if ((flags & (gimbal_flags::YAW_IN_EARTH_FRAME | gimbal_flags::YAW_IN_VEHICLE_FRAME)) == 0)
+  {
+    return (flags & gimbal_flags::YAW_LOCK) != 0;
+  }
+  return (flags & gimbal_flags::YAW_IN_EARTH_FRAME) != 0;
+}
+
+/// GIMBAL_MANAGER_CAP_FLAGS (its low 16 bits are GIMBAL_DEVICE_CAP_FLAGS).
+namespace gimbal_caps
+{
+constexpr std::uint32_t HAS_RETRACT = 1;
+constexpr std::uint32_t HAS_NEUTRAL = 2;
+constexpr std::uint32_t HAS_ROLL_AXIS = 4;
+constexpr std::uint32_t HAS_ROLL_FOLLOW = 8;
+constexpr std::uint32_t HAS_ROLL_LOCK = 16;
+constexpr std::uint32_t HAS_PITCH_AXIS = 32;
+constexpr std::uint32_t HAS_PITCH_FOLLOW = 64;
+constexpr std::uint32_t HAS_PITCH_LOCK = 128;
+constexpr std::uint32_t HAS_YAW_AXIS = 256;
+constexpr std::uint32_t HAS_YAW_FOLLOW = 512;
+constexpr std::uint32_t HAS_YAW_LOCK = 1024;
+constexpr std::uint32_t SUPPORTS_INFINITE_YAW = 2048;
+}  // namespace gimbal_caps
+
 /// MAV_TYPE and MAV_AUTOPILOT values a heartbeat carries here.
 constexpr std::uint8_t MAV_TYPE_GCS = 6;
 constexpr std::uint8_t MAV_TYPE_ONBOARD_CONTROLLER = 18;
@@ -82,6 +110,22 @@ constexpr std::uint8_t MAV_AUTOPILOT_INVALID = 8;
 constexpr std::uint8_t MAV_STATE_ACTIVE = 4;
 constexpr std::uint8_t MAV_COMP_ID_AUTOPILOT1 = 1;
 constexpr std::uint8_t MAV_COMP_ID_GIMBAL = 154;
+constexpr std::uint8_t MAV_COMP_ID_GIMBAL2 = 171;  ///< .. MAV_COMP_ID_GIMBAL6 = 175
+constexpr std::uint8_t MAV_COMP_ID_GIMBAL6 = 175;
+
+/**
+ * \brief gimbal_device_id (Gimbal Protocol v2, "Addressing of gimbal devices"): 1..6 names a gimbal that is no MAVLink
+ * component of its own but part of its manager's component (a gimbal the autopilot drives over PWM, a camera-gimbal
+ * that is its own manager); any other value is the component id of a MAVLink gimbal device (154, 171..175, ...).
+ * In commands and setpoints 0 means every gimbal of the addressed manager component. GIMBAL_DEVICE_ATTITUDE_STATUS
+ * carries 1..6 when the manager's component sends it for a gimbal inside it, and 0 when a gimbal device sends it
+ * from its own component (the sender's component id says which gimbal it is).
+ */
+constexpr std::uint8_t MAX_INTERNAL_GIMBAL_ID = 6;
+inline bool isInternalGimbalId(std::uint8_t gimbal_device_id)
+{
+  return gimbal_device_id >= 1 && gimbal_device_id <= MAX_INTERNAL_GIMBAL_ID;
+}
 
 /// Not set: the value MAVLink uses for a float field left unset.
 constexpr float UNSET = std::numeric_limits<float>::quiet_NaN();
