@@ -49,7 +49,6 @@ public:
     gimbal.resend_period = params.number("resend_period", gimbal.resend_period, 0.05, 10.0);
     readAxis(params.child("pan"), context.urdf_limits.axes[PAN].range, M_PI, gimbal.pan);
     readAxis(params.child("tilt"), context.urdf_limits.axes[TILT].range, M_PI / 2.0, gimbal.tilt);
-    gimbal.warn = [](const std::string& text) { ROS_WARN("mavlink_gimbal: %s", text.c_str()); };
     return makeMavlinkGimbalBackend(config, context.clock);
   }
 };

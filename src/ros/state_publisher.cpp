@@ -77,6 +77,7 @@ void StatePublisher::start()
     publishStaticTransforms();
   }
 
+  takeWarnings();  // those of the start-up, before the first tick
   diagnostics_ = std::make_unique<diagnostic_updater::Updater>(node_handle_, ros::NodeHandle("~"));
   diagnostics_->setHardwareID(backend_->name());
   diagnostics_->add("Backend", this, &StatePublisher::diagnoseBackend);
@@ -175,8 +176,18 @@ void StatePublisher::publishStaticTransforms()
   }
 }
 
+void StatePublisher::takeWarnings()
+{
+  for (std::string& text : backend_->takeWarnings())
+  {
+    ROS_WARN("%s: %s", backend_->name().c_str(), text.c_str());
+    warnings_.push_back(std::move(text));
+  }
+}
+
 void StatePublisher::diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper& status)
 {
+  takeWarnings();
   const PtzSample sample = backend_->sample();
   if (sample.link_up)
   {
@@ -196,6 +207,10 @@ void StatePublisher::diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper
     status.add(std::string("can: ") + axisName(axis), describeAxis(limits_, axis));
   }
   status.add("can: device", describeExtras(limits_));
+  for (std::size_t index = 0; index < warnings_.size(); ++index)
+  {
+    status.add("warning " + std::to_string(index + 1), warnings_[index]);
+  }
   std::vector<DiagnosticValue> values;
   backend_->diagnostics(values);
   for (const DiagnosticValue& value : values)

@@ -44,10 +44,6 @@ protected:
   }
   void startBackend()
   {
-    config_.gimbal.warn = [this](const std::string& text) {
-      std::lock_guard<std::mutex> lock(warnings_mutex_);
-      warnings_.push_back(text);
-    };
     backend_ = makeMavlinkGimbalBackend(config_);
     backend_->start();
   }
@@ -64,9 +60,13 @@ protected:
     }
     return "";
   }
+  /// Every warning the backend gave so far (what the node would log).
   std::vector<std::string> warnings()
   {
-    std::lock_guard<std::mutex> lock(warnings_mutex_);
+    for (const std::string& text : backend_->takeWarnings())
+    {
+      warnings_.push_back(text);
+    }
     return warnings_;
   }
   /// Gimbals of the emulator: the first at \p first_pan / \p first_tilt (to tell their attitudes apart), the
@@ -193,7 +193,6 @@ protected:
   std::unique_ptr<MavlinkGimbalEmulator> emulator_;
   MavlinkGimbalConfig config_;
   std::unique_ptr<DeviceBackend> backend_;
-  std::mutex warnings_mutex_;
   std::vector<std::string> warnings_;
 };
 

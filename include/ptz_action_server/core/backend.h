@@ -92,6 +92,14 @@ public:
     return false;
   }
 
+  /// What the backend had to warn its user about since the last call, oldest first, each text once: a guess it had to
+  /// make, a device that contradicts itself, a controller it took over from. Any thread; never blocks on I/O. The
+  /// node logs each one (ROS_WARN) and keeps them in its diagnostics.
+  virtual std::vector<std::string> takeWarnings()
+  {
+    return {};
+  }
+
   /// Appends link details and counters (dropped frames and the like) for the node's diagnostics.
   virtual void diagnostics(std::vector<DiagnosticValue>& values) const
   {

@@ -71,6 +71,10 @@ public:
   {
     return inner_->setSampleListener(std::move(listener));
   }
+  std::vector<std::string> takeWarnings() override
+  {
+    return inner_->takeWarnings();
+  }
   void diagnostics(std::vector<DiagnosticValue>& values) const override
   {
     inner_->diagnostics(values);

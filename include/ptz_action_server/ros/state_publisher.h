@@ -67,6 +67,8 @@ private:
   /// What PtzState carries for \p axis: its position, or NaN when the device does not report it.
   float reported(Axis axis, const PtzSample& sample) const;
   void diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper& status);
+  /// Logs the backend's new warnings (ROS_WARN) and keeps them for the diagnostics.
+  void takeWarnings();
   ros::Time toRosTime(TimePoint stamp) const;
 
   ros::CallbackQueue queue_;     ///< declared first: everything below registers on it
@@ -94,6 +96,7 @@ private:
   double state_rate_max_ = 0.0;
   std::unique_ptr<diagnostic_updater::FrequencyStatus> state_rate_;
   std::unique_ptr<FieldOfViewPublisher> field_of_view_;  ///< null without a configured field of view
+  std::vector<std::string> warnings_;                    ///< every warning of the backend so far
   ros::SteadyTimer timer_;
   std::unique_ptr<ros::AsyncSpinner> spinner_;
 };

@@ -1,5 +1,6 @@
 #include "ptz_action_server/core/device/device_session.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include <boost/asio/post.hpp>
@@ -148,6 +149,28 @@ std::string DeviceSession::lastFault() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
   return last_fault_;
+}
+
+std::vector<std::string> DeviceSession::takeWarnings()
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (warnings_taken_ == warnings_given_.size())
+  {
+    return {};
+  }
+  std::vector<std::string> fresh(warnings_given_.begin() + static_cast<std::ptrdiff_t>(warnings_taken_),
+                                 warnings_given_.end());
+  warnings_taken_ = warnings_given_.size();
+  return fresh;
+}
+
+void DeviceSession::warn(const std::string& text)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (std::find(warnings_given_.begin(), warnings_given_.end(), text) == warnings_given_.end())
+  {
+    warnings_given_.push_back(text);
+  }
 }
 
 std::string DeviceSession::lastLinkLoss() const

@@ -265,12 +265,9 @@ void MavlinkGimbalProtocol::warnPreviousController(std::uint8_t system_id, std::
     std::lock_guard<std::mutex> lock(names_mutex_);
     previous_controller_ = controllerName(system_id, component_id);
   }
-  if (settings_.warn)
-  {
-    settings_.warn(formatText("taking primary control of %s from %s, which held it (GIMBAL_MANAGER_STATUS); it may "
-                              "have been driving the gimbal (a mission, a ground station, a tracker)",
-                              gimbal_.describe().c_str(), controllerName(system_id, component_id).c_str()));
-  }
+  session_.warn(formatText("taking primary control of %s from %s, which held it (GIMBAL_MANAGER_STATUS); it may have "
+                           "been driving the gimbal (a mission, a ground station, a tracker)",
+                           gimbal_.describe().c_str(), controllerName(system_id, component_id).c_str()));
 }
 
 void MavlinkGimbalProtocol::requestAttitude()

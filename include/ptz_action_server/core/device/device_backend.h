@@ -60,6 +60,10 @@ public:
   {
     return session_->lastLinkLoss();
   }
+  std::vector<std::string> takeWarnings() override
+  {
+    return session_->takeWarnings();
+  }
   bool setSampleListener(SampleListener listener) override
   {
     session_->setStateListener(std::move(listener));

@@ -90,6 +90,8 @@ public:
   Capabilities capabilities() const;
   std::string lastFault() const;
   std::string lastLinkLoss() const;
+  /// The warnings given since the last call (see warn()), oldest first.
+  std::vector<std::string> takeWarnings();
   /// The link's and the session's figures (the protocol adds its own).
   void diagnostics(std::vector<DiagnosticValue>& values) const;
   const DeviceSessionCounters& counters() const
@@ -167,6 +169,9 @@ public:
   void ready();
   /// The device cannot be used as configured (e.g. a camera it does not have): start() fails with \p reason.
   void failStartup(const std::string& reason);
+  /// Something the user must know that does not stop the backend (a guess, a contradiction): reaches the node once
+  /// per text, however often it is given (PtzBackend::takeWarnings()). Any thread.
+  void warn(const std::string& text);
 
 private:
   void onLinkUp() override;
@@ -208,6 +213,8 @@ private:
   mutable bool recovery_owed_ = false;  ///< a loss happened: hold the device when it answers again
   mutable std::string last_link_loss_;
   std::string startup_problem_;
+  std::vector<std::string> warnings_given_;  ///< every text warn() was given, once
+  std::size_t warnings_taken_ = 0;           ///< how many of them takeWarnings() has handed out
   MotionEstimator motion_;
   AxisValues last_position_{ { 0.0, 0.0, 1.0 } };
   std::uint64_t fault_count_ = 0;

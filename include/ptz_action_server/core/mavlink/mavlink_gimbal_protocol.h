@@ -71,9 +71,6 @@ struct MavlinkGimbalSettings
   double resend_period = 1.0;       ///< s between repeats of a position setpoint, and of an unanswered request
   AxisCapability pan = fullAxis({ -M_PI, M_PI }, 1.0, 0.0);  ///< max_speed and acceleration: for goal timeouts
   AxisCapability tilt = fullAxis({ -M_PI / 2.0, M_PI / 4.0 }, 1.0, 0.0);
-  /// Told (on the I/O thread) what the user should know but that does not stop the backend: who held primary control
-  /// of the gimbal before we took it. May be empty.
-  std::function<void(const std::string&)> warn;
 };
 
 /// Everything a mavlink_gimbal backend is built from.
@@ -116,7 +113,7 @@ struct MavlinkGimbalCounters
  * Control: DO_GIMBAL_MANAGER_CONFIGURE to the manager with param7 = the gimbal's id takes primary control of that
  * gimbal only, confirmed by its GIMBAL_MANAGER_STATUS; a refusal fails the start with the manager's result and who
  * holds control. Before taking it the gimbal's status is looked at (as the protocol asks), and when another controller
- * held primary control the warning callback is told once, naming it. shutdown() releases the gimbal (-3, param7 = its
+ * held primary control the session is warned once (DeviceSession::warn()), naming it. shutdown() releases the gimbal (-3, param7 = its
  * id). When control comes free again (the manager restarted, the other controller released it), it is taken back.
  *
  * Goals: positions as GIMBAL_MANAGER_SET_PITCHYAW to the manager for the gimbal (pitch = tilt, yaw = pan, rates NaN),
