@@ -72,29 +72,58 @@ HttpAnswer errorBody(const std::string& words)
 {
   return HttpAnswer{ 200, "text/plain", "Error:\r\n" + words + "\r\n" };
 }
+
+/// The emulated device with its zoom range taken from the lens (\p table empty: no zoom, range 1..1).
+SimDeviceConfig withLens(SimDeviceConfig device, const vapix::ZoomTable& table)
+{
+  device.axes[ZOOM].range = table.empty() ? AxisRange{ 1.0, 1.0 } : AxisRange{ table.minFactor(), table.maxFactor() };
+  return device;
+}
+
+vapix::ZoomTable lensOf(const std::string& text)
+{
+  vapix::ZoomTable table;
+  if (!text.empty())
+  {
+    const std::string problem = vapix::ZoomTable::parse(text, table);
+    if (!problem.empty())
+    {
+      throw ConfigError("zoom table: " + problem);
+    }
+  }
+  return table;
+}
 }  // namespace
+
+std::string AxisCameraEmulatorConfig::linearZoomTable(double max_optical)
+{
+  const vapix::ZoomTable table = vapix::ZoomTable::linear(max_optical);
+  if (table.empty())
+  {
+    throw ConfigError(formatText("an optical zoom of %g X: must be above 1", max_optical));
+  }
+  return table.toText();
+}
 
 SimDeviceConfig AxisCameraEmulatorConfig::defaultDevice()
 {
   SimDeviceConfig device = SimDeviceConfig::defaults();
   device.axes[PAN].range = { toRadians(-170.0), toRadians(170.0) };
   device.axes[TILT].range = { toRadians(-20.0), toRadians(90.0) };
-  device.axes[ZOOM].range = { 1.0, 18.0 };
   device.axes[PAN].resolution = 0.0;
   device.axes[TILT].resolution = 0.0;
   return device;
 }
 
 AxisCameraEmulator::AxisCameraEmulator(const AxisCameraEmulatorConfig& config, std::shared_ptr<const Clock> clock)
-  : config_(config), clock_(std::move(clock)), model_(config.device, clock_->now())
+  : config_(config)
+  , clock_(std::move(clock))
+  , zoom_table_(lensOf(config.zoom_table))
+  , model_(withLens(config.device, zoom_table_), clock_->now())
 {
-  if (!config_.zoom_table.empty())
+  if (config_.model.empty() || config_.model.find_first_of("\r\n") != std::string::npos)
   {
-    const std::string problem = vapix::ZoomTable::parse(config_.zoom_table, zoom_table_);
-    if (!problem.empty())
-    {
-      throw ConfigError("zoom table: " + problem);
-    }
+    throw ConfigError("model: a product number, one line");
   }
   server_ = std::make_unique<HttpCameraServer>(
       config_.http, [this](const std::string& method, const std::string& target, const std::string& body) {
@@ -123,7 +152,8 @@ void AxisCameraEmulator::setFaults(const SimFaults& faults)
 HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::string& target, const std::string& body)
 {
   const std::size_t question = target.find('?');
-  if (target.substr(0, question) != vapix::PTZ_PATH)
+  const std::string path = target.substr(0, question);
+  if (path != vapix::PTZ_PATH && path != vapix::PARAM_PATH)
   {
     return HttpAnswer{ 404, "text/html", "<HTML><HEAD><TITLE>404 Not Found</TITLE></HEAD></HTML>\r\n" };
   }
@@ -134,6 +164,10 @@ HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::stri
   {
     values[argument.first] = argument.second;
   }
+  if (path == vapix::PARAM_PATH)
+  {
+    return parameters(values["action"], values["group"]);
+  }
 
   std::lock_guard<std::mutex> lock(mutex_);
   const TimePoint now = clock_->now();
@@ -142,6 +176,10 @@ HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::stri
                                  camera > config_.cameras || camera != std::floor(camera)))
   {
     return errorBody("camera: invalid camera: " + values["camera"]);
+  }
+  if (values.count("info"))
+  {
+    return info();
   }
   if (values.count("query"))
   {
@@ -255,7 +293,7 @@ HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::stri
   }
   else if (values["move"] == "home")
   {
-    model_.goTo({ 0.0, 0.0, config_.device.axes[ZOOM].range.min }, now);
+    model_.goTo({ 0.0, 0.0, zoom_table_.empty() ? 1.0 : zoom_table_.minFactor() }, now);
   }
   return HttpAnswer{ 204, "text/plain", "" };
 }
@@ -272,7 +310,8 @@ HttpAnswer AxisCameraEmulator::query(const std::string& what, const std::string&
     {
       body += formatText("zoom=%.0f\r\n", std::round(zoom_table_.toValue(state.position[ZOOM])));
     }
-    return HttpAnswer{ 200, "text/plain", body + "iris=2500\r\nfocus=7000\r\nautofocus=on\r\nautoiris=on\r\n" };
+    return HttpAnswer{ 200, "text/plain",
+                       body + "iris=2500\r\nfocus=7000\r\nbrightness=5000\r\nautofocus=on\r\nautoiris=on\r\n" };
   }
   if (what == "limits")
   {
@@ -291,15 +330,65 @@ HttpAnswer AxisCameraEmulator::query(const std::string& what, const std::string&
   {
     return HttpAnswer{ 200, "text/plain", formatText("speed=%d\r\n", speed_) };
   }
-  if (what == "attributes")
+  if (what == "presetposcam" || what == "presetposall")
   {
-    if (group != "zoom" || zoom_table_.empty())
+    return HttpAnswer{ 200, "text/plain", "Preset Positions for camera 1\r\npresetposno1=Home\r\n" };
+  }
+  if (what == "attributes" && config_.attributes)
+  {
+    // The documented plain-text form: a section per channel; array entries split by ',', their pairs by '|'.
+    std::string body = "Attributes for camera 1\r\n";
+    if (!zoom_table_.empty() && (group.empty() || group == "zoom"))
+    {
+      const double optical = zoom_table_.toFactor(vapix::ZOOM_VALUE_OPTICAL_MAX);
+      body += formatText("maxOpticalZoomMag=%g\r\n", optical);
+      if (zoom_table_.maxValue() > vapix::ZOOM_VALUE_OPTICAL_MAX)
+      {
+        body += formatText("maxDigitalZoomMag=%g\r\n", zoom_table_.maxFactor() / optical);
+      }
+      body += "zoomSteps=";
+      for (std::size_t index = 0; index < zoom_table_.size(); ++index)
+      {
+        const auto& point = zoom_table_.points()[index];
+        body += formatText("%svalue=%g | zoom=%g", index == 0 ? "" : ",", point.first, point.second);
+      }
+      body += "\r\n";
+    }
+    else if (group != "zoom" && !group.empty() && group != "focus" && group != "speed" && group != "speeddry")
     {
       return errorBody("group: unknown value: " + group);
     }
-    return HttpAnswer{ 200, "text/plain", "ZoomMagnification=" + zoom_table_.toText() + "\r\n" };
+    return HttpAnswer{ 200, "text/plain", body };
   }
   return errorBody("query: unknown value: " + what);
+}
+
+HttpAnswer AxisCameraEmulator::info() const
+{
+  const bool zoom = !zoom_table_.empty();
+  std::string body = "Available commands:\r\n{camera=[n]}\r\nmove={ home | stop }\r\npan=[abspos]\r\ntilt=[abspos]\r\n";
+  body += zoom ? "zoom=[n]\r\n" : "";
+  body += "rpan=[offset]\r\nrtilt=[offset]\r\n";
+  body += zoom ? "rzoom=[offset]\r\n" : "";
+  body += "continuouspantiltmove=[x-speed],[y-speed]\r\n";
+  body += zoom ? "continuouszoommove=[speed]\r\n" : "";
+  body += "speed=[n]\r\nimagerotation=[n]\r\nquery={ speed | position | limits | presetposcam | presetposall";
+  body += config_.attributes ? " | attributes }\r\n" : " }\r\n";
+  return HttpAnswer{ 200, "text/plain", body };
+}
+
+HttpAnswer AxisCameraEmulator::parameters(const std::string& action, const std::string& group) const
+{
+  if (action == "list" && (group == "root.Brand" || group == "Brand"))
+  {
+    return HttpAnswer{ 200, "text/plain",
+                       "root.Brand.Brand=AXIS\r\nroot.Brand.ProdFullName=AXIS " + config_.model +
+                           " PTZ Network Camera\r\nroot.Brand.ProdNbr=" + config_.model +
+                           "\r\nroot.Brand.ProdShortName=AXIS " + config_.model +
+                           "\r\nroot.Brand.ProdType=PTZ Network Camera\r\nroot.Brand.ProdVariant=\r\n"
+                           "root.Brand.WebURL=http://www.axis.com\r\n" };
+  }
+  return HttpAnswer{ 200, "text/plain", "# Error: Error -1 getting param in group '" + group + "'\r\n" };
 }
 
 }  // namespace ptz_action_server

@@ -2,9 +2,11 @@
 #include <string>
 
 #include <pluginlib/class_list_macros.hpp>
+#include <ros/console.h>
 
 #include "plugin_params.h"
 #include "ptz_action_server/core/axis/axis_protocol.h"
+#include "ptz_action_server/core/text.h"
 #include "ptz_action_server/ros/backend_plugin.h"
 
 namespace ptz_action_server
@@ -29,6 +31,30 @@ public:
     axis.zoom_max_rate = params.number("zoom/max_rate", axis.zoom_max_rate, 1e-3, 1000.0);
     axis.acceleration = params.number("acceleration", axis.acceleration, 0.0, 1e4);
     axis.zoom_table = params.text("zoom_table", axis.zoom_table);
+    if (!axis.zoom_table.empty())
+    {
+      vapix::ZoomTable table;
+      const std::string problem = vapix::ZoomTable::parse(axis.zoom_table, table);
+      if (!problem.empty())
+      {
+        throw ConfigError("parameter " + params.resolve("zoom_table") + " = '" + axis.zoom_table + "': " + problem +
+                          " (VALUE:X,VALUE:X,..., VAPIX zoom 1..19999 to X, both increasing)");
+      }
+    }
+    axis.zoom_max_factor = params.number("zoom_max_factor", axis.zoom_max_factor, 0.0, 1000.0);
+    if (axis.zoom_max_factor != 0.0 && axis.zoom_max_factor <= 1.0)
+    {
+      throw ConfigError("parameter " + params.resolve("zoom_max_factor") + " = " +
+                        formatText("%g", axis.zoom_max_factor) +
+                        " must be above 1 (the camera's optical zoom, X at VAPIX zoom 9999), or 0 to find it out");
+    }
+    if (axis.zoom_max_factor != 0.0 && !axis.zoom_table.empty())
+    {
+      throw ConfigError("parameters " + params.resolve("zoom_table") + " and " + params.resolve("zoom_max_factor") +
+                        " are both set: set one (the table, or the optical zoom for a linear one)");
+    }
+    axis.zoom_guess = params.flag("zoom_guess", axis.zoom_guess);
+    axis.warn = [](const std::string& text) { ROS_WARN("axis: %s", text.c_str()); };
     return makeAxisBackend(config, context.clock);
   }
 };

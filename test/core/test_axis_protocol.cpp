@@ -1,13 +1,25 @@
 /**
  * \file
- * \brief What only the Axis backend does, against axis_camera_emulator's camera on 127.0.0.1: the limits and the zoom
- * table read at start, velocity goals as continuous moves, one connection for a thousand goals, and the start-up
- * failures (wrong password, no VAPIX, an Error: body, nonsense, nobody there) named.
+ * \brief What only the Axis backend does, against axis_camera_emulator's camera on 127.0.0.1: the limits, the offered
+ * commands and the zoom X-factor found out at start (the camera's table, a configured one, the model family's guess
+ * with its warning, none at all: a declared missing capability), velocity goals as continuous moves, one connection
+ * for a thousand goals, and the start-up failures (wrong password, no VAPIX, an Error: body, nonsense, nobody
+ * there) named.
  */
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <mutex>
 
+#include <boost/asio/connect.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/read.hpp>
+#include <boost/asio/read_until.hpp>
+#include <boost/asio/streambuf.hpp>
+#include <boost/asio/write.hpp>
+
+#include "goal_supervisor_fixture.h"
 #include "ptz_action_server/core/axis/axis_protocol.h"
 #include "ptz_action_server/core/units.h"
 #include "ptz_action_server/emulators/axis_camera_emulator.h"
@@ -64,46 +76,431 @@ std::vector<std::string> targets(HttpCameraServer& server, const std::string& co
   return found;
 }
 
-TEST(AxisBackend, ReadsTheLimitsAndTheZoomTableAtStart)
+/// The warnings a backend logs, collected.
+struct Warnings
+{
+  std::mutex mutex;
+  std::vector<std::string> texts;
+
+  std::function<void(const std::string&)> sink()
+  {
+    return [this](const std::string& text) {
+      std::lock_guard<std::mutex> lock(mutex);
+      texts.push_back(text);
+    };
+  }
+  std::vector<std::string> all()
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    return texts;
+  }
+};
+
+/// The camera of issue 21: firmware without the zoom attributes, a 30X lens (VAPIX zoom 1..9999, linear), \p model.
+AxisCameraEmulatorConfig fieldCamera(const std::string& model)
+{
+  AxisCameraEmulatorConfig camera;
+  camera.attributes = false;
+  camera.zoom_table = AxisCameraEmulatorConfig::linearZoomTable(30.0);
+  camera.model = model;
+  return camera;
+}
+
+/// A goal the node's supervisor runs on \p backend (validation, the axes it judges, its monitor), to its end.
+std::string runGoal(const std::shared_ptr<PtzBackend>& backend, const GoalConverter& goal)
+{
+  GoalMonitorConfig config;
+  config.stall_timeout = 2.0;
+  GoalSupervisor supervisor(backend, backend->capabilities(), config, false);
+  auto log = std::make_shared<goal_supervisor_test::GoalLog>();
+  supervisor.submit(std::make_unique<goal_supervisor_test::RecordingGoal>("position_abs", "goal", log), goal);
+  waitUntil(
+      [&] {
+        supervisor.supervise(supervisor.sample());
+        return !log->end.empty();
+      },
+      WAIT);
+  supervisor.shutdown("the test is over");
+  return log->end;
+}
+
+std::string diagnostic(const PtzBackend& backend, const std::string& name)
+{
+  std::vector<DiagnosticValue> values;
+  backend.diagnostics(values);
+  for (const DiagnosticValue& value : values)
+  {
+    if (value.first == name)
+    {
+      return value.second;
+    }
+  }
+  return "(no " + name + ")";
+}
+
+AxisZoomSource zoomSource(const DeviceBackend& backend)
+{
+  return backend.protocol<AxisProtocol>().zoomSource();
+}
+
+/// The body a plain GET of \p target gets from a camera without authentication on 127.0.0.1:\p port.
+std::string plainGet(std::uint16_t port, const std::string& target)
+{
+  boost::asio::io_context context;
+  boost::asio::ip::tcp::socket socket(context);
+  socket.connect({ boost::asio::ip::make_address("127.0.0.1"), port });
+  boost::asio::write(socket, boost::asio::buffer("GET " + target + " HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n"));
+  boost::asio::streambuf buffer;
+  const std::size_t header_size = boost::asio::read_until(socket, buffer, "\r\n\r\n");
+  std::string text(boost::asio::buffers_begin(buffer.data()), boost::asio::buffers_end(buffer.data()));
+  const std::string header = text.substr(0, header_size);
+  std::size_t length = 0;
+  const std::size_t at = header.find("Content-Length: ");
+  if (at != std::string::npos)
+  {
+    length = std::stoul(header.substr(at + 16));
+  }
+  if (text.size() < header_size + length)
+  {
+    boost::asio::read(socket, buffer, boost::asio::transfer_exactly(header_size + length - text.size()));
+    text.assign(boost::asio::buffers_begin(buffer.data()), boost::asio::buffers_end(buffer.data()));
+  }
+  return text.substr(header_size, length);
+}
+
+/// The keys of a key=value reply, in order.
+std::vector<std::string> keysOf(const std::string& body)
+{
+  vapix::Reply reply;
+  EXPECT_EQ(vapix::parseReply(body, reply), "") << body;
+  std::vector<std::string> keys;
+  for (const auto& value : reply.values)
+  {
+    keys.push_back(value.first);
+  }
+  return keys;
+}
+
+TEST(AxisCameraEmulator, TheFieldModeAnswersAsTheFieldCameraDid)
+{
+  AxisCameraEmulatorConfig config = fieldCamera("Q6155-E");
+  config.http.auth = HttpAuth::NONE;
+  AxisCameraEmulator camera(config);
+  const std::uint16_t port = camera.port();
+  const std::string ptz = "/axis-cgi/com/ptz.cgi?camera=1&";
+  // info=1 lists the queries the field camera lists: no attributes.
+  const std::string info = plainGet(port, ptz + "info=1");
+  EXPECT_NE(info.find("\r\nquery={ speed | position | limits | presetposcam | presetposall }\r\n"), std::string::npos)
+      << info;
+  const vapix::CommandList commands = vapix::readCommandList(info);
+  EXPECT_FALSE(commands.offers("query", "attributes"));
+  EXPECT_TRUE(commands.has("continuouszoommove") && commands.has("rpan") && commands.offers("move", "home"));
+  // Asking for them anyway: the camera's Error: words for an unknown query value.
+  const std::string refused = plainGet(port, ptz + "query=attributes&group=zoom");
+  EXPECT_EQ(refused, "Error:\r\nquery: unknown value: attributes\r\n");
+  vapix::ZoomAttributes attributes;
+  ASSERT_EQ(vapix::readZoomAttributes(refused, 1, attributes), "");
+  EXPECT_TRUE(attributes.refused);
+  // The limits give the zoom 1..9999 and the lens's other limits; the position carries the field camera's keys.
+  const std::vector<std::string> limits = keysOf(plainGet(port, ptz + "query=limits"));
+  EXPECT_EQ(limits,
+            (std::vector<std::string>{ "MinPan", "MaxPan", "MinTilt", "MaxTilt", "MinZoom", "MaxZoom", "MinIris",
+                                       "MaxIris", "MinFocus", "MaxFocus", "MinFieldAngle", "MaxFieldAngle" }));
+  vapix::Reply reply;
+  ASSERT_EQ(vapix::parseReply(plainGet(port, ptz + "query=limits"), reply), "");
+  EXPECT_EQ(*reply.find("MinZoom"), "1");
+  EXPECT_EQ(*reply.find("MaxZoom"), "9999");
+  EXPECT_EQ(
+      keysOf(plainGet(port, ptz + "query=position")),
+      (std::vector<std::string>{ "pan", "tilt", "zoom", "iris", "focus", "brightness", "autofocus", "autoiris" }));
+  // Its model, as param.cgi lists it.
+  ASSERT_EQ(vapix::parseReply(plainGet(port, "/axis-cgi/param.cgi?action=list&group=root.Brand"), reply), "");
+  vapix::Product product;
+  ASSERT_EQ(vapix::readProduct(reply, product), "");
+  EXPECT_EQ(product.number, "Q6155-E");
+  EXPECT_EQ(plainGet(port, "/axis-cgi/param.cgi?action=list&group=root.Nothing"), "# Error: Error -1 getting param in "
+                                                                                  "group 'root.Nothing'\r\n");
+}
+
+TEST(AxisCameraEmulator, ByDefaultItAnswersTheAttributesInTheDocumentedSections)
+{
+  AxisCameraEmulatorConfig config;
+  config.http.auth = HttpAuth::NONE;
+  AxisCameraEmulator camera(config);
+  const std::string body = plainGet(camera.port(), "/axis-cgi/com/ptz.cgi?camera=1&query=attributes&group=zoom");
+  EXPECT_EQ(body.rfind("Attributes for camera 1\r\nmaxOpticalZoomMag=18\r\nzoomSteps=value=1 | zoom=1,value=589 | "
+                       "zoom=2,value=1177 | zoom=3,",
+                       0),
+            0u)
+      << body;
+  vapix::ZoomAttributes attributes;
+  ASSERT_EQ(vapix::readZoomAttributes(body, 1, attributes), "");
+  vapix::ZoomTable table;
+  ASSERT_EQ(vapix::zoomTableOf(attributes, table), "");
+  EXPECT_EQ(table.toText(), AxisCameraEmulatorConfig::DEFAULT_ZOOM_TABLE);
+  EXPECT_NE(plainGet(camera.port(), "/axis-cgi/com/ptz.cgi?info=1").find("presetposall | attributes }"),
+            std::string::npos);
+}
+
+TEST(AxisBackend, ReadsTheLimitsTheCommandsAndTheCamerasZoomStepsAtStart)
 {
   AxisCameraEmulator camera{ AxisCameraEmulatorConfig() };
-  auto backend = makeAxisBackend(configFor(camera.port()));
+  Warnings warnings;
+  AxisConfig config = configFor(camera.port());
+  config.axis.warn = warnings.sink();
+  auto backend = makeAxisBackend(config);
   backend->start();
   const Capabilities capabilities = backend->capabilities();
   EXPECT_NEAR(capabilities.axes[PAN].range.min, toRadians(-170.0), 1e-9);
   EXPECT_NEAR(capabilities.axes[PAN].range.max, toRadians(170.0), 1e-9);
   EXPECT_NEAR(capabilities.axes[TILT].range.min, toRadians(-20.0), 1e-9);
   EXPECT_NEAR(capabilities.axes[TILT].range.max, toRadians(90.0), 1e-9);
-  EXPECT_TRUE(capabilities.axes[ZOOM].present);
+  for (Axis axis : ALL_AXES)
+  {
+    const AxisCapability& capability = capabilities.axes[axis];
+    EXPECT_TRUE(capability.present && capability.absolute && capability.velocity && capability.feedback)
+        << axisName(axis);
+    EXPECT_EQ(capability.limitation, "") << axisName(axis);
+  }
   EXPECT_NEAR(capabilities.axes[ZOOM].range.min, 1.0, 1e-9);
   EXPECT_NEAR(capabilities.axes[ZOOM].range.max, 18.0, 1e-9);
+  // info=1 lists rpan/rtilt, the preset queries and move=home.
+  EXPECT_TRUE(capabilities.relative_moves);
+  EXPECT_TRUE(capabilities.device_presets);
+  EXPECT_TRUE(capabilities.device_home);
+  EXPECT_EQ(zoomSource(*backend), AxisZoomSource::CAMERA_TABLE);
+  EXPECT_EQ(diagnostic(*backend, "zoom X-factor"), "the camera's zoomSteps (18 points, 1..18X)");
   EXPECT_EQ(targets(camera.server(), "query=attributes&group=zoom").size(), 1u);
+  EXPECT_EQ(targets(camera.server(), "info=1").size(), 1u);
+  EXPECT_TRUE(targets(camera.server(), "param.cgi").empty());  // the camera's table needs no model
+  EXPECT_TRUE(warnings.all().empty());
 
-  // 4X goes out as the table's value (4000..5000 on this camera's curve), and the camera gets to 4X.
+  // 4X goes out as the camera's step for 4X, and the camera gets to 4X.
   backend->goTo({ 0.1, 0.05, 4.0 });
   ASSERT_TRUE(waitUntil([&] { return std::abs(backend->sample().position[ZOOM] - 4.0) < 0.02; }, WAIT));
   EXPECT_NEAR(camera.sample().position[ZOOM], 4.0, 0.02);
   const std::vector<std::string> moves = targets(camera.server(), "&pan=");
   ASSERT_EQ(moves.size(), 1u);
-  EXPECT_NE(moves[0].find("&zoom=47"), std::string::npos) << moves[0];
+  EXPECT_NE(moves[0].find("&zoom=1765&"), std::string::npos) << moves[0];
 }
 
-TEST(AxisBackend, ACameraWithoutTheZoomTableHasNoZoomUnlessOneIsConfigured)
+TEST(AxisBackend, AFieldCameraWithoutAttributesGetsItsModelFamilysZoomAsAGuessWarnedOnce)
+{
+  AxisCameraEmulator camera(fieldCamera("Q6155-E"));
+  Warnings warnings;
+  AxisConfig config = configFor(camera.port());
+  config.axis.warn = warnings.sink();
+  std::shared_ptr<DeviceBackend> backend = makeAxisBackend(config);
+  backend->start();
+  EXPECT_EQ(zoomSource(*backend), AxisZoomSource::MODEL_GUESS);
+  const AxisCapability zoom = backend->capabilities().axes[ZOOM];
+  EXPECT_TRUE(zoom.present && zoom.absolute && zoom.velocity && zoom.feedback);
+  EXPECT_NEAR(zoom.range.max, 30.0, 1e-9);
+  EXPECT_NE(zoom.limitation.find("a guess"), std::string::npos) << zoom.limitation;
+  EXPECT_EQ(zoom.remedy, "set axis/zoom_max_factor to its optical zoom, or axis/zoom_table");
+  ASSERT_EQ(warnings.all().size(), 1u);
+  const std::string warning = warnings.all()[0];
+  EXPECT_EQ(warning.rfind("AXIS Q6155-E PTZ Network Camera gives no zoom table (query=attributes&group=zoom: "
+                          "query: unknown value: attributes): its zoom X-factor is a guess, 30X optical",
+                          0),
+            0u)
+      << warning;
+  EXPECT_NE(warning.find("set axis/zoom_max_factor"), std::string::npos) << warning;
+  EXPECT_EQ(diagnostic(*backend, "zoom X-factor").rfind("GUESS: 30X optical at VAPIX zoom 9999, linear", 0), 0u)
+      << diagnostic(*backend, "zoom X-factor");
+  EXPECT_EQ(diagnostic(*backend, "model"), "AXIS Q6155-E PTZ Network Camera");
+
+  // The goal of the field report: zoom 4 now reaches 4X on the camera itself (its lens is what the family has).
+  EXPECT_EQ(runGoal(backend, goal_supervisor_test::positionGoal(0.2, 0.1, 4.0)).rfind("SUCCEEDED: reached", 0), 0u);
+  EXPECT_NEAR(camera.sample().position[ZOOM], 4.0, 0.02);
+
+  // A new connection asks again, and does not warn again.
+  camera.server().setListening(false);
+  camera.server().dropConnections();
+  ASSERT_TRUE(waitUntil([&] { return !backend->sample().link_up; }, WAIT));
+  const std::size_t asked = targets(camera.server(), "param.cgi").size();
+  camera.server().setListening(true);
+  ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
+  EXPECT_EQ(targets(camera.server(), "param.cgi").size(), asked + 1);
+  EXPECT_EQ(warnings.all().size(), 1u);
+}
+
+TEST(AxisBackend, WithoutAnyZoomTableTheZoomIsADeclaredMissingCapabilityNeverASilentOneX)
+{
+  for (const bool guess : { true, false })
+  {
+    // A model without a family default; and a known family with guessing turned off.
+    AxisCameraEmulator camera(fieldCamera(guess ? "Q8665-E" : "Q6155-E"));
+    Warnings warnings;
+    AxisConfig config = configFor(camera.port());
+    config.axis.warn = warnings.sink();
+    config.axis.zoom_guess = guess;
+    std::shared_ptr<DeviceBackend> backend = makeAxisBackend(config);
+    backend->start();
+    EXPECT_EQ(zoomSource(*backend), AxisZoomSource::UNKNOWN);
+    const AxisCapability zoom = backend->capabilities().axes[ZOOM];
+    EXPECT_TRUE(zoom.present);
+    EXPECT_FALSE(zoom.absolute);
+    EXPECT_FALSE(zoom.feedback);
+    EXPECT_TRUE(zoom.velocity);  // info=1 lists continuouszoommove
+    EXPECT_EQ(zoom.limitation, "this Axis camera gives no zoom table");
+    ASSERT_EQ(warnings.all().size(), 1u);
+    EXPECT_NE(warnings.all()[0].find(guess ? "its model family has no default" : "zoom_guess is off"), std::string::npos)
+        << warnings.all()[0];
+    EXPECT_EQ(diagnostic(*backend, "zoom X-factor").rfind("UNKNOWN: no zoom table", 0), 0u);
+
+    // The field report's goal is refused, naming what to set; nothing moves.
+    EXPECT_EQ(runGoal(backend, goal_supervisor_test::positionGoal(0.2, 0.1, 4.0)), "REJECTED: this Axis camera gives "
+                                                                                   "no zoom table: zoom goals are not "
+                                                                                   "supported; set axis/zoom_table (or "
+                                                                                   "axis/zoom_max_factor, its optical "
+                                                                                   "zoom)");
+    EXPECT_TRUE(targets(camera.server(), "&pan=").empty());
+    // A goal that leaves the zoom alone runs, and no zoom= goes out.
+    EXPECT_EQ(runGoal(backend, goal_supervisor_test::positionGoal(0.2, 0.1, 0.0)).rfind("SUCCEEDED: reached", 0), 0u);
+    const std::vector<std::string> moves = targets(camera.server(), "&pan=");
+    ASSERT_EQ(moves.size(), 1u);
+    EXPECT_EQ(moves[0], "/axis-cgi/com/ptz.cgi?camera=1&pan=11.4592&tilt=5.7296&speed=100");
+    // Velocity goals zoom.
+    backend->moveAtVelocity({ 0.0, 0.0, 4.0 });
+    ASSERT_TRUE(waitUntil([&] { return !targets(camera.server(), "continuouszoommove=50").empty(); }, WAIT));
+    ASSERT_TRUE(waitUntil([&] { return camera.sample().position[ZOOM] > 1.5; }, WAIT));
+    backend->stop();
+    ASSERT_TRUE(waitUntil([&] { return !camera.sample().moving; }, WAIT));
+  }
+}
+
+TEST(AxisBackend, ACameraWhoseLimitsGiveNoZoomHasNone)
 {
   AxisCameraEmulatorConfig camera_config;
   camera_config.zoom_table.clear();
   AxisCameraEmulator camera(camera_config);
-  auto backend = makeAxisBackend(configFor(camera.port()));
+  Warnings warnings;
+  AxisConfig config = configFor(camera.port());
+  config.axis.warn = warnings.sink();
+  std::shared_ptr<DeviceBackend> backend = makeAxisBackend(config);
   backend->start();
-  EXPECT_FALSE(backend->capabilities().axes[ZOOM].present);
+  EXPECT_EQ(zoomSource(*backend), AxisZoomSource::NO_ZOOM);
+  const AxisCapability zoom = backend->capabilities().axes[ZOOM];
+  EXPECT_FALSE(zoom.present);
+  EXPECT_FALSE(zoom.velocity);
+  EXPECT_TRUE(targets(camera.server(), "query=attributes").empty());
+  EXPECT_TRUE(warnings.all().empty());
+  EXPECT_EQ(runGoal(backend, goal_supervisor_test::positionGoal(0.2, 0.1, 4.0)), "REJECTED: this Axis camera's limits "
+                                                                                 "give no zoom: zoom goals are not "
+                                                                                 "supported");
+  backend->moveAtVelocity({ 0.1, 0.0, 0.0 });
+  ASSERT_TRUE(waitUntil([&] { return !targets(camera.server(), "continuouspantiltmove").empty(); }, WAIT));
+  EXPECT_EQ(targets(camera.server(), "continuouspantiltmove")[0], "/axis-cgi/com/"
+                                                                  "ptz.cgi?camera=1&continuouspantiltmove=7,0");
+  backend->stop();
+}
 
-  AxisCameraEmulator zoom_camera{ AxisCameraEmulatorConfig() };
-  AxisConfig configured = configFor(zoom_camera.port());
-  configured.axis.zoom_table = AxisCameraEmulatorConfig::DEFAULT_ZOOM_TABLE;
-  auto configured_backend = makeAxisBackend(configured);
-  configured_backend->start();
-  EXPECT_NEAR(configured_backend->capabilities().axes[ZOOM].range.max, 18.0, 1e-9);
-  EXPECT_TRUE(targets(zoom_camera.server(), "query=attributes").empty());  // the configured table wins
+TEST(AxisBackend, AConfiguredTableOrOpticalZoomWinsOverTheCameraAndIsNoGuess)
+{
+  {
+    AxisCameraEmulator camera{ AxisCameraEmulatorConfig() };
+    AxisConfig configured = configFor(camera.port());
+    configured.axis.zoom_table = "1:1,9999:20";
+    auto backend = makeAxisBackend(configured);
+    EXPECT_NEAR(backend->capabilities().axes[ZOOM].range.max, 20.0, 1e-9);  // known before the start
+    backend->start();
+    EXPECT_EQ(zoomSource(*backend), AxisZoomSource::CONFIGURED_TABLE);
+    EXPECT_NEAR(backend->capabilities().axes[ZOOM].range.max, 20.0, 1e-9);
+    EXPECT_TRUE(targets(camera.server(), "query=attributes").empty());
+    EXPECT_EQ(diagnostic(*backend, "zoom X-factor"), "zoom_table 1:1,9999:20");
+  }
+  {
+    AxisCameraEmulator camera(fieldCamera("Q8665-E"));
+    Warnings warnings;
+    AxisConfig configured = configFor(camera.port());
+    configured.axis.zoom_max_factor = 30.0;
+    configured.axis.warn = warnings.sink();
+    std::shared_ptr<DeviceBackend> backend = makeAxisBackend(configured);
+    backend->start();
+    EXPECT_EQ(zoomSource(*backend), AxisZoomSource::CONFIGURED_MAXIMUM);
+    const AxisCapability zoom = backend->capabilities().axes[ZOOM];
+    EXPECT_TRUE(zoom.absolute && zoom.feedback);
+    EXPECT_EQ(zoom.limitation, "");
+    EXPECT_TRUE(warnings.all().empty());
+    EXPECT_TRUE(targets(camera.server(), "query=attributes").empty());
+    EXPECT_TRUE(targets(camera.server(), "param.cgi").empty());
+    EXPECT_EQ(runGoal(backend, goal_supervisor_test::positionGoal(-0.2, 0.0, 12.0)).rfind("SUCCEEDED: reached", 0), 0u);
+    EXPECT_NEAR(camera.sample().position[ZOOM], 12.0, 0.02);
+  }
+  AxisConfig both = configFor(1);
+  both.axis.zoom_table = "1:1,9999:20";
+  both.axis.zoom_max_factor = 20.0;
+  EXPECT_THROW(makeAxisBackend(both), ConfigError);
+  AxisConfig flat = configFor(1);
+  flat.axis.zoom_max_factor = 1.0;
+  EXPECT_THROW(makeAxisBackend(flat), ConfigError);
+}
+
+/// A camera answering each request by the first of \p answers whose key its target contains (else `Error:`).
+std::unique_ptr<HttpCameraServer> cannedCamera(const std::vector<std::pair<std::string, HttpAnswer>>& answers)
+{
+  return std::make_unique<HttpCameraServer>(
+      HttpCameraServerConfig(), [answers](const std::string&, const std::string& target, const std::string&) {
+        for (const auto& answer : answers)
+        {
+          if (target.find(answer.first) != std::string::npos)
+          {
+            return answer.second;
+          }
+        }
+        return HttpAnswer{ 200, "text/plain", "Error:\r\nunknown\r\n" };
+      });
+}
+
+const HttpAnswer CANNED_LIMITS{ 200, "text/plain",
+                                "MinPan=-180\r\nMaxPan=180\r\nMinTilt=-90\r\nMaxTilt=20\r\nMinZoom=1\r\nMaxZoom="
+                                "19999\r\n" };
+
+TEST(AxisBackend, TheCamerasOpticalMaximumAndAPositionWithoutZoomAreTakenAsTheyAre)
+{
+  // maxOpticalZoomMag only (no zoomSteps): linear, digital range cut at the optical end; no info=1 answer: VAPIX's
+  // documented commands assumed, the informative ones not declared.
+  auto camera = cannedCamera(
+      { { "query=limits", CANNED_LIMITS },
+        { "query=attributes", { 200, "text/plain", "Attributes for camera 1\r\nmaxOpticalZoomMag=20\r\n" } },
+        { "query=position", { 200, "text/plain", "pan=0\r\ntilt=0\r\nzoom=5000\r\n" } } });
+  std::shared_ptr<DeviceBackend> backend = makeAxisBackend(configFor(camera->port()));
+  backend->start();
+  EXPECT_EQ(zoomSource(*backend), AxisZoomSource::CAMERA_MAXIMUM);
+  Capabilities capabilities = backend->capabilities();
+  EXPECT_NEAR(capabilities.axes[ZOOM].range.max, 20.0, 1e-9);
+  EXPECT_TRUE(capabilities.axes[ZOOM].absolute && capabilities.axes[ZOOM].velocity);
+  EXPECT_FALSE(capabilities.relative_moves || capabilities.device_presets || capabilities.device_home);
+  ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
+  EXPECT_NEAR(backend->sample().position[ZOOM], 1.0 + 4999.0 * 19.0 / 9998.0, 1e-6);
+
+  // A table, but a position without zoom=: nothing to see a zoom goal reached by.
+  auto blind = cannedCamera({ { "query=limits", CANNED_LIMITS },
+                              { "query=attributes", { 200, "text/plain", "maxOpticalZoomMag=20\r\n" } },
+                              { "query=position", { 200, "text/plain", "pan=0\r\ntilt=0\r\n" } } });
+  Warnings warnings;
+  AxisConfig config = configFor(blind->port());
+  config.axis.warn = warnings.sink();
+  backend = makeAxisBackend(config);
+  backend->start();
+  const AxisCapability zoom = backend->capabilities().axes[ZOOM];
+  EXPECT_TRUE(zoom.present && zoom.velocity);
+  EXPECT_FALSE(zoom.absolute || zoom.feedback);
+  EXPECT_EQ(zoom.limitation, "this Axis camera reports no zoom position");
+  ASSERT_EQ(warnings.all().size(), 1u);
+}
+
+TEST(AxisBackendStartup, UnreadableZoomAttributesAreNamed)
+{
+  auto camera =
+      cannedCamera({ { "query=limits", CANNED_LIMITS },
+                     { "query=attributes", { 200, "text/plain", "zoomSteps=value=1 | zoom=2,value=2 | zoom=1\r\n" } },
+                     { "query=position", { 200, "text/plain", "pan=0\r\ntilt=0\r\nzoom=1\r\n" } } });
+  EXPECT_EQ(startupError(configFor(camera->port())),
+            "an Axis camera on http://127.0.0.1:" + std::to_string(camera->port()) +
+                ": query=attributes&group=zoom: point 2 '2:1': values and X must increase (set axis/zoom_table or "
+                "axis/zoom_max_factor to override it)");
 }
 
 TEST(AxisBackend, VelocityGoalsAreContinuousMovesScaledByTheCamerasSpeeds)

@@ -1,7 +1,8 @@
 /**
  * \file
- * \brief The VAPIX codec against the replies of protocols.md section 6, the zoom table, and the digests IP cameras
- * authenticate with (RFC 7616's MD5 example; SHA-1 and Base64 vectors).
+ * \brief The VAPIX codec against the replies of protocols.md section 6 and of a camera in the field (issue 21: no
+ * zoom attributes), the documented attributes, info=1 and brand answers, the zoom table, the model families, and the
+ * digests IP cameras authenticate with (RFC 7616's MD5 example; SHA-1 and Base64 vectors).
  */
 #include <gtest/gtest.h>
 
@@ -108,28 +109,50 @@ TEST(VapixCodec, CommandsCarryFractionalDegreesAndClampedPercentages)
   EXPECT_EQ(out, "continuouspantiltmove=0,0");
 }
 
-TEST(VapixZoomTable, MapsThroughTheTableNeverLinearly)
+TEST(VapixZoomTable, MapsLinearlyBetweenTheTablesPoints)
 {
   ZoomTable table;
   ASSERT_EQ(ZoomTable::parse("1:1,5000:4,9999:18", table), "");
   EXPECT_DOUBLE_EQ(table.toFactor(1), 1.0);
   EXPECT_DOUBLE_EQ(table.toFactor(5000), 4.0);
   EXPECT_DOUBLE_EQ(table.toFactor(9999), 18.0);
-  // Halfway between two points, the magnification is their geometric mean: 2X at 2500.5, not the linear 2.5X.
-  EXPECT_NEAR(table.toFactor(2500.5), 2.0, 1e-9);
-  const double linear_guess = 1.0 + (9999.0 - 1.0) * (2.0 - 1.0) / (18.0 - 1.0);
-  EXPECT_GT(std::abs(table.toValue(2.0) - linear_guess), 1000.0);
+  // Halfway between two points, halfway between their X: Axis cameras step the value evenly per X.
+  EXPECT_NEAR(table.toFactor(2500.5), 2.5, 1e-9);
+  EXPECT_NEAR(table.toFactor(7499.5), 11.0, 1e-9);
   for (double factor : { 1.0, 1.5, 2.0, 3.999, 4.0, 7.5, 17.9, 18.0 })
   {
     EXPECT_NEAR(table.toFactor(table.toValue(factor)), factor, 1e-9) << factor;
   }
   EXPECT_DOUBLE_EQ(table.toValue(0.5), 1.0);  // clamped into the table
   EXPECT_DOUBLE_EQ(table.toValue(40.0), 9999.0);
+  EXPECT_DOUBLE_EQ(table.toValue(NAN), 1.0);
   EXPECT_EQ(table.toText(), "1:1,5000:4,9999:18");
-  // The ends stay the ends (the fuzzer found pow an ulp beyond them).
+  // The ends stay the ends.
   ASSERT_EQ(ZoomTable::parse("1:1,1000:1.35,2000:918", table), "");
   EXPECT_EQ(table.toFactor(table.maxValue()), table.maxFactor());
   EXPECT_EQ(table.toValue(table.maxFactor()), table.maxValue());
+}
+
+TEST(VapixZoomTable, ALinearTableMeetsTheStepsCamerasList)
+{
+  // A Q6075-E's steps (40X): 2X at 257, 3X at 513, 4X at 770, 12X at 2820 (1 + (X - 1) * 9998 / 39, rounded down).
+  const ZoomTable q6075 = ZoomTable::linear(40.0);
+  ASSERT_FALSE(q6075.empty());
+  EXPECT_EQ(q6075.toText(), "1:1,9999:40");
+  for (const auto& step : { std::make_pair(257.0, 2.0), std::make_pair(513.0, 3.0), std::make_pair(770.0, 4.0),
+                            std::make_pair(2820.0, 12.0) })
+  {
+    EXPECT_NEAR(q6075.toValue(step.second), step.first, 1.0) << step.second << "X";
+  }
+  // A 29X camera with 12X digital zoom, as its web interface lists it: 15X at 5000, 29X at 9999, 58X at 10909,
+  // 348X at 19999.
+  const ZoomTable digital = ZoomTable::linear(29.0, 12.0);
+  EXPECT_NEAR(digital.toFactor(5000), 15.0, 0.01);
+  EXPECT_DOUBLE_EQ(digital.toFactor(9999), 29.0);
+  EXPECT_NEAR(digital.toFactor(10909), 58.0, 0.1);
+  EXPECT_DOUBLE_EQ(digital.toFactor(19999), 348.0);
+  EXPECT_TRUE(ZoomTable::linear(1.0).empty());
+  EXPECT_TRUE(ZoomTable::linear(NAN).empty());
 }
 
 TEST(VapixZoomTable, RejectsTablesThatCannotMap)
@@ -141,17 +164,211 @@ TEST(VapixZoomTable, RejectsTablesThatCannotMap)
   EXPECT_EQ(ZoomTable::parse("1:1,500:0.5", table), "point 2 '500:0.5': values and X must increase");
   EXPECT_EQ(ZoomTable::parse("1:1,1:2", table), "point 2 '1:2': values and X must increase");
   EXPECT_NE(ZoomTable::parse("1:0,2:1", table), "");
-  EXPECT_EQ(ZoomTable::parse("1:1,9999:1e300", table), "point 2 '9999:1e300': X must be 0.01..100000 and the value 0..19999");
+  EXPECT_EQ(ZoomTable::parse("1:1,9999:1e300", table), "point 2 '9999:1e300': X must be 0.01..100000 and the value "
+                                                       "0..19999");
   // X one ulp apart (found by the fuzzer): no value between them could be read back from its X.
-  EXPECT_EQ(ZoomTable::parse("0:1,9999:1.0000000000000002", table),
-            "point 2 '9999:1.0000000000000002': X must grow by at least 0.0001 % from the point before");
+  EXPECT_EQ(ZoomTable::parse("0:1,9999:1.0000000000000002", table), "point 2 '9999:1.0000000000000002': X must grow by "
+                                                                    "at least 0.001 % from the point before");
   EXPECT_TRUE(table.empty());
   // The smallest step taken still maps every value in the table there and back.
-  ASSERT_EQ(ZoomTable::parse("0:1,9999:1.0000011", table), "");
+  ASSERT_EQ(ZoomTable::parse("0:1,9999:1.000011", table), "");
   for (double value : { 0.0, 1.0, 2999.7, 5000.0, 9999.0 })
   {
     EXPECT_NEAR(table.toValue(table.toFactor(value)), value, 1e-6 * std::max(1.0, value)) << value;
   }
+}
+
+// ---------------------------------------------------------------- a camera in the field (issue 21)
+
+/// Its info=1: the commands VAPIX documents, and no attributes among the queries.
+const char* const FIELD_INFO = "Available commands:\r\n"
+                               "{camera=[n]}\r\n"
+                               "whoami=yes\r\n"
+                               "center=[x],[y]\r\n"
+                               "   imagewidth=[n]\r\n"
+                               "   imageheight=[n]\r\n"
+                               "areazoom=[x],[y],[z]\r\n"
+                               "   imagewidth=[n]\r\n"
+                               "   imageheight=[n]\r\n"
+                               "move={ home | up | down | left | right | upleft | upright | downleft | downright | "
+                               "stop }\r\n"
+                               "pan=[abspos]\r\n"
+                               "tilt=[abspos]\r\n"
+                               "zoom=[n]\r\n"
+                               "focus=[n]\r\n"
+                               "iris=[n]\r\n"
+                               "brightness=[offset]\r\n"
+                               "rpan=[offset]\r\n"
+                               "rtilt=[offset]\r\n"
+                               "rzoom=[offset]\r\n"
+                               "autofocus={ on | off }\r\n"
+                               "autoiris={ on | off }\r\n"
+                               "continuouspantiltmove=[x-speed],[y-speed]\r\n"
+                               "continuouszoommove=[speed]\r\n"
+                               "continuousfocusmove=[speed]\r\n"
+                               "gotoserverpresetname=[name]\r\n"
+                               "gotoserverpresetno=[n]\r\n"
+                               "speed=[n]\r\n"
+                               "query={ speed | position | limits | presetposcam | presetposall }\r\n";
+
+TEST(VapixFieldCamera, InfoListsNoAttributesButPresetsHomeAndRelativeMoves)
+{
+  const CommandList commands = readCommandList(FIELD_INFO);
+  ASSERT_FALSE(commands.empty());
+  for (const char* name : { "camera", "pan", "tilt", "zoom", "rpan", "rtilt", "continuouspantiltmove",
+                            "continuouszoommove", "gotoserverpresetno", "speed", "query" })
+  {
+    EXPECT_TRUE(commands.has(name)) << name;
+  }
+  for (const char* query : { "speed", "position", "limits", "presetposcam", "presetposall" })
+  {
+    EXPECT_TRUE(commands.offers("query", query)) << query;
+  }
+  EXPECT_FALSE(commands.offers("query", "attributes"));
+  EXPECT_TRUE(commands.offers("move", "home"));
+  EXPECT_FALSE(commands.offers("move", "sideways"));
+  EXPECT_FALSE(commands.has("Available commands:"));
+  // An Error: body or nonsense offers nothing (the backend then assumes what VAPIX documents).
+  EXPECT_TRUE(readCommandList("Error:\r\ninfo: unknown value: 2\r\n").empty());
+  EXPECT_TRUE(readCommandList("<html>oops</html>").empty());
+}
+
+TEST(VapixFieldCamera, AskingForTheAttributesIsRefusedInTheCamerasWords)
+{
+  for (const char* body : { "Error:\r\nquery: unknown value: attributes\r\n", "Error: query: unknown value: "
+                                                                              "attributes" })
+  {
+    ZoomAttributes attributes;
+    ASSERT_EQ(readZoomAttributes(body, 1, attributes), "") << body;
+    EXPECT_TRUE(attributes.refused);
+    EXPECT_EQ(attributes.refusal, "query: unknown value: attributes");
+    ZoomTable table;
+    EXPECT_NE(zoomTableOf(attributes, table), "");
+    EXPECT_TRUE(table.empty());
+  }
+}
+
+TEST(VapixFieldCamera, LimitsAndPositionCarryTheZoomAndMore)
+{
+  Reply reply;
+  ASSERT_EQ(parseReply("MinPan=-180\r\nMaxPan=180\r\nMinTilt=-90\r\nMaxTilt=20\r\nMinZoom=1\r\nMaxZoom=9999\r\n"
+                       "MinIris=1\r\nMaxIris=9999\r\nMinFocus=1\r\nMaxFocus=9999\r\nMinFieldAngle=23\r\n"
+                       "MaxFieldAngle=642\r\n",
+                       reply),
+            "");
+  Limits limits;
+  ASSERT_EQ(readLimits(reply, limits), "");
+  EXPECT_TRUE(limits.has_zoom);
+  EXPECT_EQ(limits.min_zoom, 1.0);
+  EXPECT_EQ(limits.max_zoom, 9999.0);
+  EXPECT_EQ(limits.max_tilt, 20.0);
+  ASSERT_EQ(parseReply("pan=-12.3456\r\ntilt=-30.5\r\nzoom=2500\r\niris=3072\r\nfocus=6554\r\nbrightness=4999\r\n"
+                       "autofocus=on\r\nautoiris=on\r\n",
+                       reply),
+            "");
+  Position position;
+  ASSERT_EQ(readPosition(reply, position), "");
+  EXPECT_TRUE(position.has_zoom);
+  EXPECT_EQ(position.zoom, 2500.0);
+  EXPECT_EQ(position.pan, -12.3456);
+  ASSERT_EQ(parseReply("pan=1\r\ntilt=2\r\n", reply), "");
+  ASSERT_EQ(readPosition(reply, position), "");
+  EXPECT_FALSE(position.has_zoom);
+}
+
+TEST(VapixAttributes, TheDocumentedSectionsGiveTheZoomStepsOfTheChannelAsked)
+{
+  const std::string body = "Attributes for camera 1\r\n"
+                           "speeds=value=1 | speed=0.05,value=9 | speed=0.16,value=100 | speed=150\r\n"
+                           "maxOpticalZoomMag=30\r\n"
+                           "zoomSteps=value=1 | zoom=1,value=3868 | zoom=2 | visible=false,value=7736 | zoom=3,"
+                           "value=9999 | zoom=3.584961\r\n"
+                           "Attributes for camera 2\r\n"
+                           "maxOpticalZoomMag=12\r\n"
+                           "maxDigitalZoomMag=4\r\n";
+  ZoomAttributes first;
+  ASSERT_EQ(readZoomAttributes(body, 1, first), "");
+  EXPECT_FALSE(first.refused);
+  EXPECT_EQ(first.max_optical, 30.0);
+  ASSERT_EQ(first.steps.size(), 4u);
+  EXPECT_EQ(first.steps[1], std::make_pair(3868.0, 2.0));
+  EXPECT_EQ(first.steps[3], std::make_pair(9999.0, 3.584961));
+  ZoomTable table;
+  ASSERT_EQ(zoomTableOf(first, table), "");  // the steps win over the maximum
+  EXPECT_DOUBLE_EQ(table.toFactor(7736), 3.0);
+  EXPECT_DOUBLE_EQ(table.maxFactor(), 3.584961);
+
+  ZoomAttributes second;
+  ASSERT_EQ(readZoomAttributes(body, 2, second), "");
+  EXPECT_TRUE(second.steps.empty());
+  ASSERT_EQ(zoomTableOf(second, table), "");  // no steps: the maximum, linear, with the digital range
+  EXPECT_DOUBLE_EQ(table.toFactor(9999), 12.0);
+  EXPECT_DOUBLE_EQ(table.toFactor(19999), 48.0);
+
+  ZoomAttributes third;
+  EXPECT_EQ(readZoomAttributes(body, 3, third), "no attributes for camera 3");
+  // Without sections the answer is the channel's own; without zoom figures it gives no table.
+  ASSERT_EQ(readZoomAttributes("maxOpticalZoomMag=20\r\n", 1, third), "");
+  EXPECT_EQ(third.max_optical, 20.0);
+  ASSERT_EQ(readZoomAttributes("Attributes for camera 1\r\n", 1, third), "");
+  EXPECT_EQ(zoomTableOf(third, table), "no zoomSteps and no maxOpticalZoomMag");
+}
+
+TEST(VapixAttributes, UnreadableAttributesAreNamed)
+{
+  ZoomAttributes attributes;
+  EXPECT_EQ(
+      readZoomAttributes("Attributes for camera 1\r\nzoomSteps=value=1 | zoom=1,value=x | zoom=2\r\n", 1, attributes),
+      "zoomSteps entry 2 'value=x | zoom=2' has no numbers value= and zoom=");
+  EXPECT_EQ(readZoomAttributes("<html>hello</html>", 1, attributes), "line 1 '<html>hello</html>' is neither "
+                                                                     "'Attributes for camera N' nor name=value");
+  EXPECT_EQ(readZoomAttributes("maxOpticalZoomMag=0.5", 1, attributes), "maxOpticalZoomMag '0.5' is not a "
+                                                                        "magnification");
+  ASSERT_EQ(readZoomAttributes("zoomSteps=value=1 | zoom=2,value=2 | zoom=1", 1, attributes), "");
+  ZoomTable table;
+  EXPECT_EQ(zoomTableOf(attributes, table), "point 2 '2:1': values and X must increase");
+}
+
+TEST(VapixBrand, TheProductNumberAndItsFamilysZoom)
+{
+  Reply reply;
+  ASSERT_EQ(parseReply("root.Brand.Brand=AXIS\r\nroot.Brand.ProdFullName=AXIS Q6155-E PTZ Dome Network Camera\r\n"
+                       "root.Brand.ProdNbr=Q6155-E\r\nroot.Brand.ProdShortName=AXIS Q6155-E\r\n"
+                       "root.Brand.ProdType=PTZ Dome Network Camera\r\nroot.Brand.ProdVariant=\r\n"
+                       "root.Brand.WebURL=http://www.axis.com\r\n",
+                       reply),
+            "");
+  Product product;
+  ASSERT_EQ(readProduct(reply, product), "");
+  EXPECT_EQ(product.number, "Q6155-E");
+  EXPECT_EQ(product.full_name, "AXIS Q6155-E PTZ Dome Network Camera");
+  FamilyZoom zoom;
+  ASSERT_TRUE(modelFamilyZoom(product.number, zoom));
+  EXPECT_EQ(zoom.family, "Q61");
+  EXPECT_EQ(zoom.max_optical, 30.0);
+  ASSERT_TRUE(modelFamilyZoom("m5525-e", zoom));
+  EXPECT_EQ(zoom.max_optical, 10.0);
+  for (const char* unknown : { "Q8665-E", "214", "M1065-LW", "", "Q6" })
+  {
+    EXPECT_FALSE(modelFamilyZoom(unknown, zoom)) << unknown;
+  }
+  for (const FamilyZoom& family : modelFamilyZooms())
+  {
+    EXPECT_FALSE(ZoomTable::linear(family.max_optical).empty()) << family.family;
+  }
+  ASSERT_EQ(parseReply("# Error: Error -1 getting param in group 'root.Brand'\r\n", reply).empty(), false);
+  ASSERT_EQ(parseReply("root.Brand.Brand=AXIS\r\n", reply), "");
+  EXPECT_EQ(readProduct(reply, product), "no root.Brand.ProdNbr");
+}
+
+TEST(VapixCodec, AnAxisGivenAsNaNIsLeftOut)
+{
+  std::string out;
+  appendAbsoluteMove(out, 12.5, NAN, NAN, 50);
+  EXPECT_EQ(out, "pan=12.5000&speed=50");
+  out.clear();
+  appendAbsoluteMove(out, NAN, -3.0, 4000.4, 100);
+  EXPECT_EQ(out, "tilt=-3.0000&zoom=4000&speed=100");
 }
 
 TEST(CameraDigests, Rfc7616Md5Example)

@@ -1,7 +1,8 @@
 /**
  * \file
- * \brief libFuzzer target: the VAPIX reply reader, the position and limits readers and the zoom table on arbitrary
- * text. Whatever reads, reads consistently: a zoom table maps every value inside it and back.
+ * \brief libFuzzer target: the VAPIX reply reader, the position and limits readers, the zoom attributes, info=1 and
+ * brand readers and the zoom table on arbitrary text. Whatever reads, reads consistently: a zoom table maps every
+ * value inside it and back, and the attributes give a table or say why not.
  */
 #include <cmath>
 #include <cstdint>
@@ -11,6 +12,24 @@
 #include "ptz_action_server/core/axis/vapix_codec.h"
 
 using namespace ptz_action_server::vapix;
+
+namespace
+{
+/// A table maps every value inside it into its X range and back.
+void checkTable(const ZoomTable& table)
+{
+  for (double share : { 0.0, 0.3, 0.5, 1.0 })
+  {
+    const double value = table.minValue() + share * (table.maxValue() - table.minValue());
+    const double factor = table.toFactor(value);
+    if (!(factor >= table.minFactor() && factor <= table.maxFactor()) ||
+        std::abs(table.toValue(factor) - value) > 1e-6 * std::max(1.0, std::abs(value)))
+    {
+      std::abort();
+    }
+  }
+}
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
@@ -38,16 +57,33 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   ZoomTable table;
   if (ZoomTable::parse(body, table).empty())
   {
-    for (double share : { 0.0, 0.3, 0.5, 1.0 })
+    checkTable(table);
+  }
+  ZoomAttributes attributes;
+  const std::string attributes_problem = readZoomAttributes(body, 1, attributes);
+  if (!attributes_problem.empty() && (attributes.refused || !attributes.steps.empty() || attributes.max_optical != 0.0))
+  {
+    std::abort();  // a problem leaves nothing behind
+  }
+  ZoomTable camera_table;
+  if (attributes_problem.empty() && !attributes.refused && zoomTableOf(attributes, camera_table).empty())
+  {
+    checkTable(camera_table);
+  }
+  const CommandList commands = readCommandList(body);
+  for (const auto& command : commands.commands)
+  {
+    if (command.first.empty() || !commands.has(command.first))
     {
-      const double value = table.minValue() + share * (table.maxValue() - table.minValue());
-      const double factor = table.toFactor(value);
-      if (!(factor >= table.minFactor() && factor <= table.maxFactor()) ||
-          std::abs(table.toValue(factor) - value) > 1e-6 * std::max(1.0, std::abs(value)))
-      {
-        std::abort();
-      }
+      std::abort();
     }
+  }
+  Product product;
+  FamilyZoom family;
+  if (readProduct(reply, product).empty() && modelFamilyZoom(product.number, family) &&
+      ZoomTable::linear(family.max_optical).empty())
+  {
+    std::abort();
   }
   return 0;
 }

@@ -19,16 +19,29 @@ namespace ptz_action_server
 struct AxisCameraEmulatorConfig
 {
   HttpCameraServerConfig http;
-  /// Pan -170..170 deg, tilt -20..90 deg, zoom 1..18X; speeds as SimDeviceConfig::defaults().
+  /// Pan -170..170 deg, tilt -20..90 deg; speeds as SimDeviceConfig::defaults(). The zoom range follows the lens.
   SimDeviceConfig device = defaultDevice();
-  /// VAPIX zoom value -> X (`VALUE:X,...`); "" = a camera without the zoom attributes (answers `Error:`)
+  /// The lens: VAPIX zoom value -> X (`VALUE:X,...`); "" = no zoom at all (no MinZoom/MaxZoom in the limits, no
+  /// zoom= in the position).
   std::string zoom_table = DEFAULT_ZOOM_TABLE;
+  /// The firmware answers `query=attributes&group=zoom` (zoomSteps: the lens's points, maxOpticalZoomMag) and lists
+  /// it in `info=1`. false: a firmware without it, as a field camera: `info=1` lists
+  /// `query={ speed | position | limits | presetposcam | presetposall }` and asking answers
+  /// `Error:` / `query: unknown value: attributes`.
+  bool attributes = true;
+  /// `root.Brand.ProdNbr` of param.cgi (`ProdFullName` "AXIS <model> PTZ Network Camera").
+  std::string model = DEFAULT_MODEL;
   int cameras = 1;  ///< video channels: `camera=` beyond them is refused
 
   static SimDeviceConfig defaultDevice();
-  /// An 18X optical zoom: the magnification grows faster towards tele, as optics do.
-  static constexpr const char* DEFAULT_ZOOM_TABLE = "1:1,1000:1.35,2000:1.8,3000:2.4,4000:3.2,5000:4.3,6000:5.8,7000:7."
-                                                    "7,8000:10.3,9000:13.7,9999:18";
+  /// An 18X optical zoom listed per X as Axis cameras list their zoomSteps: VAPIX values step evenly per X.
+  static constexpr const char* DEFAULT_ZOOM_TABLE = "1:1,589:2,1177:3,1765:4,2353:5,2941:6,3529:7,4117:8,4705:9,5294:"
+                                                    "10,5882:11,6470:12,7058:13,7646:14,8234:15,"
+                                                    "8822:16,9410:17,9999:18";
+  /// An 18X model (P55 family).
+  static constexpr const char* DEFAULT_MODEL = "P5534-E";
+  /// The lens of a camera with \p max_optical X at VAPIX zoom 9999, linear (ZoomTable::linear()), as text.
+  static std::string linearZoomTable(double max_optical);
 };
 
 /**
@@ -36,8 +49,11 @@ struct AxisCameraEmulatorConfig
  *
  * `/axis-cgi/com/ptz.cgi` (GET query or POST form): `pan`, `tilt` (fractional degrees), `zoom` (1..9999), `speed`
  * (1..100), `rpan`, `rtilt`, `rzoom`, `continuouspantiltmove=P,T`, `continuouszoommove=Z`, `move=stop|home` answer
- * 204; `query=position|limits|speed|attributes` (with `group=zoom`) answer `key=value` lines; anything else an
- * `Error:` body as the camera words it. Other paths: 404. Thread-safe.
+ * 204; `query=position|limits|speed|presetposcam|presetposall` answer `key=value` lines (a position carries pan,
+ * tilt, zoom, iris, focus, brightness, autofocus, autoiris), `query=attributes&group=zoom` the documented sections
+ * (unless AxisCameraEmulatorConfig::attributes is off), `info=1` the commands it takes; anything else an `Error:`
+ * body as the camera words it. `/axis-cgi/param.cgi?action=list&group=root.Brand` answers the brand parameters. Other
+ * paths: 404. Thread-safe.
  */
 class AxisCameraEmulator
 {
@@ -66,6 +82,8 @@ public:
 private:
   HttpAnswer handle(const std::string& method, const std::string& target, const std::string& body);
   HttpAnswer query(const std::string& what, const std::string& group, TimePoint now);
+  HttpAnswer info() const;
+  HttpAnswer parameters(const std::string& action, const std::string& group) const;
 
   const AxisCameraEmulatorConfig config_;
   const std::shared_ptr<const Clock> clock_;

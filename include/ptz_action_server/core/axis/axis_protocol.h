@@ -1,11 +1,15 @@
 /**
  * \file
  * \brief Axis PTZ cameras over VAPIX (HTTP): absolute moves in fractional degrees, continuous moves for velocity
- * goals, `move=stop` for a cancel, `query=position` polled at 10 Hz, limits and the zoom table read at start.
+ * goals, `move=stop` for a cancel, `query=position` polled at 10 Hz; limits, offered commands and the zoom X-factor
+ * found out at start.
  */
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <mutex>
+#include <string>
 
 #include "ptz_action_server/core/axis/vapix_codec.h"
 #include "ptz_action_server/core/device/device_backend.h"
@@ -21,8 +25,17 @@ struct AxisSettings
   double tilt_max_speed = 1.0;  ///< rad/s
   double zoom_max_rate = 8.0;   ///< X/s of `continuouszoommove=100`
   double acceleration = 3.0;    ///< rad/s^2, for goal timeouts
-  /// `VALUE:X,...`; "" = ask the camera (`query=attributes&group=zoom`), falling back to no zoom if it has no table
+  /// `VALUE:X,...` (VAPIX zoom -> X): wins over whatever the camera says; "" = find out (see AxisProtocol)
   std::string zoom_table;
+  /// X at VAPIX zoom 9999 (the camera's optical zoom, from its data sheet), linear from 1X at 1: wins over the
+  /// camera's table; 0 = find out. Not together with zoom_table.
+  double zoom_max_factor = 0.0;
+  /// A camera that gives no table: assume its model family's optical zoom (modelFamilyZoom()), with a warning; false:
+  /// its zoom X stays unknown (zoom goals are refused, velocity goals work).
+  bool zoom_guess = true;
+  /// Called on the I/O thread with a start-up warning (the X-factor is a guess, or unknown), once per distinct text;
+  /// may be empty. The node logs it.
+  std::function<void(const std::string&)> warn;
 };
 
 /// Everything an Axis backend is built from.
@@ -46,13 +59,33 @@ struct AxisCounters
   Counter malformed;      ///< bodies that were neither `key=value` lines nor `Error:`
 };
 
+/// Where the zoom X-factor comes from, best first.
+enum class AxisZoomSource
+{
+  NO_ZOOM,             ///< `query=limits` gives no MinZoom / MaxZoom: the camera has no zoom
+  CONFIGURED_TABLE,    ///< the zoom_table setting
+  CONFIGURED_MAXIMUM,  ///< the zoom_max_factor setting, linear
+  CAMERA_TABLE,        ///< the camera's zoomSteps
+  CAMERA_MAXIMUM,      ///< the camera's maxOpticalZoomMag (and maxDigitalZoomMag), linear
+  MODEL_GUESS,         ///< the model family's usual optical zoom, linear: a guess, with a warning
+  UNKNOWN,             ///< none of the above: zoom X unknown (zoom goals refused), with a warning
+};
+
 /**
  * \brief VAPIX PTZ over a DeviceSession's HTTP link.
  *
- * At every (re)connection: `query=limits` (limits in degrees, the node intersects them with the URDF's) and, unless a
- * table is configured, `query=attributes&group=zoom` (the zoom table). 401, 403, 404, `Error:` bodies and malformed
- * replies during the set-up fail the start with the reason (later: the connection is dropped and set up again after
- * the backoff). A command answered with `Error:` or an HTTP error is a device fault with the camera's words.
+ * At every (re)connection: `query=limits` (limits in degrees, the node intersects them with the URDF's), `info=1`
+ * (what the camera offers: absolute and continuous moves, rpan/rtilt, presets, home), `query=position` (does it
+ * report its zoom), then, when the limits give a zoom, its X-factor from the first that has one: zoom_table,
+ * zoom_max_factor, the camera's `query=attributes&group=zoom` (zoomSteps, or maxOpticalZoomMag: firmware without
+ * them answers `Error:`), the model family's usual optical zoom (param.cgi `root.Brand.ProdNbr`; a guess, warned
+ * about). Without any, zoom is declared present without `absolute` and `feedback` (velocity goals only), never
+ * reported as a silent 1X.
+ *
+ * 401, 403, 404, `Error:` bodies and malformed replies to limits or position, and an unreadable zoom table, fail the
+ * start with the reason (later: the connection is dropped and set up again after the backoff); `info=1`, the
+ * attributes and param.cgi only inform. A command answered with `Error:` or an HTTP error is a device fault with the
+ * camera's words.
  */
 class AxisProtocol : public DeviceProtocol
 {
@@ -67,7 +100,7 @@ public:
   {
     return "an Axis camera";
   }
-  /// Pan, tilt within +-180 / +-90 deg until the camera's limits are read; zoom as the configured table says.
+  /// Pan, tilt within +-180 / +-90 deg until the camera's limits are read; zoom as the settings say.
   Capabilities capabilities() const override;
   void onConnected() override;
   void onReceived(const std::uint8_t*, std::size_t) override
@@ -75,7 +108,7 @@ public:
   }
   /// `query=position`.
   void poll() override;
-  /// `pan tilt zoom speed`, fractional degrees, the zoom through the table.
+  /// `pan tilt zoom speed`, fractional degrees, the zoom through the table (left out without one, or as NaN).
   void goTo(const AxisValues& position) override;
   /// `continuouspantiltmove` and `continuouszoommove`, scaled by the max speeds.
   void moveAtVelocity(const AxisValues& velocity) override;
@@ -88,7 +121,13 @@ public:
     return counters_;
   }
 
+  /// Where the zoom X-factor came from at the last set-up. Any thread.
+  AxisZoomSource zoomSource() const;
+
 private:
+  /// GETs \p path; true and \p body filled on a 200 or 204, otherwise \p problem says why ("" when the link was
+  /// lost: the session has its reason). \p what names the request in the problem.
+  bool exchange(const std::string& path, const std::string& what, std::string& body, std::string& problem);
   /// Sends `ptz.cgi?camera=N&` + \p arguments; true and \p reply filled when the camera answered usably, otherwise
   /// \p problem says why ("" when the link was lost: the session has its reason).
   bool request(const std::string& arguments, vapix::Reply& reply, std::string& problem);
@@ -96,19 +135,41 @@ private:
   void command(const std::string& arguments);
   /// The set-up failed: the start fails with \p problem; after a start, the connection is set up again later.
   void setupFailed(const std::string& problem);
-  Capabilities cameraCapabilities(const vapix::Limits& limits) const;
+  /// Finds the zoom X-factor (zoom_table_, zoom_source_); false when the set-up cannot go on (it said why).
+  bool findZoomTable(const vapix::Limits& limits);
+  /// Logs \p text through the settings' warn, unless it was the last warning.
+  void warnOnce(const std::string& text);
+  Capabilities cameraCapabilities(const vapix::Limits& limits, const vapix::CommandList& commands) const;
+  /// The X-factor of a position reply (1 when it cannot be known: the zoom's feedback is false then).
+  double zoomFactor(const vapix::Position& position) const;
 
   const AxisSettings settings_;
   DeviceSession& session_;
   HttpLink& http_;
   AxisCounters counters_;
+  vapix::ZoomTable configured_table_;  ///< from zoom_table or zoom_max_factor; empty: find out
 
   // I/O thread only.
-  vapix::ZoomTable zoom_table_;  ///< empty: no zoom
-  HttpRequest request_;          ///< reused: the 10 Hz poll allocates nothing once warm
+  vapix::ZoomTable zoom_table_;  ///< empty: zoom X unknown (or no zoom)
+  AxisZoomSource zoom_source_ = AxisZoomSource::NO_ZOOM;
+  bool zoom_feedback_ = false;  ///< the position reply carries zoom= and zoom_table_ maps it
+  bool zoom_velocity_ = false;  ///< the camera has a zoom it moves with continuouszoommove
+  std::string last_warning_;
+  HttpRequest request_;  ///< reused: the 10 Hz poll allocates nothing once warm
   vapix::Reply reply_;
   std::string arguments_;
+  std::string arguments_path_;
+  std::string body_;
+
+  // Shared with diagnostics() and zoomSource(); guarded by facts_mutex_.
+  mutable std::mutex facts_mutex_;
+  AxisZoomSource shared_zoom_source_ = AxisZoomSource::NO_ZOOM;
+  std::string zoom_text_;   ///< where the X-factor came from, for diagnostics
+  std::string model_text_;  ///< the product, when it was read
 };
+
+/// "camera table", "model guess", ... for messages and diagnostics.
+const char* zoomSourceName(AxisZoomSource source);
 
 /// An Axis backend: AxisProtocol on a DeviceSession over HTTP.
 std::unique_ptr<DeviceBackend> makeAxisBackend(const AxisConfig& config,
