@@ -54,7 +54,6 @@ public:
                         " are both set: set one (the table, or the optical zoom for a linear one)");
     }
     axis.zoom_guess = params.flag("zoom_guess", axis.zoom_guess);
-    axis.warn = [](const std::string& text) { ROS_WARN("axis: %s", text.c_str()); };
     return makeAxisBackend(config, context.clock);
   }
 };

@@ -76,22 +76,17 @@ std::vector<std::string> targets(HttpCameraServer& server, const std::string& co
   return found;
 }
 
-/// The warnings a backend logs, collected.
+/// Every warning a backend gave so far, taken as the node takes them (PtzBackend::takeWarnings()).
 struct Warnings
 {
-  std::mutex mutex;
   std::vector<std::string> texts;
 
-  std::function<void(const std::string&)> sink()
+  std::vector<std::string> all(PtzBackend& backend)
   {
-    return [this](const std::string& text) {
-      std::lock_guard<std::mutex> lock(mutex);
+    for (const std::string& text : backend.takeWarnings())
+    {
       texts.push_back(text);
-    };
-  }
-  std::vector<std::string> all()
-  {
-    std::lock_guard<std::mutex> lock(mutex);
+    }
     return texts;
   }
 };
@@ -247,7 +242,6 @@ TEST(AxisBackend, ReadsTheLimitsTheCommandsAndTheCamerasZoomStepsAtStart)
   AxisCameraEmulator camera{ AxisCameraEmulatorConfig() };
   Warnings warnings;
   AxisConfig config = configFor(camera.port());
-  config.axis.warn = warnings.sink();
   auto backend = makeAxisBackend(config);
   backend->start();
   const Capabilities capabilities = backend->capabilities();
@@ -273,7 +267,7 @@ TEST(AxisBackend, ReadsTheLimitsTheCommandsAndTheCamerasZoomStepsAtStart)
   EXPECT_EQ(targets(camera.server(), "query=attributes&group=zoom").size(), 1u);
   EXPECT_EQ(targets(camera.server(), "info=1").size(), 1u);
   EXPECT_TRUE(targets(camera.server(), "param.cgi").empty());  // the camera's table needs no model
-  EXPECT_TRUE(warnings.all().empty());
+  EXPECT_TRUE(warnings.all(*backend).empty());
 
   // 4X goes out as the camera's step for 4X, and the camera gets to 4X.
   backend->goTo({ 0.1, 0.05, 4.0 });
@@ -289,7 +283,6 @@ TEST(AxisBackend, AFieldCameraWithoutAttributesGetsItsModelFamilysZoomAsAGuessWa
   AxisCameraEmulator camera(fieldCamera("Q6155-E"));
   Warnings warnings;
   AxisConfig config = configFor(camera.port());
-  config.axis.warn = warnings.sink();
   std::shared_ptr<DeviceBackend> backend = makeAxisBackend(config);
   backend->start();
   EXPECT_EQ(zoomSource(*backend), AxisZoomSource::MODEL_GUESS);
@@ -298,8 +291,8 @@ TEST(AxisBackend, AFieldCameraWithoutAttributesGetsItsModelFamilysZoomAsAGuessWa
   EXPECT_NEAR(zoom.range.max, 30.0, 1e-9);
   EXPECT_NE(zoom.limitation.find("a guess"), std::string::npos) << zoom.limitation;
   EXPECT_EQ(zoom.remedy, "set axis/zoom_max_factor to its optical zoom, or axis/zoom_table");
-  ASSERT_EQ(warnings.all().size(), 1u);
-  const std::string warning = warnings.all()[0];
+  ASSERT_EQ(warnings.all(*backend).size(), 1u);
+  const std::string warning = warnings.all(*backend)[0];
   EXPECT_EQ(warning.rfind("AXIS Q6155-E PTZ Network Camera gives no zoom table (query=attributes&group=zoom: "
                           "query: unknown value: attributes): its zoom X-factor is a guess, 30X optical",
                           0),
@@ -322,7 +315,7 @@ TEST(AxisBackend, AFieldCameraWithoutAttributesGetsItsModelFamilysZoomAsAGuessWa
   camera.server().setListening(true);
   ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
   EXPECT_EQ(targets(camera.server(), "param.cgi").size(), asked + 1);
-  EXPECT_EQ(warnings.all().size(), 1u);
+  EXPECT_EQ(warnings.all(*backend).size(), 1u);
 }
 
 TEST(AxisBackend, WithoutAnyZoomTableTheZoomIsADeclaredMissingCapabilityNeverASilentOneX)
@@ -333,7 +326,6 @@ TEST(AxisBackend, WithoutAnyZoomTableTheZoomIsADeclaredMissingCapabilityNeverASi
     AxisCameraEmulator camera(fieldCamera(guess ? "Q8665-E" : "Q6155-E"));
     Warnings warnings;
     AxisConfig config = configFor(camera.port());
-    config.axis.warn = warnings.sink();
     config.axis.zoom_guess = guess;
     std::shared_ptr<DeviceBackend> backend = makeAxisBackend(config);
     backend->start();
@@ -344,9 +336,9 @@ TEST(AxisBackend, WithoutAnyZoomTableTheZoomIsADeclaredMissingCapabilityNeverASi
     EXPECT_FALSE(zoom.feedback);
     EXPECT_TRUE(zoom.velocity);  // info=1 lists continuouszoommove
     EXPECT_EQ(zoom.limitation, "this Axis camera gives no zoom table");
-    ASSERT_EQ(warnings.all().size(), 1u);
-    EXPECT_NE(warnings.all()[0].find(guess ? "its model family has no default" : "zoom_guess is off"), std::string::npos)
-        << warnings.all()[0];
+    ASSERT_EQ(warnings.all(*backend).size(), 1u);
+    EXPECT_NE(warnings.all(*backend)[0].find(guess ? "its model family has no default" : "zoom_guess is off"), std::string::npos)
+        << warnings.all(*backend)[0];
     EXPECT_EQ(diagnostic(*backend, "zoom X-factor").rfind("UNKNOWN: no zoom table", 0), 0u);
 
     // The field report's goal is refused, naming what to set; nothing moves.
@@ -377,7 +369,6 @@ TEST(AxisBackend, ACameraWhoseLimitsGiveNoZoomHasNone)
   AxisCameraEmulator camera(camera_config);
   Warnings warnings;
   AxisConfig config = configFor(camera.port());
-  config.axis.warn = warnings.sink();
   std::shared_ptr<DeviceBackend> backend = makeAxisBackend(config);
   backend->start();
   EXPECT_EQ(zoomSource(*backend), AxisZoomSource::NO_ZOOM);
@@ -385,7 +376,7 @@ TEST(AxisBackend, ACameraWhoseLimitsGiveNoZoomHasNone)
   EXPECT_FALSE(zoom.present);
   EXPECT_FALSE(zoom.velocity);
   EXPECT_TRUE(targets(camera.server(), "query=attributes").empty());
-  EXPECT_TRUE(warnings.all().empty());
+  EXPECT_TRUE(warnings.all(*backend).empty());
   EXPECT_EQ(runGoal(backend, goal_supervisor_test::positionGoal(0.2, 0.1, 4.0)), "REJECTED: this Axis camera's limits "
                                                                                  "give no zoom: zoom goals are not "
                                                                                  "supported");
@@ -415,14 +406,13 @@ TEST(AxisBackend, AConfiguredTableOrOpticalZoomWinsOverTheCameraAndIsNoGuess)
     Warnings warnings;
     AxisConfig configured = configFor(camera.port());
     configured.axis.zoom_max_factor = 30.0;
-    configured.axis.warn = warnings.sink();
     std::shared_ptr<DeviceBackend> backend = makeAxisBackend(configured);
     backend->start();
     EXPECT_EQ(zoomSource(*backend), AxisZoomSource::CONFIGURED_MAXIMUM);
     const AxisCapability zoom = backend->capabilities().axes[ZOOM];
     EXPECT_TRUE(zoom.absolute && zoom.feedback);
     EXPECT_EQ(zoom.limitation, "");
-    EXPECT_TRUE(warnings.all().empty());
+    EXPECT_TRUE(warnings.all(*backend).empty());
     EXPECT_TRUE(targets(camera.server(), "query=attributes").empty());
     EXPECT_TRUE(targets(camera.server(), "param.cgi").empty());
     EXPECT_EQ(runGoal(backend, goal_supervisor_test::positionGoal(-0.2, 0.0, 12.0)).rfind("SUCCEEDED: reached", 0), 0u);
@@ -481,14 +471,13 @@ TEST(AxisBackend, TheCamerasOpticalMaximumAndAPositionWithoutZoomAreTakenAsTheyA
                               { "query=position", { 200, "text/plain", "pan=0\r\ntilt=0\r\n" } } });
   Warnings warnings;
   AxisConfig config = configFor(blind->port());
-  config.axis.warn = warnings.sink();
   backend = makeAxisBackend(config);
   backend->start();
   const AxisCapability zoom = backend->capabilities().axes[ZOOM];
   EXPECT_TRUE(zoom.present && zoom.velocity);
   EXPECT_FALSE(zoom.absolute || zoom.feedback);
   EXPECT_EQ(zoom.limitation, "this Axis camera reports no zoom position");
-  ASSERT_EQ(warnings.all().size(), 1u);
+  ASSERT_EQ(warnings.all(*backend).size(), 1u);
 }
 
 TEST(AxisBackendStartup, UnreadableZoomAttributesAreNamed)

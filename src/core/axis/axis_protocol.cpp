@@ -229,19 +229,6 @@ void AxisProtocol::setupFailed(const std::string& problem)
   session_.disconnect(problem);
 }
 
-void AxisProtocol::warnOnce(const std::string& text)
-{
-  if (text == last_warning_)
-  {
-    return;
-  }
-  last_warning_ = text;
-  if (settings_.warn)
-  {
-    settings_.warn(text);
-  }
-}
-
 bool AxisProtocol::findZoomTable(const vapix::Limits& limits)
 {
   zoom_table_ = vapix::ZoomTable();
@@ -330,7 +317,7 @@ bool AxisProtocol::findZoomTable(const vapix::Limits& limits)
         zoom_source_ = AxisZoomSource::MODEL_GUESS;
         text = formatText("GUESS: %gX optical at VAPIX zoom 9999, linear, the usual zoom of %s", family.max_optical,
                           family.models);
-        warnOnce(camera + " gives no zoom table (" + why + "): its zoom X-factor is a guess, " +
+        session_.warn(camera + " gives no zoom table (" + why + "): its zoom X-factor is a guess, " +
                  formatText("%gX optical as is usual for %s, linear from VAPIX zoom 1 to 9999; ", family.max_optical,
                             family.models) +
                  "set axis/zoom_max_factor to its optical zoom (data sheet) or axis/zoom_table");
@@ -342,7 +329,7 @@ bool AxisProtocol::findZoomTable(const vapix::Limits& limits)
                              product.number.empty() ? "its model could not be read" :
                                                       "its model family has no default";
         text = std::string("UNKNOWN: no zoom table, ") + reason + "; zoom goals are refused";
-        warnOnce(camera + " gives no zoom table (" + why + ") and " + reason +
+        session_.warn(camera + " gives no zoom table (" + why + ") and " + reason +
                  ": zoom goals are not supported (velocity goals are); set axis/zoom_table or "
                  "axis/zoom_max_factor (its optical zoom)");
       }
@@ -407,7 +394,7 @@ void AxisProtocol::onConnected()
   Capabilities capabilities = cameraCapabilities(limits, commands);
   if (zoom_source_ != AxisZoomSource::NO_ZOOM && !zoom_table_.empty() && !position.has_zoom)
   {
-    warnOnce("this Axis camera reports no zoom position (query=position has no zoom=): zoom goals are not "
+    session_.warn("this Axis camera reports no zoom position (query=position has no zoom=): zoom goals are not "
              "supported");
   }
   session_.setCapabilities(capabilities);

@@ -33,9 +33,6 @@ struct AxisSettings
   /// A camera that gives no table: assume its model family's optical zoom (modelFamilyZoom()), with a warning; false:
   /// its zoom X stays unknown (zoom goals are refused, velocity goals work).
   bool zoom_guess = true;
-  /// Called on the I/O thread with a start-up warning (the X-factor is a guess, or unknown), once per distinct text;
-  /// may be empty. The node logs it.
-  std::function<void(const std::string&)> warn;
 };
 
 /// Everything an Axis backend is built from.
@@ -137,8 +134,6 @@ private:
   void setupFailed(const std::string& problem);
   /// Finds the zoom X-factor (zoom_table_, zoom_source_); false when the set-up cannot go on (it said why).
   bool findZoomTable(const vapix::Limits& limits);
-  /// Logs \p text through the settings' warn, unless it was the last warning.
-  void warnOnce(const std::string& text);
   Capabilities cameraCapabilities(const vapix::Limits& limits, const vapix::CommandList& commands) const;
   /// The X-factor of a position reply (1 when it cannot be known: the zoom's feedback is false then).
   double zoomFactor(const vapix::Position& position) const;
@@ -154,7 +149,6 @@ private:
   AxisZoomSource zoom_source_ = AxisZoomSource::NO_ZOOM;
   bool zoom_feedback_ = false;  ///< the position reply carries zoom= and zoom_table_ maps it
   bool zoom_velocity_ = false;  ///< the camera has a zoom it moves with continuouszoommove
-  std::string last_warning_;
   HttpRequest request_;  ///< reused: the 10 Hz poll allocates nothing once warm
   vapix::Reply reply_;
   std::string arguments_;
