@@ -354,7 +354,7 @@ void OnvifProtocol::plan(const onvif::Status& status)
   {
     chosen = generic;  // asked for, or the status comes in it: a goal and what confirms it in one space
   }
-  pan_tilt.absolute = chosen != nullptr;
+  pan_tilt.absolute = chosen != nullptr && absolute_refused_.empty();
   if (chosen != nullptr)
   {
     const Space* corrected = findSpace(corrected_, chosen->uri);
@@ -364,7 +364,11 @@ void OnvifProtocol::plan(const onvif::Status& status)
   }
   pan_tilt.velocity = findSpace(node_.continuous_pan_tilt, GENERIC_PAN_TILT_VELOCITY) != nullptr;
   std::vector<std::string> lacks;
-  if (!pan_tilt.absolute)
+  if (!pan_tilt.absolute && !absolute_refused_.empty())
+  {
+    lacks.push_back("this camera answers AbsoluteMove with " + absolute_refused_);
+  }
+  else if (!pan_tilt.absolute)
   {
     lacks.push_back(node_.absolute_pan_tilt.empty() ? "this camera lists no absolute pan-tilt space (no AbsoluteMove)" :
                                                       "this camera lists only absolute pan-tilt spaces this backend "
@@ -393,7 +397,7 @@ void OnvifProtocol::plan(const onvif::Status& status)
 
   ZoomPlan zoom;
   zoom.present = findSpace(node_.absolute_zoom, GENERIC_ZOOM_SPACE) != nullptr;
-  zoom.absolute = zoom.present;
+  zoom.absolute = zoom.present && absolute_refused_.empty();
   zoom.velocity = zoom.present && findSpace(node_.continuous_zoom, GENERIC_ZOOM_VELOCITY) != nullptr;
   const std::string zoom_space = zoomStatusSpace(status);
   zoom.feedback = zoom.present && status.has_zoom && zoom_space == GENERIC_ZOOM_SPACE;
@@ -404,6 +408,10 @@ void OnvifProtocol::plan(const onvif::Status& status)
   else if (!zoom.present && !node_.continuous_zoom.empty())
   {
     zoom.limitation = "this camera lists no zoom position space (it only zooms at a speed)";
+  }
+  else if (zoom.present && !zoom.absolute)
+  {
+    zoom.limitation = "this camera answers AbsoluteMove with " + absolute_refused_;
   }
   else if (zoom.present && !status.has_zoom)
   {
@@ -624,11 +632,38 @@ void OnvifProtocol::command(const std::string& path, const std::string& body, co
   if (!call(path, body, true, problem) && !problem.empty())
   {
     session_.reportFault(problem, serial);
+    if (std::string(operation) == "AbsoluteMove" && onvif::faultHas(message_, "ActionNotSupported"))
+    {
+      absoluteMoveRefused(message_.fault_text);
+    }
   }
   if (std::string(operation) == "ContinuousMove")
   {
     velocity_sent_at_ = session_.now();
   }
+}
+
+void OnvifProtocol::absoluteMoveRefused(const std::string& answer)
+{
+  if (!absolute_refused_.empty())
+  {
+    return;
+  }
+  // Some continuous-only cameras list position spaces all the same: their answer is the truth.
+  std::string codes;
+  for (const std::string& subcode : message_.subcodes)
+  {
+    codes += (codes.empty() ? "" : "/") + subcode;
+  }
+  absolute_refused_ = codes.empty() ? message_.fault_code : codes;  // "ter:ActionNotSupported"
+  pan_tilt_.absolute = false;
+  zoom_.absolute = false;
+  pan_tilt_.limitation = "this camera answers AbsoluteMove with " + absolute_refused_ +
+                         (pan_tilt_.limitation.empty() ? "" : " and " + pan_tilt_.limitation);
+  zoom_.limitation = zoom_.present ? "this camera answers AbsoluteMove with " + absolute_refused_ : zoom_.limitation;
+  session_.setCapabilities(cameraCapabilities());
+  warnOnce("AbsoluteMove", "the camera lists position spaces but answered AbsoluteMove with " + answer +
+                               ": it is taken as a camera that only moves at a speed (ContinuousMove) from now on");
 }
 
 void OnvifProtocol::goTo(const AxisValues& position)

@@ -136,7 +136,7 @@ private:
   struct ZoomPlan
   {
     bool present = false;   ///< the node lists the generic zoom position space
-    bool absolute = false;  ///< AbsoluteMove takes it
+    bool absolute = false;  ///< AbsoluteMove takes it (present, unless the camera refused AbsoluteMove)
     bool velocity = false;
     bool feedback = false;
     std::string limitation;
@@ -153,6 +153,8 @@ private:
   /// the link was lost).
   bool call(const std::string& path, const std::string& body, bool secure, std::string& problem);
   void command(const std::string& path, const std::string& body, const char* operation);
+  /// The camera refused AbsoluteMove as an operation it does not have: no more AbsoluteMoves, capabilities told.
+  void absoluteMoveRefused(const std::string& answer);
   void setupFailed(const std::string& problem);
   /// Everything a (re)connection asks, up to the first GetStatus (\p status).
   bool bringUp(std::string& problem, onvif::Status& status);
@@ -187,6 +189,9 @@ private:
   PanTiltPlan pan_tilt_;
   ZoomPlan zoom_;
   bool device_presets_ = false;
+  /// The camera answered AbsoluteMove with ter:ActionNotSupported although it lists position spaces: taken as
+  /// continuous-only from then on (kept across reconnections).
+  std::string absolute_refused_;
   std::vector<std::string> warned_;  ///< keys of the warnings told (once per backend, across reconnections)
   /// Listed ranges the status contradicted, by space URI: kept across reconnections (the camera lists them again).
   std::vector<onvif::Space> corrected_;
