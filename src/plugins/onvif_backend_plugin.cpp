@@ -2,6 +2,7 @@
 #include <string>
 
 #include <pluginlib/class_list_macros.hpp>
+#include <ros/console.h>
 
 #include "plugin_params.h"
 #include "ptz_action_server/core/onvif/onvif_protocol.h"
@@ -49,6 +50,8 @@ public:
     onvif.zoom_max_rate = params.number("zoom/max_rate", onvif.zoom_max_rate, 1e-3, 1000.0);
     onvif.acceleration = params.number("acceleration", onvif.acceleration, 0.0, 1e4);
     onvif.velocity_timeout = params.integer("velocity_timeout", onvif.velocity_timeout, 1, 3600);
+    // What the camera contradicts itself in (a listed range its own status leaves): once, also in diagnostics.
+    onvif.warn = [](const std::string& text) { ROS_WARN_STREAM("onvif: " << text); };
     return makeOnvifBackend(config, context.clock);
   }
 };

@@ -1,9 +1,11 @@
 /**
  * \file
  * \brief onvif_camera_emulator: an ONVIF PTZ camera (device, media and PTZ services) on a real HTTP server, over the
- * sim motion model.
+ * sim motion model, in the modes of the cameras found in the field.
  */
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "ip_camera_options.h"
@@ -13,20 +15,58 @@
 namespace
 {
 const char* PROGRAM = "onvif_camera_emulator";
-const char* OWN_USAGE = R"(usage: onvif_camera_emulator [options]
+constexpr unsigned DEFAULT_PORT = 8081;
+/// The whole help: the HTTP options' defaults are this camera's own (WS-Security admin / admin, no HTTP auth).
+const char* USAGE_FORMAT = R"(usage: onvif_camera_emulator [options]
 
-Answers as an ONVIF PTZ camera does (protocols.md section 7), SOAP 1.2 over HTTP POST: /onvif/device_service
-(GetSystemDateAndTime without authentication, GetCapabilities), /onvif/media_service (GetProfiles: profile_1 has
-PTZ), /onvif/ptz_service (GetNodes, GetConfigurationOptions, AbsoluteMove, ContinuousMove with its Timeout, Stop,
-GetStatus). Every request but GetSystemDateAndTime needs a WS-Security UsernameToken (PasswordDigest, Created
-within 5 s of the camera's clock); a wrong one is refused with ter:NotAuthorized. --user and --password set the
-WS-Security credentials (default admin / admin); --auth digest demands HTTP Digest as well (default none).
-Pan -180..180, tilt -90..90 degrees, zoom 1..18X (generic zoom z is 18^z X).
+Answers as an ONVIF PTZ camera does (protocols.md section 7), SOAP 1.2 over HTTP POST, for the ONVIF clients people
+use as well as for this package's backend:
+  /onvif/device_service  GetSystemDateAndTime (without authentication), GetCapabilities, GetServices,
+                         GetDeviceInformation
+  /onvif/media_service   GetProfiles, GetProfile (profile_0 without PTZ, profile_1 with PTZ), GetVideoSources
+  /onvif/ptz_service     GetServiceCapabilities, GetNodes, GetNode, GetConfigurations, GetConfiguration,
+                         GetConfigurationOptions, AbsoluteMove, RelativeMove, ContinuousMove (with its Timeout),
+                         Stop, GetStatus, GetPresets, SetPreset, GotoPreset, RemovePreset, GotoHomePosition,
+                         SetHomePosition
+Every request but GetSystemDateAndTime needs a WS-Security UsernameToken (PasswordDigest, Created within 5 s of the
+camera's clock); a wrong one is refused with ter:NotAuthorized. Pan -180..180, tilt -90..90 degrees, zoom 1..18X
+(generic zoom z is 18^z X). GetStatus reports in the PTZ configuration's default space, and moves that name no space
+go in it.
 
+Options:
+  --host HOST            address to listen on (default 127.0.0.1)
+  --port PORT            port (default %u; 0 = any free port)
+  --user NAME            the WS-Security user (default admin)
+  --password TEXT        its password (default admin)
+  --auth MODE            none (default: WS-Security only) or digest (HTTP Digest as well, with the same
+                         credentials, as some cameras demand)
+  --nonce-uses N         with --auth digest: a nonce goes stale after N requests (default 0: never)
 Camera options:
-  --generic-only         list only the generic spaces (no SphericalPositionSpaceDegrees)
+  --mode MODE            a camera as found in the field (default standard; may be given more than once):
+                           generic-status        lists SphericalPositionSpaceDegrees, but its default space, and so
+                                                 its status, is the generic one
+                           continuous-only       lists no position spaces: ContinuousMove only (cameras on Goke
+                                                 GK7102 chips); AbsoluteMove, presets and home are not supported
+                           refuse-absolute-move  lists the position spaces, answers AbsoluteMove with
+                                                 ter:ActionNotSupported
+                           no-position           GetStatus carries no Position
+                           no-presets            preset operations answer ter:ActionNotSupported (GetNodes still
+                                                 lists MaximumNumberOfPresets 64)
+                           wrong-generic-range   the field report's camera: generic-status, with the generic pan
+                                                 range listed as 0..1 while it moves, and reports, over -1..1
+                                                 (starts at pan -0.864666)
+                           no-relative           lists no translation spaces; RelativeMove is not supported
+                           generic-only          lists only the generic spaces (no SphericalPositionSpaceDegrees)
+  --generic-only         the same as --mode generic-only
   --clock-offset S       the camera's clock runs S seconds ahead (tokens must be stamped in its time)
   --refuse               refuse every move with ter:InvalidArgVal "PTZ is locked by another user"
+Faults:
+  --delay S              answer every request S seconds late
+  --http-error CODE      answer every request with this status (e.g. 500)
+  --silent               start silent: read requests, never answer
+  --silent-after S       fall silent S seconds after start
+Signals: SIGUSR1 toggles silence, SIGUSR2 drops every connection; SIGINT / SIGTERM end the program.
+  --pid-file PATH        write the program's pid there (for whoever sends the signals)
 )";
 }  // namespace
 
@@ -34,36 +74,56 @@ int main(int argc, char** argv)
 {
   ptz_action_server::OnvifCameraEmulatorConfig config;
   emulator_main::HttpCameraOptions options;
-  options.http = config.http;
-  options.http.port = 8081;
-  options.http.username = config.username;
-  options.http.password = config.password;
+  options.http = config.http;  // admin / admin, no HTTP authentication
+  options.http.port = DEFAULT_PORT;
   bool refuse = false;
-  const std::string usage = emulator_main::httpCameraUsage(OWN_USAGE, 8081);
-  emulator_main::parseArguments(argc, argv, PROGRAM, usage,
-                                [&](const std::string& arg, const emulator_main::Value& value) {
-                                  if (emulator_main::parseHttpCameraOption(arg, value, PROGRAM, usage.c_str(), options))
-                                  {
-                                    return true;
-                                  }
-                                  if (arg == "--generic-only")
-                                  {
-                                    config.degree_space = false;
-                                  }
-                                  else if (arg == "--clock-offset")
-                                  {
-                                    config.clock_offset = std::strtod(value(), nullptr);
-                                  }
-                                  else if (arg == "--refuse")
-                                  {
-                                    refuse = true;
-                                  }
-                                  else
-                                  {
-                                    return false;
-                                  }
-                                  return true;
-                                });
+  std::string modes;
+  char usage_text[8192];
+  std::snprintf(usage_text, sizeof(usage_text), USAGE_FORMAT, DEFAULT_PORT);
+  const std::string usage = usage_text;
+  emulator_main::parseArguments(
+      argc, argv, PROGRAM, usage, [&](const std::string& arg, const emulator_main::Value& value) {
+        if (arg == "--auth")
+        {
+          // ONVIF authenticates in the message; HTTP Digest is what some cameras add (never Basic).
+          const std::string auth = emulator_main::choice(PROGRAM, value(), arg, { "none", "digest" }, usage.c_str());
+          options.http.auth =
+              auth == "digest" ? ptz_action_server::HttpAuth::DIGEST : ptz_action_server::HttpAuth::NONE;
+          return true;
+        }
+        if (emulator_main::parseHttpCameraOption(arg, value, PROGRAM, usage.c_str(), options))
+        {
+          return true;
+        }
+        if (arg == "--mode" || arg == "--generic-only")
+        {
+          const std::string mode = arg == "--mode" ? value() : "generic-only";
+          if (!config.applyMode(mode))
+          {
+            emulator_main::fail(PROGRAM, "--mode " + mode + " is none of " + config.MODES, usage.c_str());
+          }
+          modes += (modes.empty() ? "" : ", ") + mode;
+        }
+        else if (arg == "--clock-offset")
+        {
+          const char* text = value();
+          char* end = nullptr;
+          config.clock_offset = std::strtod(text, &end);  // may be negative: a clock behind
+          if (end == text || *end != '\0' || !std::isfinite(config.clock_offset))
+          {
+            emulator_main::fail(PROGRAM, arg + " needs a number of seconds", usage.c_str());
+          }
+        }
+        else if (arg == "--refuse")
+        {
+          refuse = true;
+        }
+        else
+        {
+          return false;
+        }
+        return true;
+      });
   config.http = options.http;
   config.username = options.http.username;
   config.password = options.http.password;
@@ -73,8 +133,7 @@ int main(int argc, char** argv)
     ptz_action_server::OnvifCameraEmulator camera(config);
     camera.setRefuse(refuse);
     return emulator_main::runHttpCamera(PROGRAM, signals, camera.server(), options,
-                                        config.degree_space ? "ONVIF, degree and generic spaces" :
-                                                              "ONVIF, generic spaces only");
+                                        "ONVIF, " + (modes.empty() ? std::string("standard") : modes));
   }
   catch (const std::exception& error)
   {

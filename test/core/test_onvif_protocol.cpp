@@ -2,14 +2,24 @@
  * \file
  * \brief What only the ONVIF backend does, against onvif_camera_emulator's camera on 127.0.0.1: the bring-up (clock
  * offset, configured host kept, profile, node), ContinuousMove re-sent before its timeout, and the start-up failures
- * named (a wrong password, a missing profile, a timeout the camera does not take).
+ * named (a wrong password, a missing profile, a timeout the camera does not take). Then the cameras of the field
+ * (OnvifFieldCameras): a scripted camera that plays golden replies written from the specification and the field
+ * reports (degrees listed but the status generic, the wrong generic range, faults and malformed statuses at start-up,
+ * spaces left out), and the emulator's field modes (continuous only, no position, no presets, AbsoluteMove refused).
  */
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ctime>
+#include <limits>
+#include <map>
+#include <mutex>
 
+#include "ptz_action_server/core/goal_validation.h"
 #include "ptz_action_server/core/onvif/onvif_protocol.h"
+#include "ptz_action_server/core/units.h"
 #include "ptz_action_server/emulators/onvif_camera_emulator.h"
+#include "ptz_action_server/core/text.h"
 #include "wait_until.h"
 
 namespace ptz_action_server
@@ -115,7 +125,8 @@ TEST(OnvifBackendStartup, AMissingProfileAndAnUnacceptableTimeoutAreNamed)
   OnvifConfig config = configFor(camera);
   config.onvif.profile = "nope";
   EXPECT_EQ(startupError(config), "an ONVIF camera on http://127.0.0.1:" + std::to_string(camera.port()) +
-                                      ": GetProfiles: no profile 'nope' with a PTZConfiguration (profiles: profile_0, "
+                                      ": GetProfiles answered no profile 'nope' with a PTZConfiguration (profiles: "
+                                      "profile_0, "
                                       "profile_1)");
   config.onvif.profile.clear();
   config.onvif.velocity_timeout = 100;
@@ -137,6 +148,486 @@ TEST(OnvifBackendStartup, ACameraThatDemandsHttpDigestTooIsServed)
   // nonce serves the rest of the bring-up and every poll.
   EXPECT_EQ(camera.server().counters().challenges, 1u);
   EXPECT_EQ(camera.server().counters().refused_credentials, 0u);
+}
+
+// ---------------------------------------------------------------- the cameras of the field
+
+/**
+ * \brief A camera that answers each operation with a fixed reply, without authentication: golden replies written from
+ * the ONVIF WSDLs and the field reports, played back. GetSystemDateAndTime answers the time of the request.
+ */
+class ScriptedCamera
+{
+public:
+  ScriptedCamera()
+  {
+    HttpCameraServerConfig http;
+    http.auth = HttpAuth::NONE;
+    server_ = std::make_unique<HttpCameraServer>(
+        http, [this](const std::string&, const std::string&, const std::string& body) { return answer(body); });
+  }
+  /// \p operation answers \p response (the element in s:Body: a response, or an s:Fault).
+  void set(const std::string& operation, const std::string& response, unsigned status = 200)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    replies_[operation] = std::make_pair(status, response);
+  }
+  std::uint16_t port() const
+  {
+    return server_->port();
+  }
+  HttpCameraServer& server()
+  {
+    return *server_;
+  }
+
+private:
+  HttpAnswer answer(const std::string& body)
+  {
+    onvif::SoapMessage message;
+    const std::string operation = onvif::parseSoap(body, message).empty() ? onvif::localName(*message.content) : "";
+    std::pair<unsigned, std::string> reply{ 500, FAULT_NOT_SUPPORTED };
+    if (operation == "GetSystemDateAndTime")
+    {
+      const std::time_t now = std::time(nullptr);
+      std::tm utc{};
+      gmtime_r(&now, &utc);
+      reply = { 200, formatText("<tds:GetSystemDateAndTimeResponse><tds:SystemDateAndTime><tt:UTCDateTime><tt:Time>"
+                                "<tt:Hour>%d</tt:Hour><tt:Minute>%d</tt:Minute><tt:Second>%d</tt:Second></tt:Time>"
+                                "<tt:Date><tt:Year>%d</tt:Year><tt:Month>%d</tt:Month><tt:Day>%d</tt:Day></tt:Date>"
+                                "</tt:UTCDateTime></tds:SystemDateAndTime></tds:GetSystemDateAndTimeResponse>",
+                                utc.tm_hour, utc.tm_min, utc.tm_sec, utc.tm_year + 1900, utc.tm_mon + 1, utc.tm_mday) };
+    }
+    else
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      const auto found = replies_.find(operation);
+      if (found != replies_.end())
+      {
+        reply = found->second;
+      }
+    }
+    return HttpAnswer{ reply.first, onvif::SOAP_CONTENT_TYPE,
+                       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<env:Envelope "
+                       "xmlns:env=\"http://www.w3.org/2003/05/soap-envelope\" "
+                       "xmlns:ter=\"http://www.onvif.org/ver10/error\" "
+                       "xmlns:tds=\"http://www.onvif.org/ver10/device/wsdl\" "
+                       "xmlns:trt=\"http://www.onvif.org/ver10/media/wsdl\" "
+                       "xmlns:tptz=\"http://www.onvif.org/ver20/ptz/wsdl\" "
+                       "xmlns:tt=\"http://www.onvif.org/ver10/schema\">"
+                       "<env:Body>" +
+                           reply.second + "</env:Body></env:Envelope>" };
+  }
+
+  static constexpr const char* FAULT_NOT_SUPPORTED = "<env:Fault><env:Code><env:Value>env:Receiver</"
+                                                     "env:Value><env:Subcode><env:Value>ter:ActionNotSupported"
+                                                     "</env:Value></env:Subcode></env:Code><env:Reason><env:Text "
+                                                     "xml:lang=\"en\">Optional Action Not Implemented"
+                                                     "</env:Text></env:Reason></env:Fault>";
+
+  std::mutex mutex_;
+  std::map<std::string, std::pair<unsigned, std::string>> replies_;
+  std::unique_ptr<HttpCameraServer> server_;
+};
+
+/// The profile of the field's camera: its PTZ configuration's default space is \p default_space ("" = none declared).
+std::string profilesWithDefault(const std::string& default_space)
+{
+  return "<trt:GetProfilesResponse><trt:Profiles token=\"Profile_1\" fixed=\"true\"><tt:Name>mainStream</tt:Name>"
+         "<tt:PTZConfiguration token=\"PTZConfiguration_1\"><tt:Name>ptz</tt:Name><tt:UseCount>2</tt:UseCount>"
+         "<tt:NodeToken>PTZNODETOKEN</tt:NodeToken>" +
+         (default_space.empty() ? std::string() :
+                                  "<tt:DefaultAbsolutePantTiltPositionSpace>" + default_space +
+                                      "</tt:DefaultAbsolutePantTiltPositionSpace>") +
+         "<tt:DefaultPTZTimeout>PT5S</tt:DefaultPTZTimeout></tt:PTZConfiguration></trt:Profiles>"
+         "</trt:GetProfilesResponse>";
+}
+
+/// A GetStatus reply with \p position inside tt:Position ("" = none).
+std::string statusReply(const std::string& position)
+{
+  return "<tptz:GetStatusResponse><tptz:PTZStatus>" +
+         (position.empty() ? "" : "<tt:Position>" + position + "</tt:Position>") +
+         "<tt:MoveStatus><tt:PanTilt>IDLE</tt:PanTilt><tt:Zoom>IDLE</tt:Zoom></tt:MoveStatus><tt:UtcTime>"
+         "2026-11-21T10:20:30Z</tt:UtcTime></tptz:PTZStatus></tptz:GetStatusResponse>";
+}
+
+/**
+ * \brief The camera of the issue, as the field reports it: GetNodes lists SphericalPositionSpaceDegrees and the generic
+ * space, the generic pan range as 0..1; its configuration's default space is the generic one, and GetStatus reports
+ * pan -0.864666 there; GetPresets answers ter:ActionNotSupported though the node lists presets.
+ */
+void playTheFieldCamera(ScriptedCamera& camera)
+{
+  camera.set("GetCapabilities", "<tds:GetCapabilitiesResponse><tds:Capabilities><tt:Media><tt:XAddr>"
+                                "http://192.168.1.64/onvif/Media</tt:XAddr></tt:Media><tt:PTZ><tt:XAddr>"
+                                "http://192.168.1.64/onvif/PTZ</tt:XAddr></tt:PTZ></tds:Capabilities>"
+                                "</tds:GetCapabilitiesResponse>");
+  camera.set("GetProfiles", profilesWithDefault(onvif::GENERIC_PAN_TILT_SPACE));
+  camera.set("GetNodes", "<tptz:GetNodesResponse><tptz:PTZNode token=\"PTZNODETOKEN\"><tt:Name>PTZNODE</tt:Name>"
+                         "<tt:SupportedPTZSpaces><tt:AbsolutePanTiltPositionSpace><tt:URI>http://www.onvif.org/ver10/"
+                         "tptz/"
+                         "PanTiltSpaces/PositionGenericSpace</tt:URI><tt:XRange><tt:Min>0</tt:Min><tt:Max>1</tt:Max></"
+                         "tt:XRange>"
+                         "<tt:YRange><tt:Min>-1</tt:Min><tt:Max>1</tt:Max></tt:YRange></"
+                         "tt:AbsolutePanTiltPositionSpace>"
+                         "<tt:AbsolutePanTiltPositionSpace><tt:URI>http://www.onvif.org/ver10/tptz/PanTiltSpaces/"
+                         "SphericalPositionSpaceDegrees</tt:URI><tt:XRange><tt:Min>-180</tt:Min><tt:Max>180</tt:Max></"
+                         "tt:XRange>"
+                         "<tt:YRange><tt:Min>-90</tt:Min><tt:Max>90</tt:Max></tt:YRange></"
+                         "tt:AbsolutePanTiltPositionSpace>"
+                         "<tt:AbsoluteZoomPositionSpace><tt:URI>http://www.onvif.org/ver10/tptz/ZoomSpaces/"
+                         "PositionGenericSpace"
+                         "</tt:URI><tt:XRange><tt:Min>0</tt:Min><tt:Max>1</tt:Max></tt:XRange></"
+                         "tt:AbsoluteZoomPositionSpace>"
+                         "<tt:ContinuousPanTiltVelocitySpace><tt:URI>http://www.onvif.org/ver10/tptz/PanTiltSpaces/"
+                         "VelocityGenericSpace</tt:URI><tt:XRange><tt:Min>-1</tt:Min><tt:Max>1</tt:Max></"
+                         "tt:XRange><tt:YRange>"
+                         "<tt:Min>-1</tt:Min><tt:Max>1</tt:Max></tt:YRange></tt:ContinuousPanTiltVelocitySpace>"
+                         "<tt:ContinuousZoomVelocitySpace><tt:URI>http://www.onvif.org/ver10/tptz/ZoomSpaces/"
+                         "VelocityGenericSpace"
+                         "</tt:URI><tt:XRange><tt:Min>-1</tt:Min><tt:Max>1</tt:Max></tt:XRange></"
+                         "tt:ContinuousZoomVelocitySpace>"
+                         "</tt:SupportedPTZSpaces><tt:MaximumNumberOfPresets>300</"
+                         "tt:MaximumNumberOfPresets><tt:HomeSupported>"
+                         "true</tt:HomeSupported></tptz:PTZNode></tptz:GetNodesResponse>");
+  camera.set("GetConfigurationOptions", "<tptz:GetConfigurationOptionsResponse><tptz:PTZConfigurationOptions>"
+                                        "<tt:PTZTimeout><tt:Min>PT1S</tt:Min><tt:Max>PT60S</tt:Max></tt:PTZTimeout>"
+                                        "</tptz:PTZConfigurationOptions></tptz:GetConfigurationOptionsResponse>");
+  camera.set("GetStatus", statusReply("<tt:PanTilt x=\"-0.864666\" y=\"0.1\" space=\"http://www.onvif.org/ver10/tptz/"
+                                      "PanTiltSpaces/PositionGenericSpace\"/><tt:Zoom x=\"0.2\" "
+                                      "space=\"http://www.onvif.org/ver10/tptz/ZoomSpaces/PositionGenericSpace\"/>"));
+  camera.set("AbsoluteMove", "<tptz:AbsoluteMoveResponse/>");
+}
+
+OnvifConfig configForScripted(const ScriptedCamera& camera)
+{
+  OnvifConfig config;
+  config.link.port = camera.port();
+  config.session.startup_timeout = 5.0;
+  config.session.state_timeout = 1.0;
+  return config;  // no credentials: the scripted camera asks none
+}
+
+std::string lastBodyOf(HttpCameraServer& server, const std::string& operation)
+{
+  std::string body;
+  for (const HttpExchange& exchange : server.received().items())
+  {
+    body = exchange.body.find("<tptz:" + operation) != std::string::npos ? exchange.body : body;
+  }
+  return body;
+}
+
+TEST(OnvifFieldCameras, ACameraThatListsDegreesButReportsGenericStartsAndTrustsItsStatusOverItsRange)
+{
+  ScriptedCamera camera;
+  playTheFieldCamera(camera);
+  OnvifConfig config = configForScripted(camera);
+  ASSERT_TRUE(config.onvif.prefer_degrees);  // the default, with which this camera never started
+  std::vector<std::string> told;
+  std::mutex told_mutex;
+  config.onvif.warn = [&](const std::string& text) {
+    std::lock_guard<std::mutex> lock(told_mutex);
+    told.push_back(text);
+  };
+  auto backend = makeOnvifBackend(config);
+  backend->start();
+  const auto& protocol = backend->protocol<OnvifProtocol>();
+  // The status is read in the space it names and converted.
+  const PtzSample sample = backend->sample();
+  EXPECT_TRUE(sample.link_up);
+  EXPECT_NEAR(sample.position[PAN], -0.864666 * M_PI, 1e-9);
+  EXPECT_NEAR(sample.position[TILT], 0.1 * M_PI / 2.0, 1e-9);
+  EXPECT_NEAR(sample.position[ZOOM], std::pow(18.0, 0.2), 1e-9);
+  // The listed generic pan range [0, 1] leaves out where the camera is: the status wins, told once.
+  const Capabilities capabilities = backend->capabilities();
+  EXPECT_TRUE(capabilities.axes[PAN].absolute && capabilities.axes[PAN].feedback && capabilities.axes[PAN].velocity);
+  EXPECT_NEAR(capabilities.axes[PAN].range.min, -M_PI, 1e-9);
+  EXPECT_NEAR(capabilities.axes[PAN].range.max, M_PI, 1e-9);
+  EXPECT_TRUE(capabilities.axes[ZOOM].present && capabilities.axes[ZOOM].feedback);
+  EXPECT_FALSE(capabilities.device_presets);  // GetPresets: ter:ActionNotSupported, and it started all the same
+  EXPECT_TRUE(capabilities.device_home);
+  const std::uint64_t statuses = protocol.counters().statuses;
+  ASSERT_TRUE(waitUntil([&] { return protocol.counters().statuses >= statuses + 5; }, WAIT));
+  {
+    std::lock_guard<std::mutex> lock(told_mutex);
+    ASSERT_EQ(told.size(), 1u);
+    EXPECT_EQ(told[0], "the camera's GetNodes lists the PositionGenericSpace pan range [0, 1], but its GetStatus "
+                       "answered x = -0.864666: the listed range is wrong; the backend trusts the status and uses "
+                       "[-1, 1] (the generic space's whole range by the specification)");
+  }
+  EXPECT_EQ(protocol.warnings().size(), 1u);
+  std::vector<DiagnosticValue> values;
+  backend->diagnostics(values);
+  EXPECT_NE(std::find(values.begin(), values.end(), DiagnosticValue("warning", protocol.warnings()[0])), values.end());
+  EXPECT_NE(std::find_if(values.begin(), values.end(),
+                         [](const DiagnosticValue& value) {
+                           return value.first == "presets on the camera" && value.second == "none: the ONVIF camera "
+                                                                                            "refused GetPresets: "
+                                                                                            "ter:ActionNotSupported: "
+                                                                                            "Optional Action Not "
+                                                                                            "Implemented";
+                         }),
+            values.end());
+  // Goals go in the space the status comes in (it lists degrees too), within the range in use: -0.5 rad is x -0.159155,
+  // not clamped to the listed 0.
+  backend->goTo({ -0.5, 0.2, 1.0 });
+  ASSERT_TRUE(waitUntil([&] { return !lastBodyOf(camera.server(), "AbsoluteMove").empty(); }, WAIT));
+  EXPECT_NE(lastBodyOf(camera.server(), "AbsoluteMove")
+                .find("<tt:PanTilt x=\"-0.159155\" y=\"0.127324\" space=\"http://www.onvif.org/ver10/tptz/"
+                      "PanTiltSpaces/PositionGenericSpace\"/>"),
+            std::string::npos)
+      << lastBodyOf(camera.server(), "AbsoluteMove");
+  EXPECT_EQ(backend->sample().fault_count, 0u);
+}
+
+TEST(OnvifFieldCameras, AStartUpThatFailsOnAStatusSaysWhatTheCameraAnswered)
+{
+  ScriptedCamera camera;
+  playTheFieldCamera(camera);
+  const std::string where = "an ONVIF camera on http://127.0.0.1:" + std::to_string(camera.port()) + ": ";
+  camera.set("GetStatus",
+             "<env:Fault><env:Code><env:Value>env:Sender</env:Value><env:Subcode><env:Value>ter:InvalidArgVal"
+             "</env:Value><env:Subcode><env:Value>ter:NoProfile</env:Value></env:Subcode></env:Subcode></env:Code>"
+             "<env:Reason><env:Text xml:lang=\"en\">The requested profile token ProfileToken does not exist."
+             "</env:Text></env:Reason></env:Fault>",
+             400);
+  EXPECT_EQ(startupError(configForScripted(camera)), where + "the ONVIF camera refused GetStatus: "
+                                                             "ter:InvalidArgVal/ter:NoProfile: The requested profile "
+                                                             "token "
+                                                             "ProfileToken does not exist.");
+  camera.set("GetStatus", statusReply("<tt:PanTilt x=\"NaN\" y=\"0\"/>"));
+  EXPECT_EQ(startupError(configForScripted(camera)), where + "GetStatus answered a Position with a PanTilt without "
+                                                             "numbers x and y");
+  camera.set("GetStatus", "<tptz:GetStatusResponse/>");
+  EXPECT_EQ(startupError(configForScripted(camera)), where + "GetStatus answered no PTZStatus");
+}
+
+TEST(OnvifFieldCameras, AStatusWithoutASpaceIsInTheConfigurationsDefaultElseTheGenericSpace)
+{
+  ScriptedCamera camera;
+  playTheFieldCamera(camera);
+  camera.set("GetStatus", statusReply("<tt:PanTilt x=\"-45\" y=\"10\"/>"));
+  camera.set("GetProfiles", profilesWithDefault(onvif::DEGREE_SPACE));
+  {
+    auto backend = makeOnvifBackend(configForScripted(camera));
+    backend->start();
+    EXPECT_NEAR(backend->sample().position[PAN], toRadians(-45.0), 1e-9);
+    EXPECT_NEAR(backend->sample().position[TILT], toRadians(10.0), 1e-9);
+    EXPECT_FALSE(backend->capabilities().axes[ZOOM].feedback);  // no zoom in its status
+    EXPECT_EQ(backend->capabilities().axes[ZOOM].limitation, "this camera's GetStatus answers no zoom position");
+  }
+  camera.set("GetStatus", statusReply("<tt:PanTilt x=\"0.5\" y=\"-0.5\"/>"));
+  camera.set("GetProfiles", profilesWithDefault(""));
+  auto backend = makeOnvifBackend(configForScripted(camera));
+  backend->start();
+  EXPECT_NEAR(backend->sample().position[PAN], M_PI / 2.0, 1e-9);  // the generic space, through pan/scale
+  EXPECT_NEAR(backend->sample().position[TILT], -M_PI / 4.0, 1e-9);
+}
+
+TEST(OnvifFieldCameras, AStatusInASpaceThisBackendCannotConvertIsNoFeedbackNamingIt)
+{
+  ScriptedCamera camera;
+  playTheFieldCamera(camera);
+  camera.set("GetStatus", statusReply("<tt:PanTilt x=\"3\" y=\"4\" space=\"urn:vendor:PixelSpace\"/>"));
+  auto backend = makeOnvifBackend(configForScripted(camera));
+  backend->start();
+  EXPECT_TRUE(backend->sample().link_up);
+  const Capabilities capabilities = backend->capabilities();
+  EXPECT_FALSE(capabilities.axes[PAN].feedback);
+  EXPECT_EQ(findUnsupported(capabilities, PAN, AxisRequest::POSITION), "this camera's GetStatus answers the pan-tilt "
+                                                                       "position in 'urn:vendor:PixelSpace', a space "
+                                                                       "this backend "
+                                                                       "cannot convert: pan goals are not supported");
+  EXPECT_EQ(findUnsupported(capabilities, PAN, AxisRequest::VELOCITY), "");
+}
+
+OnvifConfig configForMode(const std::string& mode, std::unique_ptr<OnvifCameraEmulator>& camera)
+{
+  OnvifCameraEmulatorConfig camera_config;
+  EXPECT_TRUE(camera_config.applyMode(mode)) << mode;
+  camera = std::make_unique<OnvifCameraEmulator>(camera_config);
+  return configFor(*camera);
+}
+
+TEST(OnvifFieldCameras, ContinuousOnlyDeclaresSpeedAndPositionButNoGoToAndSendsNoAbsoluteMove)
+{
+  std::unique_ptr<OnvifCameraEmulator> camera;
+  auto backend = makeOnvifBackend(configForMode("continuous-only", camera));
+  backend->start();
+  const Capabilities capabilities = backend->capabilities();
+  for (Axis axis : { PAN, TILT })
+  {
+    EXPECT_FALSE(capabilities.axes[axis].absolute);
+    EXPECT_TRUE(capabilities.axes[axis].velocity);
+    EXPECT_TRUE(capabilities.axes[axis].feedback);  // its status has a position: goals can run closed-loop on it
+  }
+  EXPECT_FALSE(capabilities.axes[ZOOM].present);  // no zoom position space
+  EXPECT_EQ(capabilities.axes[ZOOM].limitation, "this camera lists no zoom position space (it only zooms at a speed)");
+  EXPECT_FALSE(capabilities.relative_moves);
+  EXPECT_FALSE(capabilities.device_presets);
+  EXPECT_EQ(findUnsupported(capabilities, PAN, AxisRequest::POSITION), "this camera lists no absolute pan-tilt space "
+                                                                       "(no AbsoluteMove): pan goals are not "
+                                                                       "supported");
+  EXPECT_EQ(findUnsupported(capabilities, PAN, AxisRequest::OFFSET), "");
+
+  // A goTo that reaches it anyway is a fault in words, and nothing goes to the camera.
+  backend->goTo({ 0.5, 0.0, 1.0 });
+  ASSERT_TRUE(waitUntil([&] { return backend->sample().fault_count == 1u; }, WAIT));
+  EXPECT_EQ(backend->lastFault(), "not sent: the ONVIF camera cannot go to a pan-tilt position (this camera lists no "
+                                  "absolute pan-tilt space (no AbsoluteMove))");
+  EXPECT_EQ(countOf(camera->server(), "AbsoluteMove"), 0u);
+
+  // What it does: speeds, seen in its status; cancel.
+  backend->moveAtVelocity({ 0.3, 0.0, 0.0 });
+  ASSERT_TRUE(waitUntil([&] { return std::abs(camera->sample().velocity[PAN] - 0.3) < 0.02; }, WAIT));
+  ASSERT_TRUE(waitUntil([&] { return std::abs(backend->sample().velocity[PAN] - 0.3) < 0.08; }, WAIT));
+  backend->stop();
+  ASSERT_TRUE(waitUntil([&] { return !camera->sample().moving && !backend->sample().moving; }, WAIT));
+  // Its silence is a lost link, as anyone's.
+  camera->server().setSilent(true);
+  ASSERT_TRUE(waitUntil([&] { return !backend->sample().link_up; }, WAIT));
+  EXPECT_NE(backend->lastLinkLoss().find("no state from"), std::string::npos) << backend->lastLinkLoss();
+}
+
+TEST(OnvifFieldCameras, ACameraThatRefusesAbsoluteMoveFaultsTheGoalWithItsWordsAndIsContinuousOnlyFromThen)
+{
+  std::unique_ptr<OnvifCameraEmulator> camera;
+  auto backend = makeOnvifBackend(configForMode("refuse-absolute-move", camera));
+  backend->start();
+  backend->goTo({ 0.5, 0.0, 1.0 });
+  ASSERT_TRUE(waitUntil([&] { return backend->sample().fault_count == 1u; }, WAIT));
+  EXPECT_EQ(backend->lastFault(), "the ONVIF camera refused AbsoluteMove: ter:ActionNotSupported: The operation "
+                                  "AbsoluteMove is not supported");
+  // Its answer is the truth about it: from now on it is a camera that moves at a speed, and says so.
+  const Capabilities capabilities = backend->capabilities();
+  EXPECT_FALSE(capabilities.axes[PAN].absolute);
+  EXPECT_FALSE(capabilities.axes[ZOOM].absolute);
+  EXPECT_TRUE(capabilities.axes[PAN].velocity && capabilities.axes[PAN].feedback);
+  EXPECT_EQ(findUnsupported(capabilities, PAN, AxisRequest::POSITION), "this camera answers AbsoluteMove with "
+                                                                       "ter:ActionNotSupported: pan goals are not "
+                                                                       "supported");
+  ASSERT_EQ(backend->protocol<OnvifProtocol>().warnings().size(), 1u);
+  EXPECT_EQ(backend->protocol<OnvifProtocol>().warnings()[0], "the camera lists position spaces but answered "
+                                                              "AbsoluteMove with ter:ActionNotSupported: The operation "
+                                                              "AbsoluteMove is not supported: it is taken as a camera "
+                                                              "that only moves at a speed (ContinuousMove) from "
+                                                              "now on");
+  camera->server().received().clear();
+  backend->goTo({ -0.5, 0.0, 1.0 });
+  ASSERT_TRUE(waitUntil([&] { return backend->sample().fault_count == 2u; }, WAIT));
+  EXPECT_EQ(countOf(camera->server(), "AbsoluteMove"), 0u);  // not sent again
+  backend->moveAtVelocity({ 0.3, 0.0, 0.0 });
+  ASSERT_TRUE(waitUntil([&] { return std::abs(camera->sample().velocity[PAN] - 0.3) < 0.02; }, WAIT));
+}
+
+TEST(OnvifFieldCameras, NoPositionKeepsTheLinkOnItsAnswersAndDoesSpeedsAndCancel)
+{
+  std::unique_ptr<OnvifCameraEmulator> camera;
+  auto backend = makeOnvifBackend(configForMode("no-position", camera));
+  backend->start();
+  const Capabilities capabilities = backend->capabilities();
+  for (Axis axis : { PAN, TILT, ZOOM })
+  {
+    EXPECT_FALSE(capabilities.axes[axis].feedback) << axisName(axis);
+    EXPECT_TRUE(capabilities.axes[axis].absolute) << axisName(axis);
+    EXPECT_TRUE(capabilities.axes[axis].velocity) << axisName(axis);
+  }
+  const ValidatedGoal refused = validatePositionGoal({ 0.5, 0.0, 0.0 }, capabilities, false);
+  EXPECT_FALSE(refused.accepted);
+  EXPECT_EQ(refused.message, "this camera's GetStatus answers no pan-tilt position: pan goals are not supported");
+  EXPECT_TRUE(validateVelocityGoal({ 0.3, 0.0, 0.0 }, capabilities, false).accepted);
+
+  // Its answers alone keep the link: well past the state timeout, it is still up and never lost.
+  const auto& protocol = backend->protocol<OnvifProtocol>();
+  const std::uint64_t statuses = protocol.counters().statuses;
+  const double polls_past_timeout = 3.0 * 1.0 / 0.1;  // three state timeouts of 1 s at the 0.1 s poll period
+  ASSERT_TRUE(waitUntil([&] { return protocol.counters().statuses >= statuses + polls_past_timeout; }, WAIT));
+  EXPECT_TRUE(backend->sample().link_up);
+  EXPECT_EQ(backend->sample().link_losses, 0u);
+
+  backend->moveAtVelocity({ 0.3, 0.0, 0.0 });
+  ASSERT_TRUE(waitUntil([&] { return std::abs(camera->sample().velocity[PAN] - 0.3) < 0.02; }, WAIT));
+  backend->stop();
+  ASSERT_TRUE(waitUntil([&] { return !camera->sample().moving; }, WAIT));
+  EXPECT_EQ(backend->sample().fault_count, 0u);
+
+  camera->server().setSilent(true);
+  ASSERT_TRUE(waitUntil([&] { return !backend->sample().link_up; }, WAIT));
+  EXPECT_EQ(backend->sample().link_losses, 1u);
+}
+
+TEST(OnvifFieldCameras, PresetsHomeAndRelativeMovesAreDeclaredAsTheCameraAnswers)
+{
+  std::unique_ptr<OnvifCameraEmulator> camera;
+  {
+    auto backend = makeOnvifBackend(configForMode("standard", camera));
+    backend->start();
+    EXPECT_TRUE(backend->capabilities().device_presets);
+    EXPECT_TRUE(backend->capabilities().device_home);
+    EXPECT_TRUE(backend->capabilities().relative_moves);
+  }
+  {
+    auto backend = makeOnvifBackend(configForMode("no-presets", camera));
+    backend->start();  // GetPresets refused: never a start-up failure
+    EXPECT_FALSE(backend->capabilities().device_presets);
+    std::vector<DiagnosticValue> values;
+    backend->diagnostics(values);
+    EXPECT_NE(std::find(values.begin(), values.end(),
+                        DiagnosticValue("presets on the camera", "none: the ONVIF camera refused GetPresets: "
+                                                                 "ter:ActionNotSupported: The operation GetPresets is "
+                                                                 "not supported")),
+              values.end());
+  }
+  auto backend = makeOnvifBackend(configForMode("no-relative", camera));
+  backend->start();
+  EXPECT_FALSE(backend->capabilities().relative_moves);
+}
+
+TEST(OnvifFieldCameras, TheWrongGenericRangeIsToldOnceAndTheCameraGoesWhereItsStatusShowsItCan)
+{
+  std::unique_ptr<OnvifCameraEmulator> camera;
+  OnvifConfig config = configForMode("wrong-generic-range", camera);
+  int told = 0;
+  config.onvif.warn = [&told](const std::string&) { ++told; };  // the I/O thread only: no race with the reads below
+  auto backend = makeOnvifBackend(config);
+  backend->start();
+  EXPECT_NEAR(backend->capabilities().axes[PAN].range.min, -M_PI, 1e-9);
+  const AxisValues target{ { -0.5, 0.1, 2.0 } };
+  backend->goTo(target);
+  ASSERT_TRUE(waitUntil(
+      [&] { return std::abs(backend->sample().position[PAN] - target[PAN]) < 1e-3 && !backend->sample().moving; },
+      WAIT));
+  EXPECT_NEAR(camera->sample().position[PAN], target[PAN], 1e-3);
+  backend.reset();  // joins the I/O thread
+  EXPECT_EQ(told, 1);
+}
+
+TEST(OnvifFieldCameras, AGoalLeavesAnAxisGivenAsNaNWhereItIs)
+{
+  std::unique_ptr<OnvifCameraEmulator> camera;
+  auto backend = makeOnvifBackend(configForMode("standard", camera));
+  backend->start();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  camera->server().received().clear();
+  backend->goTo({ nan, nan, 3.0 });
+  ASSERT_TRUE(waitUntil([&] { return std::abs(camera->sample().position[ZOOM] - 3.0) < 1e-3; }, WAIT));
+  const std::string sent = lastBodyOf(camera->server(), "AbsoluteMove");
+  EXPECT_EQ(sent.find("PanTilt"), std::string::npos) << sent;  // zoom only: the pan-tilt is not touched
+  EXPECT_NEAR(camera->sample().position[PAN], 0.0, 1e-9);
+}
+
+TEST(OnvifFieldCameras, DegreesListedButAGenericStatusMovesInTheGenericSpaceAndIsReached)
+{
+  std::unique_ptr<OnvifCameraEmulator> camera;
+  auto backend = makeOnvifBackend(configForMode("generic-status", camera));
+  backend->start();
+  backend->goTo({ 0.4, -0.1, 3.0 });
+  ASSERT_TRUE(waitUntil(
+      [&] { return std::abs(backend->sample().position[PAN] - 0.4) < 1e-3 && !backend->sample().moving; }, WAIT));
+  EXPECT_NEAR(camera->sample().position[PAN], 0.4, 1e-3);
+  EXPECT_NE(lastBodyOf(camera->server(), "AbsoluteMove").find(onvif::GENERIC_PAN_TILT_SPACE), std::string::npos);
 }
 
 }  // namespace

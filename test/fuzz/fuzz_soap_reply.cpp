@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "ptz_action_server/core/onvif/onvif_codec.h"
 
@@ -31,12 +32,30 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   {
     std::abort();
   }
+  if (readServices(message.content, paths).empty() && (paths.ptz.empty() || paths.ptz[0] != '/'))
+  {
+    std::abort();
+  }
   Profile profile;
   readProfiles(message.content, "", profile);
   Node node;
-  if (readNode(message.content, "", node).empty() && node.degree_space && node.degree_pan.min > node.degree_pan.max)
+  if (readNode(message.content, "", node).empty())
   {
-    std::abort();
+    for (const auto* spaces : { &node.absolute_pan_tilt, &node.absolute_zoom, &node.relative_pan_tilt,
+                                &node.relative_zoom, &node.continuous_pan_tilt, &node.continuous_zoom })
+    {
+      for (const Space& space : *spaces)
+      {
+        if (!(space.x.min <= space.x.max) || space.uri.empty())
+        {
+          std::abort();
+        }
+      }
+    }
+    if (node.max_presets < 0)
+    {
+      std::abort();
+    }
   }
   double low = 0.0;
   double high = 0.0;
@@ -45,7 +64,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::abort();
   }
   Status status;
-  if (readStatus(message.content, status).empty() && !(std::isfinite(status.x) && std::isfinite(status.y)))
+  if (readStatus(message.content, status).empty() &&
+      !(std::isfinite(status.x) && std::isfinite(status.y) && std::isfinite(status.zoom)))
+  {
+    std::abort();
+  }
+  std::vector<Preset> presets;
+  if (readPresets(message.content, presets).empty())
+  {
+    for (const Preset& preset : presets)
+    {
+      if (preset.token.empty() || !std::isfinite(preset.position.x) || !std::isfinite(preset.position.zoom))
+      {
+        std::abort();
+      }
+    }
+  }
+  std::string token;
+  if (readPresetToken(message.content, token).empty() && token.empty())
+  {
+    std::abort();
+  }
+  if (faultHas(message, "ActionNotSupported") && !message.fault)
   {
     std::abort();
   }

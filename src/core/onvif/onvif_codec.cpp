@@ -1,6 +1,8 @@
 #include "ptz_action_server/core/onvif/onvif_codec.h"
 
 #include <cmath>
+#include <limits>
+#include <algorithm>
 #include <cstdio>
 #include <ctime>
 
@@ -24,18 +26,131 @@ bool number(const char* text, double& value)
   return text != nullptr && number(std::string(text), value);
 }
 
+/// A range bound: a number, or INF / -INF (xs:float), as the specification writes an unbounded range.
+bool bound(const std::string& text, double& value)
+{
+  if (text == "INF" || text == "+INF")
+  {
+    value = std::numeric_limits<double>::infinity();
+    return true;
+  }
+  if (text == "-INF")
+  {
+    value = -std::numeric_limits<double>::infinity();
+    return true;
+  }
+  return number(text, value);
+}
+
 std::string readRange(const Element* range, Range& out)
 {
   Range read;
-  if (!number(text(child(range, ns::SCHEMA, "Min")), read.min) ||
-      !number(text(child(range, ns::SCHEMA, "Max")), read.max) || read.min > read.max)
+  if (!bound(text(child(range, ns::SCHEMA, "Min")), read.min) ||
+      !bound(text(child(range, ns::SCHEMA, "Max")), read.max) || !(read.min <= read.max))
   {
     return "a range without Min <= Max";
   }
   out = read;
   return {};
 }
+
+/// Every \p kind space of \p spaces (a SupportedPTZSpaces), with its XRange (and YRange for pan-tilt).
+std::string readSpaces(const Element* spaces, const char* kind, bool pan_tilt, std::vector<Space>& out)
+{
+  for (const Element* item : children(spaces, ns::SCHEMA, kind))
+  {
+    Space space;
+    space.uri = text(child(item, ns::SCHEMA, "URI"));
+    std::string problem = readRange(child(item, ns::SCHEMA, "XRange"), space.x);
+    if (problem.empty() && pan_tilt)
+    {
+      problem = readRange(child(item, ns::SCHEMA, "YRange"), space.y);
+    }
+    if (space.uri.empty() || !problem.empty())
+    {
+      return std::string(kind) + " '" + spaceName(space.uri) + "': " + (problem.empty() ? "no URI" : problem);
+    }
+    out.push_back(space);
+  }
+  return {};
+}
+
+/// A PTZVector (Position, PTZPosition) read into a Status' position.
+std::string readVector(const Element* vector, Status& status)
+{
+  const Element* pan_tilt = child(vector, ns::SCHEMA, "PanTilt");
+  if (pan_tilt != nullptr)
+  {
+    if (!number(attribute(pan_tilt, "x"), status.x) || !number(attribute(pan_tilt, "y"), status.y))
+    {
+      return "a PanTilt without numbers x and y";
+    }
+    status.has_pan_tilt = true;
+    const char* space = attribute(pan_tilt, "space");
+    status.space = space == nullptr ? "" : space;
+  }
+  const Element* zoom = child(vector, ns::SCHEMA, "Zoom");
+  if (zoom != nullptr)
+  {
+    if (!number(attribute(zoom, "x"), status.zoom))
+    {
+      return "a Zoom without a number x";
+    }
+    status.has_zoom = true;
+    const char* space = attribute(zoom, "space");
+    status.zoom_space = space == nullptr ? "" : space;
+  }
+  return {};
+}
+
+/// The tt:PanTilt / tt:Zoom elements of \p vector (a space attribute only when it names one).
+std::string vectorElements(const Vector& vector)
+{
+  std::string body;
+  if (vector.pan_tilt)
+  {
+    body += formatText("<tt:PanTilt x=\"%.6f\" y=\"%.6f\"", vector.x, vector.y);
+    body += vector.pan_tilt_space.empty() ? "/>" : " space=\"" + escaped(vector.pan_tilt_space) + "\"/>";
+  }
+  if (vector.zoom)
+  {
+    body += formatText("<tt:Zoom x=\"%.6f\"", vector.z);
+    body += vector.zoom_space.empty() ? "/>" : " space=\"" + escaped(vector.zoom_space) + "\"/>";
+  }
+  return body;
+}
+
+std::string profileOnly(const char* operation, const std::string& profile)
+{
+  return std::string("<tptz:") + operation + "><tptz:ProfileToken>" + escaped(profile) +
+         "</tptz:ProfileToken></tptz:" + operation + ">";
+}
+
+std::string servicePath(const std::string& address)
+{
+  const std::size_t scheme = address.find("://");
+  const std::size_t slash = address.find('/', scheme == std::string::npos ? 0 : scheme + 3);
+  return address.empty() || slash == std::string::npos ? "" : address.substr(slash);
+}
 }  // namespace
+
+std::string spaceName(const std::string& uri)
+{
+  const std::size_t slash = uri.rfind('/');
+  return slash == std::string::npos || slash + 1 == uri.size() ? uri : uri.substr(slash + 1);
+}
+
+const Space* findSpace(const std::vector<Space>& spaces, const std::string& uri)
+{
+  for (const Space& space : spaces)
+  {
+    if (space.uri == uri)
+    {
+      return &space;
+    }
+  }
+  return nullptr;
+}
 
 std::string passwordDigest(const std::string& nonce, const std::string& created, const std::string& password)
 {
@@ -114,14 +229,36 @@ std::string getCapabilities()
   return "<tds:GetCapabilities><tds:Category>All</tds:Category></tds:GetCapabilities>";
 }
 
+std::string getServices(bool include_capability)
+{
+  return std::string("<tds:GetServices><tds:IncludeCapability>") + (include_capability ? "true" : "false") +
+         "</tds:IncludeCapability></tds:GetServices>";
+}
+
 std::string getProfiles()
 {
   return "<trt:GetProfiles/>";
 }
 
+std::string getVideoSources()
+{
+  return "<trt:GetVideoSources/>";
+}
+
 std::string getNodes()
 {
   return "<tptz:GetNodes/>";
+}
+
+std::string getConfigurations()
+{
+  return "<tptz:GetConfigurations/>";
+}
+
+std::string getConfiguration(const std::string& configuration_token)
+{
+  return "<tptz:GetConfiguration><tptz:PTZConfigurationToken>" + escaped(configuration_token) +
+         "</tptz:PTZConfigurationToken></tptz:GetConfiguration>";
 }
 
 std::string getConfigurationOptions(const std::string& configuration_token)
@@ -132,38 +269,89 @@ std::string getConfigurationOptions(const std::string& configuration_token)
 
 std::string getStatus(const std::string& profile)
 {
-  return "<tptz:GetStatus><tptz:ProfileToken>" + escaped(profile) + "</tptz:ProfileToken></tptz:GetStatus>";
+  return profileOnly("GetStatus", profile);
+}
+
+std::string absoluteMove(const std::string& profile, const Vector& position)
+{
+  return "<tptz:AbsoluteMove><tptz:ProfileToken>" + escaped(profile) + "</tptz:ProfileToken><tptz:Position>" +
+         vectorElements(position) + "</tptz:Position></tptz:AbsoluteMove>";
 }
 
 std::string absoluteMove(const std::string& profile, double x, double y, const char* space, bool with_zoom, double zoom)
 {
-  std::string body =
-      "<tptz:AbsoluteMove><tptz:ProfileToken>" + escaped(profile) +
-      formatText("</tptz:ProfileToken><tptz:Position><tt:PanTilt x=\"%.6f\" y=\"%.6f\" space=\"%s\"/>", x, y, space);
-  if (with_zoom)
-  {
-    body += formatText("<tt:Zoom x=\"%.6f\" space=\"%s\"/>", zoom, GENERIC_ZOOM_SPACE);
-  }
-  return body + "</tptz:Position></tptz:AbsoluteMove>";
+  Vector position;
+  position.pan_tilt = true;
+  position.x = x;
+  position.y = y;
+  position.pan_tilt_space = space;
+  position.zoom = with_zoom;
+  position.z = zoom;
+  position.zoom_space = GENERIC_ZOOM_SPACE;
+  return absoluteMove(profile, position);
+}
+
+std::string relativeMove(const std::string& profile, const Vector& translation)
+{
+  return "<tptz:RelativeMove><tptz:ProfileToken>" + escaped(profile) + "</tptz:ProfileToken><tptz:Translation>" +
+         vectorElements(translation) + "</tptz:Translation></tptz:RelativeMove>";
 }
 
 std::string continuousMove(const std::string& profile, double x, double y, bool with_zoom, double zoom,
-                           int timeout_seconds)
+                           int timeout_seconds, bool with_pan_tilt)
 {
-  std::string body = "<tptz:ContinuousMove><tptz:ProfileToken>" + escaped(profile) +
-                     formatText("</tptz:ProfileToken><tptz:Velocity><tt:PanTilt x=\"%.6f\" y=\"%.6f\" space=\"%s\"/>",
-                                x, y, GENERIC_PAN_TILT_VELOCITY);
-  if (with_zoom)
-  {
-    body += formatText("<tt:Zoom x=\"%.6f\" space=\"%s\"/>", zoom, GENERIC_ZOOM_VELOCITY);
-  }
-  return body + formatText("</tptz:Velocity><tptz:Timeout>PT%dS</tptz:Timeout></tptz:ContinuousMove>", timeout_seconds);
+  Vector velocity;
+  velocity.pan_tilt = with_pan_tilt;
+  velocity.x = x;
+  velocity.y = y;
+  velocity.pan_tilt_space = GENERIC_PAN_TILT_VELOCITY;
+  velocity.zoom = with_zoom;
+  velocity.z = zoom;
+  velocity.zoom_space = GENERIC_ZOOM_VELOCITY;
+  return "<tptz:ContinuousMove><tptz:ProfileToken>" + escaped(profile) + "</tptz:ProfileToken><tptz:Velocity>" +
+         vectorElements(velocity) +
+         formatText("</tptz:Velocity><tptz:Timeout>PT%dS</tptz:Timeout></tptz:ContinuousMove>", timeout_seconds);
 }
 
 std::string stop(const std::string& profile)
 {
   return "<tptz:Stop><tptz:ProfileToken>" + escaped(profile) +
          "</tptz:ProfileToken><tptz:PanTilt>true</tptz:PanTilt><tptz:Zoom>true</tptz:Zoom></tptz:Stop>";
+}
+
+std::string getPresets(const std::string& profile)
+{
+  return profileOnly("GetPresets", profile);
+}
+
+std::string setPreset(const std::string& profile, const std::string& name, const std::string& preset_token)
+{
+  return "<tptz:SetPreset><tptz:ProfileToken>" + escaped(profile) + "</tptz:ProfileToken>" +
+         (name.empty() ? "" : "<tptz:PresetName>" + escaped(name) + "</tptz:PresetName>") +
+         (preset_token.empty() ? "" : "<tptz:PresetToken>" + escaped(preset_token) + "</tptz:PresetToken>") +
+         "</tptz:SetPreset>";
+}
+
+std::string gotoPreset(const std::string& profile, const std::string& preset_token)
+{
+  return "<tptz:GotoPreset><tptz:ProfileToken>" + escaped(profile) + "</tptz:ProfileToken><tptz:PresetToken>" +
+         escaped(preset_token) + "</tptz:PresetToken></tptz:GotoPreset>";
+}
+
+std::string removePreset(const std::string& profile, const std::string& preset_token)
+{
+  return "<tptz:RemovePreset><tptz:ProfileToken>" + escaped(profile) + "</tptz:ProfileToken><tptz:PresetToken>" +
+         escaped(preset_token) + "</tptz:PresetToken></tptz:RemovePreset>";
+}
+
+std::string gotoHomePosition(const std::string& profile)
+{
+  return profileOnly("GotoHomePosition", profile);
+}
+
+std::string setHomePosition(const std::string& profile)
+{
+  return profileOnly("SetHomePosition", profile);
 }
 
 std::string readSystemTime(const Element* response, double& utc_seconds)
@@ -196,14 +384,36 @@ std::string readCapabilities(const Element* response, ServicePaths& paths)
   ServicePaths read;
   for (auto service : { std::make_pair("Media", &read.media), std::make_pair("PTZ", &read.ptz) })
   {
-    const std::string address = text(path(child(capabilities, ns::SCHEMA, service.first), ns::SCHEMA, { "XAddr" }));
-    const std::size_t scheme = address.find("://");
-    const std::size_t slash = address.find('/', scheme == std::string::npos ? 0 : scheme + 3);
-    if (address.empty() || slash == std::string::npos)
+    *service.second = servicePath(text(path(child(capabilities, ns::SCHEMA, service.first), ns::SCHEMA, { "XAddr" })));
+    if (service.second->empty())
     {
       return std::string("no ") + service.first + " XAddr";
     }
-    *service.second = address.substr(slash);
+  }
+  paths = read;
+  return {};
+}
+
+std::string readServices(const Element* response, ServicePaths& paths)
+{
+  ServicePaths read;
+  for (const Element* service : children(response, ns::DEVICE, "Service"))
+  {
+    const std::string name = text(child(service, ns::DEVICE, "Namespace"));
+    const std::string address = servicePath(text(child(service, ns::DEVICE, "XAddr")));
+    if (name == ns::MEDIA)
+    {
+      read.media = address;
+    }
+    else if (name == ns::PTZ)
+    {
+      read.ptz = address;
+    }
+  }
+  if (read.media.empty() || read.ptz.empty())
+  {
+    return read.media.empty() ? "no media service (ver10/media/wsdl) with an XAddr" :
+                                "no PTZ service (ver20/ptz/wsdl) with an XAddr";
   }
   paths = read;
   return {};
@@ -222,9 +432,13 @@ std::string readProfiles(const Element* response, const std::string& wanted, Pro
       continue;
     }
     const char* configuration_token = attribute(configuration, "token");
-    profile.token = token;
-    profile.ptz_configuration = configuration_token == nullptr ? "" : configuration_token;
-    profile.node = text(child(configuration, ns::SCHEMA, "NodeToken"));
+    Profile read;
+    read.token = token;
+    read.ptz_configuration = configuration_token == nullptr ? "" : configuration_token;
+    read.node = text(child(configuration, ns::SCHEMA, "NodeToken"));
+    read.default_pan_tilt_space = text(child(configuration, ns::SCHEMA, "DefaultAbsolutePantTiltPositionSpace"));
+    read.default_zoom_space = text(child(configuration, ns::SCHEMA, "DefaultAbsoluteZoomPositionSpace"));
+    profile = read;
     return {};
   }
   return wanted.empty() ? "no profile with a PTZConfiguration (profiles: " + tokens + ")" :
@@ -241,30 +455,27 @@ std::string readNode(const Element* response, const std::string& token, Node& no
       continue;
     }
     Node read;
+    read.token = item_token == nullptr ? "" : item_token;
     const Element* spaces = child(item, ns::SCHEMA, "SupportedPTZSpaces");
-    for (const Element* space : children(spaces, ns::SCHEMA, "AbsolutePanTiltPositionSpace"))
+    const std::string problem = readSpaces(spaces, "AbsolutePanTiltPositionSpace", true, read.absolute_pan_tilt) +
+                                readSpaces(spaces, "AbsoluteZoomPositionSpace", false, read.absolute_zoom) +
+                                readSpaces(spaces, "RelativePanTiltTranslationSpace", true, read.relative_pan_tilt) +
+                                readSpaces(spaces, "RelativeZoomTranslationSpace", false, read.relative_zoom) +
+                                readSpaces(spaces, "ContinuousPanTiltVelocitySpace", true, read.continuous_pan_tilt) +
+                                readSpaces(spaces, "ContinuousZoomVelocitySpace", false, read.continuous_zoom);
+    if (!problem.empty())
     {
-      const std::string uri = text(child(space, ns::SCHEMA, "URI"));
-      if (uri == DEGREE_SPACE)
-      {
-        const std::string problem = readRange(child(space, ns::SCHEMA, "XRange"), read.degree_pan) +
-                                    readRange(child(space, ns::SCHEMA, "YRange"), read.degree_tilt);
-        if (!problem.empty())
-        {
-          return "SphericalPositionSpaceDegrees: " + problem;
-        }
-        read.degree_space = true;
-      }
-      read.generic_space = read.generic_space || uri == GENERIC_PAN_TILT_SPACE;
+      return "PTZ node '" + read.token + "': " + problem;
     }
-    for (const Element* space : children(spaces, ns::SCHEMA, "AbsoluteZoomPositionSpace"))
+    // xs:int in the schema; read as a number and kept within what any camera stores (a count cast out of range is UB).
+    double presets = 0.0;
+    const std::string presets_text = text(child(item, ns::SCHEMA, "MaximumNumberOfPresets"));
+    if (!presets_text.empty() && number(presets_text, presets))
     {
-      read.zoom = read.zoom || text(child(space, ns::SCHEMA, "URI")) == GENERIC_ZOOM_SPACE;
+      read.max_presets = static_cast<int>(std::clamp(std::floor(presets), 0.0, 1e6));
     }
-    if (!read.degree_space && !read.generic_space)
-    {
-      return "PTZ node '" + token + "' lists no absolute pan-tilt space this backend knows";
-    }
+    const std::string home = text(child(item, ns::SCHEMA, "HomeSupported"));
+    read.home_supported = home == "true" || home == "1";
     node = read;
     return {};
   }
@@ -293,24 +504,60 @@ std::string readTimeoutRange(const Element* response, double& min_s, double& max
 std::string readStatus(const Element* response, Status& status)
 {
   const Element* ptz_status = child(response, ns::PTZ, "PTZStatus");
-  const Element* position = child(ptz_status, ns::SCHEMA, "Position");
-  const Element* pan_tilt = child(position, ns::SCHEMA, "PanTilt");
+  if (ptz_status == nullptr)
+  {
+    return "no PTZStatus";
+  }
   Status read;
-  if (!number(attribute(pan_tilt, "x"), read.x) || !number(attribute(pan_tilt, "y"), read.y))
+  const std::string problem = readVector(child(ptz_status, ns::SCHEMA, "Position"), read);
+  if (!problem.empty())
   {
-    return "no Position/PanTilt x and y";
+    return "a Position with " + problem;
   }
-  const char* space = attribute(pan_tilt, "space");
-  read.space = space == nullptr ? "" : space;
-  const Element* zoom = child(position, ns::SCHEMA, "Zoom");
-  read.has_zoom = zoom != nullptr;
-  if (read.has_zoom && !number(attribute(zoom, "x"), read.zoom))
-  {
-    return "a Position/Zoom without x";
-  }
-  const Element* move_status = child(child(ptz_status, ns::SCHEMA, "MoveStatus"), ns::SCHEMA, "PanTilt");
-  read.move_status = text(move_status);
+  const Element* move_status = child(ptz_status, ns::SCHEMA, "MoveStatus");
+  read.move_status = text(child(move_status, ns::SCHEMA, "PanTilt"));
+  read.zoom_move_status = text(child(move_status, ns::SCHEMA, "Zoom"));
+  read.error = text(child(ptz_status, ns::SCHEMA, "Error"));
   status = read;
+  return {};
+}
+
+std::string readPresets(const Element* response, std::vector<Preset>& presets)
+{
+  if (response == nullptr || !is(*response, ns::PTZ, "GetPresetsResponse"))
+  {
+    return "no GetPresetsResponse";
+  }
+  std::vector<Preset> read;
+  for (const Element* item : children(response, ns::PTZ, "Preset"))
+  {
+    Preset preset;
+    const char* token = attribute(item, "token");
+    if (token == nullptr || *token == '\0')
+    {
+      return "a Preset without a token";
+    }
+    preset.token = token;
+    preset.name = text(child(item, ns::SCHEMA, "Name"));
+    const std::string problem = readVector(child(item, ns::SCHEMA, "PTZPosition"), preset.position);
+    if (!problem.empty())
+    {
+      return "preset '" + preset.token + "': a PTZPosition with " + problem;
+    }
+    read.push_back(preset);
+  }
+  presets = read;
+  return {};
+}
+
+std::string readPresetToken(const Element* response, std::string& token)
+{
+  const std::string read = text(child(response, ns::PTZ, "PresetToken"));
+  if (read.empty())
+  {
+    return "no PresetToken";
+  }
+  token = read;
   return {};
 }
 

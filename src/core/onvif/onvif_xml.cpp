@@ -1,5 +1,6 @@
 #include "ptz_action_server/core/onvif/onvif_xml.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace ptz_action_server
@@ -114,6 +115,8 @@ std::string parseSoap(const std::string& xml, SoapMessage& message)
   message.header = nullptr;
   message.content = nullptr;
   message.fault = false;
+  message.fault_code.clear();
+  message.subcodes.clear();
   message.fault_text.clear();
   if (message.document.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS)
   {
@@ -139,12 +142,40 @@ std::string parseSoap(const std::string& xml, SoapMessage& message)
   {
     message.fault = true;
     const Element* code = child(message.content, ns::SOAP, "Code");
-    const Element* subcode = path(code, ns::SOAP, { "Subcode", "Value" });
-    std::string name = text(subcode != nullptr ? subcode : child(code, ns::SOAP, "Value"));
+    message.fault_code = text(child(code, ns::SOAP, "Value"));
+    std::string names;
+    // ONVIF nests its faults two deep (env:Sender / ter:InvalidArgVal / ter:NoProfile); a few levels are plenty.
+    for (const Element* subcode = child(code, ns::SOAP, "Subcode"); subcode != nullptr && message.subcodes.size() < 8;
+         subcode = child(subcode, ns::SOAP, "Subcode"))
+    {
+      const std::string value = text(child(subcode, ns::SOAP, "Value"));
+      if (!value.empty())
+      {
+        message.subcodes.push_back(value);
+        names += (names.empty() ? "" : "/") + value;
+      }
+    }
+    if (names.empty())
+    {
+      names = message.fault_code.empty() ? "SOAP fault" : message.fault_code;
+    }
     const std::string reason = text(path(message.content, ns::SOAP, { "Reason", "Text" }));
-    message.fault_text = (name.empty() ? "SOAP fault" : name) + (reason.empty() ? "" : ": " + reason);
+    message.fault_text = names + (reason.empty() ? "" : ": " + reason);
   }
   return {};
+}
+
+bool faultHas(const SoapMessage& message, const char* local)
+{
+  if (!message.fault)
+  {
+    return false;
+  }
+  auto matches = [local](const std::string& qname) {
+    const std::size_t colon = qname.find(':');
+    return qname.compare(colon == std::string::npos ? 0 : colon + 1, std::string::npos, local) == 0;
+  };
+  return matches(message.fault_code) || std::any_of(message.subcodes.begin(), message.subcodes.end(), matches);
 }
 
 std::string escaped(const std::string& text)

@@ -5,8 +5,12 @@
  */
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <mutex>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "ptz_action_server/core/device/device_backend.h"
 #include "ptz_action_server/core/onvif/onvif_codec.h"
@@ -28,7 +32,9 @@ struct OnvifSettings
   std::string profile;                                ///< profile token; "" = the first with a PTZConfiguration
   std::string username;                               ///< WS-Security user ("" = no WS-Security)
   std::string password;                               ///< never printed
-  bool prefer_degrees = true;                         ///< use SphericalPositionSpaceDegrees when the node lists it
+  /// AbsoluteMove in SphericalPositionSpaceDegrees when the node lists it, unless the camera reports its status in
+  /// the generic space (then goals go in the generic space too: a goal and the status that confirms it in one space)
+  bool prefer_degrees = true;
   GenericAxisMapping pan{ M_PI, 0.0, 1.0 };
   GenericAxisMapping tilt{ M_PI / 2.0, 0.0, 1.0 };
   double velocity_sign_pan = 1.0;  ///< a camera may turn its velocities otherwise than its positions
@@ -39,6 +45,9 @@ struct OnvifSettings
   double zoom_max_rate = 8.0;   ///< X/s at generic zoom velocity 1
   double acceleration = 3.0;    ///< rad/s^2, for goal timeouts
   int velocity_timeout = 2;     ///< s of a ContinuousMove's Timeout (whole seconds); re-sent at half of it
+  /// Told once of what the user should know (a range the camera lists that its own status contradicts). Called on
+  /// the I/O thread; must not block. The ROS plugin logs it as a warning; the texts also go to diagnostics.
+  std::function<void(const std::string&)> warn;
 };
 
 /// Everything an ONVIF backend is built from.
@@ -58,16 +67,28 @@ struct OnvifCounters
   Counter error_answers;
   Counter malformed;
   Counter velocity_refreshes;  ///< ContinuousMoves re-sent before their timeout
+  Counter refused_locally;     ///< commands for an axis the camera cannot do, refused without sending them
 };
 
 /**
  * \brief ONVIF PTZ over a DeviceSession's HTTP link.
  *
  * Bring-up at every (re)connection: GetSystemDateAndTime (no authentication; the clock offset), GetCapabilities (the
- * service paths; the configured host is kept), GetProfiles, GetNodes, GetConfigurationOptions. Goals are AbsoluteMove
- * in the degree space when the node lists it, otherwise in the generic space through the per-axis mappings; velocity
- * goals ContinuousMove (re-sent before its timeout), cancel Stop, state GetStatus at the poll period. A SOAP fault to a
- * command is a device fault with the camera's words; during the bring-up it fails the start.
+ * service paths; the configured host is kept), GetProfiles (the profile, its PTZConfiguration's default spaces),
+ * GetNodes (the spaces the node lists, their ranges, MaximumNumberOfPresets, HomeSupported), GetConfigurationOptions
+ * (the timeout range), GetPresets (when the node has presets; a fault only means none), and a first GetStatus. From
+ * what the camera answered it declares its capabilities:
+ * - pan-tilt `absolute` when the node lists SphericalPositionSpaceDegrees or PositionGenericSpace (AbsoluteMove),
+ *   `velocity` when it lists VelocityGenericSpace (ContinuousMove), `feedback` when GetStatus carries a pan-tilt
+ *   position in a space this backend converts; zoom is present with a generic zoom position space.
+ * - The status is read in the space its reply names (the configuration's default when it names none; the generic
+ *   space when the configuration declares none either) and converted; goals go in one listed space, clamped into its
+ *   range. A listed range the camera's own status contradicts is wrong: the status wins, told once (warn +
+ * diagnostics).
+ *
+ * Goals are AbsoluteMove; velocity goals ContinuousMove (re-sent before its timeout), cancel Stop, state GetStatus at
+ * the poll period (a camera without a position in it is kept alive by its answers). A SOAP fault to a command is a
+ * device fault with the camera's words; during the bring-up it fails the start with what the camera answered.
  */
 class OnvifProtocol : public DeviceProtocol
 {
@@ -97,23 +118,67 @@ public:
   {
     return counters_;
   }
+  /// The warnings told so far (a range contradicted by the camera's status). Any thread.
+  std::vector<std::string> warnings() const;
 
 private:
+  /// How one axis pair (pan-tilt) or the zoom is driven, as the bring-up found it.
+  struct PanTiltPlan
+  {
+    bool absolute = false;     ///< AbsoluteMove in move_space
+    bool velocity = false;     ///< ContinuousMove in the generic velocity space
+    bool feedback = false;     ///< GetStatus carries a position this backend converts
+    std::string move_space;    ///< the listed absolute space goals go in ("" if none)
+    onvif::Range x, y;         ///< its ranges as used (the listed ones, unless the status contradicted them)
+    std::string status_space;  ///< the space of the first status' position
+    std::string limitation;    ///< what the camera lacks, in its terms ("" if nothing)
+  };
+  struct ZoomPlan
+  {
+    bool present = false;   ///< the node lists the generic zoom position space
+    bool absolute = false;  ///< AbsoluteMove takes it (present, unless the camera refused AbsoluteMove)
+    bool velocity = false;
+    bool feedback = false;
+    std::string limitation;
+  };
+  /// What diagnostics() shows of the bring-up (guarded by report_mutex_: diagnostics() runs on any thread).
+  struct Report
+  {
+    std::string pan_tilt;  ///< "AbsoluteMove in SphericalPositionSpaceDegrees, status in PositionGenericSpace"
+    std::string presets;   ///< "12 (GetPresets)", "none: GetPresets answered ter:ActionNotSupported"
+    std::vector<std::string> warnings;
+  };
+
   /// POSTs \p body (an operation) to \p path; true with message_.content the response, else \p problem ("" when
   /// the link was lost).
   bool call(const std::string& path, const std::string& body, bool secure, std::string& problem);
   void command(const std::string& path, const std::string& body, const char* operation);
+  /// The camera refused AbsoluteMove as an operation it does not have: no more AbsoluteMoves, capabilities told.
+  void absoluteMoveRefused(const std::string& answer);
   void setupFailed(const std::string& problem);
-  bool bringUp(std::string& problem);
+  /// Everything a (re)connection asks, up to the first GetStatus (\p status).
+  bool bringUp(std::string& problem, onvif::Status& status);
+  /// Decides the plans from the node, the profile and the first status.
+  void plan(const onvif::Status& status);
+  /// "" or why \p status cannot be read (a position in a space this backend cannot convert that it reported before).
+  std::string readState(const onvif::Status& status, AxisValues& position);
+  /// Tells once of each listed range \p status contradicts, and widens the range in use.
+  void checkRanges(const onvif::Status& status, const std::string& space);
+  void warnOnce(const std::string& key, const std::string& text);
   Capabilities cameraCapabilities() const;
   double angleOf(const GenericAxisMapping& mapping, double x) const;
   double genericOf(const GenericAxisMapping& mapping, double angle) const;
+  /// The status' pan-tilt space: the one it names, else the configuration's default, else the generic space.
+  std::string statusSpace(const onvif::Status& status) const;
+  std::string zoomStatusSpace(const onvif::Status& status) const;
   double cameraTime() const;
 
   const OnvifSettings settings_;
   DeviceSession& session_;
   HttpLink& http_;
   OnvifCounters counters_;
+  mutable std::mutex report_mutex_;
+  Report report_;
 
   // I/O thread only.
   std::mt19937_64 random_;
@@ -121,7 +186,15 @@ private:
   onvif::ServicePaths paths_;
   onvif::Profile profile_;
   onvif::Node node_;
-  bool use_degrees_ = false;
+  PanTiltPlan pan_tilt_;
+  ZoomPlan zoom_;
+  bool device_presets_ = false;
+  /// The camera answered AbsoluteMove with ter:ActionNotSupported although it lists position spaces: taken as
+  /// continuous-only from then on (kept across reconnections).
+  std::string absolute_refused_;
+  std::vector<std::string> warned_;  ///< keys of the warnings told (once per backend, across reconnections)
+  /// Listed ranges the status contradicted, by space URI: kept across reconnections (the camera lists them again).
+  std::vector<onvif::Space> corrected_;
   HttpRequest request_;
   onvif::SoapMessage message_;
   std::string velocity_body_;  ///< the ContinuousMove in force ("" when none)

@@ -52,8 +52,16 @@ struct SoapMessage
   const Element* header = nullptr;   ///< s:Header, if any
   const Element* content = nullptr;  ///< the first element in s:Body (the response, or s:Fault)
   bool fault = false;
-  std::string fault_text;  ///< "ter:InvalidArgVal: position out of range" (subcode, else code; then the reason)
+  std::string fault_code;             ///< Code/Value: "env:Sender", "env:Receiver" (as the sender prefixed it)
+  std::vector<std::string> subcodes;  ///< Subcode/Value, then Subcode/Subcode/Value...: "ter:InvalidArgVal", ...
+  /// "ter:InvalidArgVal/ter:NoProfile: The requested profile token does not exist" (the subcodes, else the code; then
+  /// the reason)
+  std::string fault_text;
 };
+
+/// True if \p message is a fault with a (sub)code whose local part is \p local ("ActionNotSupported" matches
+/// "ter:ActionNotSupported" whatever the prefix).
+bool faultHas(const SoapMessage& message, const char* local);
 
 /// Reads \p xml as a SOAP 1.2 envelope; "" or what is wrong ("not XML: ...", "no s:Envelope", "an empty s:Body").
 std::string parseSoap(const std::string& xml, SoapMessage& message);
