@@ -51,7 +51,6 @@ public:
     onvif.acceleration = params.number("acceleration", onvif.acceleration, 0.0, 1e4);
     onvif.velocity_timeout = params.integer("velocity_timeout", onvif.velocity_timeout, 1, 3600);
     // What the camera contradicts itself in (a listed range its own status leaves): once, also in diagnostics.
-    onvif.warn = [](const std::string& text) { ROS_WARN_STREAM("onvif: " << text); };
     return makeOnvifBackend(config, context.clock);
   }
 };

@@ -436,10 +436,7 @@ void OnvifProtocol::warnOnce(const std::string& key, const std::string& text)
     std::lock_guard<std::mutex> lock(report_mutex_);
     report_.warnings.push_back(text);
   }
-  if (settings_.warn)
-  {
-    settings_.warn(text);
-  }
+  session_.warn(text);
 }
 
 void OnvifProtocol::checkRanges(const onvif::Status& status, const std::string& space)
@@ -750,10 +747,6 @@ void OnvifProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
     std::lock_guard<std::mutex> lock(report_mutex_);
     values.emplace_back("pan-tilt", report_.pan_tilt);
     values.emplace_back("presets on the camera", report_.presets);
-    for (const std::string& warning : report_.warnings)
-    {
-      values.emplace_back("warning", warning);
-    }
   }
   addCounts(values, { { "statuses read", counters_.statuses },
                       { "SOAP faults to commands", counters_.faults },

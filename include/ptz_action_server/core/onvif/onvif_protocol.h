@@ -45,9 +45,6 @@ struct OnvifSettings
   double zoom_max_rate = 8.0;   ///< X/s at generic zoom velocity 1
   double acceleration = 3.0;    ///< rad/s^2, for goal timeouts
   int velocity_timeout = 2;     ///< s of a ContinuousMove's Timeout (whole seconds); re-sent at half of it
-  /// Told once of what the user should know (a range the camera lists that its own status contradicts). Called on
-  /// the I/O thread; must not block. The ROS plugin logs it as a warning; the texts also go to diagnostics.
-  std::function<void(const std::string&)> warn;
 };
 
 /// Everything an ONVIF backend is built from.
