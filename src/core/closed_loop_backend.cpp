@@ -47,11 +47,17 @@ bool ClosedLoopBackend::setSampleListener(SampleListener listener)
 void ClosedLoopBackend::start()
 {
   inner().start();
-  const Capabilities device = inner().capabilities();
   std::lock_guard<std::mutex> lock(mutex_);
-  capabilities_ = device;
+  refreshSteeringLocked();
+}
+
+void ClosedLoopBackend::refreshSteeringLocked()
+{
+  // Asked again before each goal: a camera may turn out to lack the absolute move it listed (it refused one).
+  capabilities_ = inner().capabilities();
+  steered_.fill(false);
   const auto steerable = [](const AxisCapability& axis) { return axis.present && axis.velocity && axis.feedback; };
-  const bool needed = std::any_of(device.axes.begin(), device.axes.end(),
+  const bool needed = std::any_of(capabilities_.axes.begin(), capabilities_.axes.end(),
                                   [&](const AxisCapability& axis) { return steerable(axis) && !axis.absolute; });
   if (!needed || !reports_samples_)
   {
@@ -84,6 +90,7 @@ bool ClosedLoopBackend::steers() const
 void ClosedLoopBackend::goTo(const AxisValues& position)
 {
   std::lock_guard<std::mutex> lock(mutex_);
+  refreshSteeringLocked();
   if (!steers())
   {
     inner().goTo(position);

@@ -5,9 +5,12 @@
 #include <memory>
 #include <thread>
 
+#include "goal_supervisor_fixture.h"
 #include "ptz_action_server/core/closed_loop_backend.h"
 #include "ptz_action_server/core/goal_monitor.h"
+#include "ptz_action_server/core/onvif/onvif_protocol.h"
 #include "ptz_action_server/core/sim_backend.h"
+#include "ptz_action_server/emulators/onvif_camera_emulator.h"
 #include "wait_until.h"
 
 using namespace ptz_action_server;
@@ -195,4 +198,84 @@ TEST_F(ClosedLoopBackendTest, ADeviceThatGoesToPositionsItselfPassesThrough)
   EXPECT_EQ(camera_->positions_, 1);
   ASSERT_TRUE(waitUntil([&] { return restsAt({ { 0.3, 0.1, 2.0 } }, 0.002); }, WAIT));
   EXPECT_EQ(camera_->velocities_, 0);
+}
+
+// ---------------------------------------------------------------- a real continuous-only camera
+
+namespace
+{
+/// An ONVIF camera of the field that only takes ContinuousMove (emulated, over HTTP on 127.0.0.1), its backend
+/// wrapped as the node wraps every device, and the node's goal supervisor on top.
+class ClosedLoopOnvif : public ::testing::Test
+{
+protected:
+  void start(const std::string& mode)
+  {
+    OnvifCameraEmulatorConfig camera;
+    ASSERT_TRUE(camera.applyMode(mode)) << mode;
+    camera_ = std::make_unique<OnvifCameraEmulator>(camera);
+    OnvifConfig config;
+    config.link.port = camera_->port();
+    config.link.http.username = config.onvif.username = camera.username;
+    config.link.http.password = config.onvif.password = camera.password;
+    config.session.state_timeout = 1.0;
+    device_ = std::shared_ptr<PtzBackend>(makeOnvifBackend(config));
+    backend_ = withClosedLoop(device_, GoalMonitorConfig().tolerance);
+    backend_->setSampleListener([] {});
+    backend_->start();
+    supervisor_ = std::make_unique<GoalSupervisor>(backend_, backend_->capabilities(), GoalMonitorConfig(), false);
+  }
+
+  /// Runs a position goal as the node would, to its end; returns "SUCCEEDED: ..." or the like.
+  std::string run(const AxisValues& target)
+  {
+    auto log = std::make_shared<goal_supervisor_test::GoalLog>();
+    supervisor_->submit(std::make_unique<goal_supervisor_test::RecordingGoal>("position_abs", "goal", log),
+                        goal_supervisor_test::positionGoal(target[PAN], target[TILT], target[ZOOM]));
+    waitUntil(
+        [&] {
+          supervisor_->supervise(supervisor_->sample());
+          return !log->end.empty();
+        },
+        WAIT, std::chrono::milliseconds(20));
+    return log->end;
+  }
+
+  std::size_t absoluteMoves() const
+  {
+    std::size_t count = 0;
+    for (const HttpExchange& exchange : camera_->server().received().items())
+    {
+      count += exchange.body.find("AbsoluteMove") != std::string::npos;
+    }
+    return count;
+  }
+
+  std::unique_ptr<OnvifCameraEmulator> camera_;
+  std::shared_ptr<PtzBackend> device_;
+  std::shared_ptr<PtzBackend> backend_;
+  std::unique_ptr<GoalSupervisor> supervisor_;
+};
+}  // namespace
+
+TEST_F(ClosedLoopOnvif, AContinuousOnlyCameraReachesPositionGoalsOnItsStatusAndNeverGetsAnAbsoluteMove)
+{
+  start("continuous-only");
+  ASSERT_FALSE(device_->capabilities().axes[PAN].absolute);
+  EXPECT_TRUE(backend_->capabilities().axes[PAN].absolute);  // made up for by the steering
+  // Zoom 0: this camera has no zoom position space, and the goal leaves it alone.
+  EXPECT_EQ(run({ { 0.6, -0.2, 0.0 } }).rfind("SUCCEEDED: reached pan 0.6", 0), 0u);
+  EXPECT_NEAR(camera_->sample().position[PAN], 0.6, GoalMonitorConfig().tolerance[PAN]);
+  EXPECT_NEAR(camera_->sample().position[TILT], -0.2, GoalMonitorConfig().tolerance[TILT]);
+  EXPECT_EQ(run({ { -0.3, 0.1, 0.0 } }).rfind("SUCCEEDED: reached pan -0.3", 0), 0u);
+  EXPECT_EQ(absoluteMoves(), 0u);
+}
+
+TEST_F(ClosedLoopOnvif, ACameraThatRefusesTheAbsoluteMoveItListedIsSteeredFromItsNextGoalOn)
+{
+  start("refuse-absolute-move");
+  EXPECT_EQ(run({ { 0.5, 0.0, 0.0 } }).rfind("ABORTED: device fault: the ONVIF camera refused AbsoluteMove", 0), 0u);
+  // Its answer told the truth about it: the next goal is steered on its status, and reached.
+  EXPECT_EQ(run({ { 0.5, 0.0, 0.0 } }).rfind("SUCCEEDED: reached pan 0.5", 0), 0u);
+  EXPECT_EQ(absoluteMoves(), 1u);
 }

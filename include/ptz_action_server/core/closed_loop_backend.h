@@ -30,8 +30,8 @@ struct ClosedLoopConfig
 /**
  * \brief Runs goTo() as velocity commands on a device whose axes lack `absolute` but have `velocity` and `feedback`.
  *
- * After start(), if any present axis of the wrapped device cannot go to a position but can move at a speed and
- * reports where it is, every present axis that can move at a speed and reports itself is steered here: on each state
+ * At start() and before each goal, if any present axis of the wrapped device cannot go to a position but can move at
+ * a speed and reports where it is (a camera may say so only once it has refused an absolute move), every present axis that can move at a speed and reports itself is steered here: on each state
  * report (the backend's sample listener, on its I/O thread), each axis gets the speed that brings it to the target
  * without overshoot (bounded by the max speed, by braking at half the device's acceleration, and by the gain), and
  * the device is stopped once every axis is within stop_within. Those axes then report `absolute`. The goal itself is
@@ -57,13 +57,15 @@ public:
   bool setSampleListener(SampleListener listener) override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 
-  /// True when position goals are steered here (known after start()).
+  /// True when position goals are steered here (decided at start(), and again at each goTo()).
   bool steers() const;
 
 private:
   /// On the wrapped backend's thread, after each state report: the next speeds, or the stop.
   void steer();
   void steerLocked();
+  /// Reads the wrapped device's capabilities and decides which axes are steered here (mutex_ held).
+  void refreshSteeringLocked();
   /// The speed that brings \p axis from \p position to the target.
   double speedFor(Axis axis, double position) const;
 
