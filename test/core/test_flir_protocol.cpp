@@ -5,7 +5,8 @@
  * a unit that echoes and answers verbosely, velocity goals in the unit's sign, a unit that restarts mid-session (its
  * banner), a unit reset by another program (its `!T!T!P!P*` no reply and no error; with and without the banner, echo
  * and verbose replies after the reset), limit reports that come on their own, garbled replies, an E-series set up
- * after its TCP banner, and 50 unplug/replug cycles with file descriptors and resident memory steady.
+ * after its TCP banner, the capabilities declared, and 50 unplug/replug cycles with file descriptors and resident
+ * memory steady.
  */
 #include <gtest/gtest.h>
 
@@ -17,6 +18,7 @@
 #include "wait_until.h"
 
 #include "ptz_action_server/core/flir/flir_protocol.h"
+#include "ptz_action_server/core/goal_validation.h"
 #include "ptz_action_server/core/units.h"
 #include "ptz_action_server/emulators/flir_ptu_emulator.h"
 
@@ -169,6 +171,32 @@ TEST_F(FlirTest, AUnitThatRestartsMidSessionIsSetUpAgainAndReachesGoals)
   EXPECT_TRUE(waitUntil([&] { return atRest(*backend_, -0.4, -0.2); }, WAIT));
   EXPECT_EQ(counters().unusable_replies, 0u);
   EXPECT_EQ(counters().errors, 0u);
+}
+
+TEST_F(FlirTest, CapabilitiesArePanAndTiltToPositionsAtSpeedsWithFeedbackAndNoZoom)
+{
+  const Capabilities capabilities = backend_->capabilities();
+  for (Axis axis : { PAN, TILT })
+  {
+    EXPECT_TRUE(capabilities.axes[axis].present) << axis;
+    EXPECT_TRUE(capabilities.axes[axis].absolute) << axis;
+    EXPECT_TRUE(capabilities.axes[axis].velocity) << axis;
+    EXPECT_TRUE(capabilities.axes[axis].feedback) << axis;
+  }
+  const AxisCapability& zoom = capabilities.axes[ZOOM];
+  EXPECT_FALSE(zoom.present);
+  EXPECT_FALSE(zoom.absolute);
+  EXPECT_FALSE(zoom.velocity);
+  EXPECT_FALSE(zoom.feedback);
+  EXPECT_EQ(zoom.limitation, "a FLIR PTU has no zoom");
+  // A zoom goal is refused in those words; a pan-tilt goal that leaves the zoom at 1 is not.
+  const ValidatedGoal zoom_goal = validatePositionGoal({ 0.1, 0.1, 4.0 }, capabilities, false);
+  EXPECT_FALSE(zoom_goal.accepted);
+  EXPECT_EQ(zoom_goal.message, "a FLIR PTU has no zoom: zoom goals are not supported");
+  EXPECT_TRUE(validatePositionGoal({ 0.1, 0.1, 1.0 }, capabilities, false).accepted);
+  EXPECT_TRUE(capabilities.relative_moves);  // PO / TO
+  EXPECT_FALSE(capabilities.device_presets);
+  EXPECT_FALSE(capabilities.device_home);
 }
 
 // Another program on the line (a published driver's home()) resets the unit; this one keeps its modes, as the

@@ -30,8 +30,25 @@ FlirProtocol::FlirProtocol(const FlirSettings& settings, DeviceSession& session)
 Capabilities FlirProtocol::capabilities() const
 {
   Capabilities capabilities;
-  capabilities.axes[ZOOM].present = false;
-  capabilities.axes[ZOOM].range = AxisRange{ 1.0, 1.0 };
+  for (Axis axis : { PAN, TILT })
+  {
+    // `PP` / `TP` go to a position and report it; `CV` with signed `PS` / `TS` moves at a speed.
+    AxisCapability& moved = capabilities.axes[axis];
+    moved.present = true;
+    moved.absolute = true;
+    moved.velocity = true;
+    moved.feedback = true;
+  }
+  AxisCapability& zoom = capabilities.axes[ZOOM];
+  zoom.present = false;
+  zoom.absolute = false;
+  zoom.velocity = false;
+  zoom.feedback = false;
+  zoom.range = AxisRange{ 1.0, 1.0 };
+  zoom.limitation = "a FLIR PTU has no zoom";
+  capabilities.relative_moves = true;  // `PO` / `TO` (the node's relative goals go to positions all the same)
+  capabilities.device_presets = false;
+  capabilities.device_home = false;
   return capabilities;
 }
 

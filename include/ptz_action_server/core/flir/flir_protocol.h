@@ -77,7 +77,8 @@ public:
   {
     return "a FLIR PTU";
   }
-  /// No zoom; pan and tilt are unknown until the unit has told its limits (see onConnected()).
+  /// Pan and tilt go to positions, move at a speed and report where they are (their ranges and speeds are unknown
+  /// until the unit has told them, see onConnected()); no zoom ("a FLIR PTU has no zoom").
   Capabilities capabilities() const override;
   /// Waits for the line to fall quiet (on TCP, for the E-series banner); then `FT ED CI` and the queries of the unit's
   /// resolution, limits and upper speeds. The link is ready when the last answer is in and makes sense.
