@@ -139,7 +139,7 @@ void FlirPtuEmulator::onBytes(const std::uint8_t* data, std::size_t size, TimePo
     token_.clear();
     if (!out.empty())
     {
-      port_->send(out);  // the echo goes first: R's banner follows it
+      port_->send(out);  // the echo goes first: whatever the command says follows it
       out.clear();
     }
     const std::string answer = execute(command, at);
@@ -198,8 +198,7 @@ void FlirPtuEmulator::startCalibration(TimePoint at)
   // Tilt first; each axis hits both its limits (a report each), then comes home.
   calibration_ = { { TILT, config_.tilt_max, "!T" }, { TILT, config_.tilt_min, "!T" }, { TILT, 0, "" },
                    { PAN, config_.pan_max, "!P" },   { PAN, config_.pan_min, "!P" },   { PAN, 0, "*\r\n" } };
-  velocity_mode_ = false;
-  velocity_ = { { 0, 0 } };
+  velocity_ = { { 0, 0 } };  // a velocity move ends; the control mode stays
   model_.stop(at);
   model_.goToAxis(TILT, toRadians(TILT, config_.tilt_max), at);
 }

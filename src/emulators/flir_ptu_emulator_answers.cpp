@@ -70,16 +70,16 @@ std::string FlirPtuEmulator::reply(const std::string& letters, bool has_value, l
     limits_enforced_ = letters == "LE";
     return ACK;
   }
-  if (letters == "R")
+  if (letters == "R" || letters == "RE")
   {
-    powerUp();  // the banner, and the power-up modes
+    if (letters == "R" && config_.reset_as_power_up)
+    {
+      powerUp();  // a unit that restarts: its banner, and the power-up modes
+    }
+    // Terse or verbose, echo, the control mode and the speeds stay as they were: the published drivers read the 9
+    // bytes `!T!T!P!P*` and go on without `FT` / `ED`.
     startCalibration(at);
     return "";  // `!T!T!P!P*` once calibrated
-  }
-  if (letters == "RE")
-  {
-    startCalibration(at);
-    return "";
   }
   if (letters == "H" || letters == "HP" || letters == "HT")
   {

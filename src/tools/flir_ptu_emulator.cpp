@@ -19,12 +19,15 @@ A FLIR (Directed Perception) D46-like pan-tilt unit on a pseudo-terminal: its AS
 echo, position and velocity modes, resolution 185.1428"/position, pan +-3090 and tilt -907..604 positions,
 speeds 31..1671 and 31..1114 positions/s, R / RE reset calibration answered !T!T!P!P*), paced at the baud
 rate, replies ended CR LF. Like a unit at power-up it echoes and answers verbosely until FT / ED; its banner
-(at power-up, after R) reaches only a client that has the port open then, as on a real line. On TCP it
-greets every connection with the E-series banner. Point the node at the link: backend:=serial with
-port: /tmp/ptz_flir.
+(at power-up only) reaches only a client that has the port open then, as on a real line. On TCP it greets
+every connection with the E-series banner. R keeps terse / verbose, echo and the other modes, as the
+published drivers expect (they read !T!T!P!P* and go on without FT / ED). Point the node at the link:
+backend:=serial with port: /tmp/ptz_flir.
 
 Options:
   --no-banner            start terse, without echo and banner
+  --reset-as-power-up    R restarts the unit as at power-up (banner on a serial line, echo and verbose
+                         replies again) before it calibrates, as some units do
 )";
 }  // namespace
 
@@ -43,6 +46,11 @@ int main(int argc, char** argv)
                                   if (arg == "--no-banner")
                                   {
                                     config.banner = false;
+                                    return true;
+                                  }
+                                  if (arg == "--reset-as-power-up")
+                                  {
+                                    config.reset_as_power_up = true;
                                     return true;
                                   }
                                   return false;

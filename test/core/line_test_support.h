@@ -1,13 +1,17 @@
 /**
  * \file
  * \brief What the tests of the units on a line (FLIR PTU, Pelco-D) share: unique pseudo-terminal links, the link
- * config to reach them, a rest check, and a client that opens a pseudo-terminal as a serial port, the way a
- * third-party driver does.
+ * config to reach them, a rest check, and clients that open a pseudo-terminal as a serial port or connect over TCP,
+ * the way a third-party driver does.
  */
 #pragma once
 
+#include <arpa/inet.h>
 #include <fcntl.h>
+#include <netinet/in.h>
 #include <poll.h>
+#include <sys/ioctl.h>
+#include <sys/socket.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -49,32 +53,27 @@ inline bool atRest(const PtzBackend& backend, double pan, double tilt)
   return !sample.moving && std::abs(sample.position[PAN] - pan) < 2e-3 && std::abs(sample.position[TILT] - tilt) < 2e-3;
 }
 
-/// A serial port opened on a pseudo-terminal, raw, as a driver opens its device.
-class PtyClient
+/// A driver's end of a line to a unit: what it writes, and reads as a serial library does. See PtyClient, TcpClient.
+class LineClient
 {
 public:
-  explicit PtyClient(const std::string& path) : fd_(::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC))
-  {
-    termios settings{};
-    if (fd_ >= 0 && ::tcgetattr(fd_, &settings) == 0)
-    {
-      ::cfmakeraw(&settings);
-      ::tcsetattr(fd_, TCSANOW, &settings);
-    }
-  }
-  ~PtyClient()
+  ~LineClient()
   {
     if (fd_ >= 0)
     {
       ::close(fd_);
     }
   }
-  PtyClient(const PtyClient&) = delete;
-  PtyClient& operator=(const PtyClient&) = delete;
+  LineClient(const LineClient&) = delete;
+  LineClient& operator=(const LineClient&) = delete;
 
   bool isOpen() const
   {
     return fd_ >= 0;
+  }
+  int fd() const
+  {
+    return fd_;
   }
   void write(const std::string& text)
   {
@@ -99,10 +98,21 @@ public:
         },
         timeout);
   }
+  /// How many bytes arrived and wait to be read (a serial library's available()).
+  std::size_t available() const
+  {
+    int count = 0;
+    return ::ioctl(fd_, FIONREAD, &count) == 0 && count > 0 ? static_cast<std::size_t>(count) : 0;
+  }
   /// Drops what arrived and was not read yet (a serial library's flush of its input).
   void flushInput()
   {
     ::tcflush(fd_, TCIFLUSH);
+  }
+
+protected:
+  explicit LineClient(int fd) : fd_(fd)
+  {
   }
 
 private:
@@ -134,6 +144,43 @@ private:
   }
 
   int fd_ = -1;
+};
+
+/// A serial port opened on a pseudo-terminal, raw, as a driver opens its device.
+class PtyClient : public LineClient
+{
+public:
+  explicit PtyClient(const std::string& path)
+    : LineClient(::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC))
+  {
+    termios settings{};
+    if (isOpen() && ::tcgetattr(fd(), &settings) == 0)
+    {
+      ::cfmakeraw(&settings);
+      ::tcsetattr(fd(), TCSANOW, &settings);
+    }
+  }
+};
+
+/// A TCP connection to \p port on 127.0.0.1 (an E-series unit's port 4000, a serial server's).
+class TcpClient : public LineClient
+{
+public:
+  explicit TcpClient(std::uint16_t port) : LineClient(::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0))
+  {
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(port);
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    connected_ = isOpen() && ::connect(fd(), reinterpret_cast<const sockaddr*>(&address), sizeof(address)) == 0;
+  }
+  bool isConnected() const
+  {
+    return connected_;
+  }
+
+private:
+  bool connected_ = false;
 };
 
 }  // namespace ptz_action_server

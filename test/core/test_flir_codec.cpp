@@ -1,8 +1,8 @@
 /**
  * \file
  * \brief The FLIR PTU reply classifier and command text: replies as published-wire-facts.md section 3 quotes them
- * (terse, verbose, echoed, errors, limit reports, the reset answer, the E-series banner), split at every offset,
- * binary junk and overlong lines.
+ * (terse, verbose, echoed, errors, limit reports, the reset answers, the E-series banner), split at every offset,
+ * binary junk and overlong lines; a partial reply dropped after a timeout keeps the limit reports it starts with.
  */
 #include <gtest/gtest.h>
 
@@ -81,6 +81,13 @@ TEST(FlirReplies, PublishedReplyLinesAreClassifiedAsTheirTextSays)
     { "Initializing...*", Kind::BANNER, 0.0, "Initializing...*" },  // E-series: ready, but no reply to anything
     { "Initializing...", Kind::BANNER, 0.0, "Initializing..." },
     { "TP", Kind::TEXT, 0.0, "TP" },  // a command echoed before a CR delimiter, its reply on the next line
+    // A reset's answer, what the published drivers read after ` r ` (DRV, P46; INDI: RE, RT, RP): no limit hits, and
+    // no acknowledgement of anything else.
+    { "!T!T!P!P*", Kind::RESET, 0.0, "!T!T!P!P*" },
+    { "!T!T*", Kind::RESET, 0.0, "!T!T*" },
+    { "!P!P*", Kind::RESET, 0.0, "!P!P*" },
+    { "r !T!T!P!P*", Kind::RESET, 0.0, "!T!T!P!P*" },  // echo on: the command, then the answer on its line
+    { "RE !T!T!P!P* ", Kind::RESET, 0.0, "!T!T!P!P*" },
   };
   for (const Golden& golden : goldens)
   {
@@ -94,10 +101,14 @@ TEST(FlirReplies, PublishedReplyLinesAreClassifiedAsTheirTextSays)
 
 TEST(FlirReplies, LimitReportsAreTakenOutWhereverTheyCome)
 {
-  // The reset answer: tilt calibrates first, each axis hits two limits, then the acknowledgement.
-  const std::vector<flir::Reply> reset = classify("!T!T!P!P*");
-  EXPECT_EQ(kindsOf(reset), (std::vector<Kind>{ Kind::LIMIT, Kind::LIMIT, Kind::LIMIT, Kind::LIMIT, Kind::ACK }));
-  EXPECT_EQ(std::string({ reset[0].axis, reset[1].axis, reset[2].axis, reset[3].axis }), "TTPP");
+  // A velocity move reports each axis' limit once, and the report may lead the next acknowledgement.
+  const std::vector<flir::Reply> hits = classify("!T!P*");
+  EXPECT_EQ(kindsOf(hits), (std::vector<Kind>{ Kind::LIMIT, Kind::LIMIT, Kind::ACK }));
+  EXPECT_EQ(std::string({ hits[0].axis, hits[1].axis }), "TP");
+  EXPECT_EQ(kindsOf(classify("!P*")), (std::vector<Kind>{ Kind::LIMIT, Kind::ACK }));
+  // Two reports of one axis ahead of a bare `*` with anything but an echoed command before them: no reset answer.
+  EXPECT_EQ(kindsOf(classify("* 3 !T!T*")), (std::vector<Kind>{ Kind::LIMIT, Kind::LIMIT, Kind::VALUE }));
+  EXPECT_EQ(kindsOf(classify("!P!T!T*")), (std::vector<Kind>{ Kind::LIMIT, Kind::LIMIT, Kind::LIMIT, Kind::ACK }));
 
   EXPECT_EQ(kindsOf(classify("!P")), std::vector<Kind>{ Kind::LIMIT });
   EXPECT_EQ(classify("!T").front().axis, 'T');
@@ -139,12 +150,33 @@ TEST(FlirReplies, LinesSplitAtEveryOffsetAndAnyLineEnd)
     std::vector<flir::Reply> replies = parseText(parser, stream.substr(0, split));
     const std::vector<flir::Reply> rest = parseText(parser, stream.substr(split));
     replies.insert(replies.end(), rest.begin(), rest.end());
-    ASSERT_EQ(kindsOf(replies), (std::vector<Kind>{ Kind::BANNER, Kind::VALUE, Kind::ACK, Kind::ERROR, Kind::VALUE,
-                                                    Kind::LIMIT, Kind::LIMIT, Kind::LIMIT, Kind::LIMIT, Kind::ACK }))
+    ASSERT_EQ(kindsOf(replies),
+              (std::vector<Kind>{ Kind::BANNER, Kind::VALUE, Kind::ACK, Kind::ERROR, Kind::VALUE, Kind::RESET }))
         << "split at " << split;
     EXPECT_DOUBLE_EQ(replies[1].value, 12.0);
     EXPECT_DOUBLE_EQ(replies[4].value, -3.0);
   }
+}
+
+TEST(FlirReplies, APartialReplyDroppedAfterATimeoutKeepsTheLimitReportsItStartsWith)
+{
+  // A calibration reports each limit as the axis reaches it, seconds apart: requests time out meanwhile.
+  flir::ReplyParser parser;
+  EXPECT_TRUE(parseText(parser, "!T!T").empty());
+  parser.dropPartialReply();
+  EXPECT_TRUE(parseText(parser, "!P").empty());
+  parser.dropPartialReply();
+  EXPECT_EQ(kindsOf(parseText(parser, "!P*\r\n")), std::vector<Kind>{ Kind::RESET });
+  // The rest of a reply cut short is dropped: its end never makes the next reply's value.
+  EXPECT_TRUE(parseText(parser, "!T* 12").empty());
+  parser.dropPartialReply();
+  const std::vector<flir::Reply> next = parseText(parser, "* 34\r\n");
+  EXPECT_EQ(kindsOf(next), (std::vector<Kind>{ Kind::LIMIT, Kind::VALUE }));
+  EXPECT_DOUBLE_EQ(next[1].value, 34.0);
+  // An error cut short right after its `!` leaves nothing behind.
+  EXPECT_TRUE(parseText(parser, "!").empty());
+  parser.dropPartialReply();
+  EXPECT_EQ(kindsOf(parseText(parser, "* 5\r\n")), std::vector<Kind>{ Kind::VALUE });
 }
 
 TEST(FlirReplies, BinaryJunkAndOverlongLinesNeverBreakTheParser)

@@ -3,8 +3,10 @@
  * \brief What only the FLIR backend does, against the FLIR PTU emulator over real pseudo-terminals and TCP (the
  * backend contract suite covers what every device does): the unit's resolution, limits and speeds read at start from
  * a unit that echoes and answers verbosely, velocity goals in the unit's sign, a unit that restarts mid-session (its
- * banner), limit reports that come on their own, garbled replies, an E-series set up after its TCP banner, and 50
- * unplug/replug cycles with file descriptors and resident memory steady.
+ * banner), a unit reset by another program (its `!T!T!P!P*` no reply and no error; with and without the banner, echo
+ * and verbose replies after the reset), limit reports that come on their own, garbled replies, an E-series set up
+ * after its TCP banner, the capabilities declared, and 50 unplug/replug cycles with file descriptors and resident
+ * memory steady.
  */
 #include <gtest/gtest.h>
 
@@ -16,6 +18,7 @@
 #include "wait_until.h"
 
 #include "ptz_action_server/core/flir/flir_protocol.h"
+#include "ptz_action_server/core/goal_validation.h"
 #include "ptz_action_server/core/units.h"
 #include "ptz_action_server/emulators/flir_ptu_emulator.h"
 
@@ -65,13 +68,36 @@ protected:
 
   void startWith(unsigned baud)
   {
+    FlirPtuEmulatorConfig emulator_config;  // as at power-up: echo on, verbose replies
+    emulator_config.port.baud = baud;
+    startWith(emulator_config);
+  }
+
+  /// A D46 at 9600 baud whose reset calibration takes a moment (it runs at the speeds the goals set, which the unit
+  /// keeps); \p reset_as_power_up: `R` restarts it first.
+  void startQuickUnit(bool reset_as_power_up)
+  {
+    FlirPtuEmulatorConfig emulator_config;
+    emulator_config.pan_max_speed = 20.0;
+    emulator_config.tilt_max_speed = 20.0;
+    emulator_config.acceleration = 400.0;
+    emulator_config.reset_as_power_up = reset_as_power_up;
+    FlirSettings settings;
+    settings.pan_speed = 20.0;
+    settings.tilt_speed = 20.0;
+    settings.acceleration = 400.0;
+    startWith(emulator_config, settings);
+  }
+
+  void startWith(FlirPtuEmulatorConfig emulator_config, const FlirSettings& settings = FlirSettings{})
+  {
     backend_.reset();
     emulator_.reset();
-    FlirPtuEmulatorConfig emulator_config;  // as at power-up: echo on, verbose replies
     emulator_config.port.link = uniqueLink("flir");
-    emulator_config.port.baud = baud;
+    const unsigned baud = emulator_config.port.baud;
     emulator_ = std::make_unique<FlirPtuEmulator>(emulator_config);
     FlirConfig config;
+    config.flir = settings;
     config.link = serialLink(emulator_config.port.link, baud);
     config.session.state_timeout = LINE_TEST_STATE_TIMEOUT;
     backend_ = makeFlirBackend(config);
@@ -145,6 +171,81 @@ TEST_F(FlirTest, AUnitThatRestartsMidSessionIsSetUpAgainAndReachesGoals)
   EXPECT_TRUE(waitUntil([&] { return atRest(*backend_, -0.4, -0.2); }, WAIT));
   EXPECT_EQ(counters().unusable_replies, 0u);
   EXPECT_EQ(counters().errors, 0u);
+}
+
+TEST_F(FlirTest, CapabilitiesArePanAndTiltToPositionsAtSpeedsWithFeedbackAndNoZoom)
+{
+  const Capabilities capabilities = backend_->capabilities();
+  for (Axis axis : { PAN, TILT })
+  {
+    EXPECT_TRUE(capabilities.axes[axis].present) << axis;
+    EXPECT_TRUE(capabilities.axes[axis].absolute) << axis;
+    EXPECT_TRUE(capabilities.axes[axis].velocity) << axis;
+    EXPECT_TRUE(capabilities.axes[axis].feedback) << axis;
+  }
+  const AxisCapability& zoom = capabilities.axes[ZOOM];
+  EXPECT_FALSE(zoom.present);
+  EXPECT_FALSE(zoom.absolute);
+  EXPECT_FALSE(zoom.velocity);
+  EXPECT_FALSE(zoom.feedback);
+  EXPECT_EQ(zoom.limitation, "a FLIR PTU has no zoom");
+  // A zoom goal is refused in those words; a pan-tilt goal that leaves the zoom at 1 is not.
+  const ValidatedGoal zoom_goal = validatePositionGoal({ 0.1, 0.1, 4.0 }, capabilities, false);
+  EXPECT_FALSE(zoom_goal.accepted);
+  EXPECT_EQ(zoom_goal.message, "a FLIR PTU has no zoom: zoom goals are not supported");
+  EXPECT_TRUE(validatePositionGoal({ 0.1, 0.1, 1.0 }, capabilities, false).accepted);
+  EXPECT_TRUE(capabilities.relative_moves);  // PO / TO
+  EXPECT_FALSE(capabilities.device_presets);
+  EXPECT_FALSE(capabilities.device_home);
+}
+
+// Another program on the line (a published driver's home()) resets the unit; this one keeps its modes, as the
+// published drivers expect.
+TEST_F(FlirTest, AUnitResetByAnotherProgramIsSetUpAgainAndReachesGoals)
+{
+  startQuickUnit(false);
+  backend_->goTo({ 0.3, 0.1, 1.0 });
+  ASSERT_TRUE(waitUntil([&] { return atRest(*backend_, 0.3, 0.1); }, WAIT));
+  PtyClient other(emulator_->path());  // open until the end: nothing the unit says is lost meanwhile
+  ASSERT_TRUE(other.isOpen());
+  other.write("r ");
+  // The unit calibrated, reading nothing meanwhile, and answered `!T!T!P!P*`: neither a reply nor an error. The
+  // backend set it up again once it listened.
+  ASSERT_TRUE(waitUntil([&] { return received("FT") >= 2u && backend_->sample().link_up; }, WAIT));
+  EXPECT_EQ(counters().resets, 1u);
+  EXPECT_TRUE(waitUntil([&] { return atRest(*backend_, 0.0, 0.0); }, WAIT));  // the calibration ends at home
+  EXPECT_EQ(backend_->sample().link_losses, 1u);
+  backend_->goTo({ -0.4, -0.2, 1.0 });
+  EXPECT_TRUE(waitUntil([&] { return atRest(*backend_, -0.4, -0.2); }, WAIT));
+  EXPECT_EQ(counters().errors, 0u);
+  EXPECT_EQ(counters().unusable_replies, 0u);
+  EXPECT_EQ(counters().limit_hits, 0u);  // the calibration's `!T` / `!P` are no limit hits
+  EXPECT_EQ(counters().restarts, 0u);
+  EXPECT_EQ(backend_->sample().fault_count, 0u);
+}
+
+// A unit that resets as it powers up (--reset-as-power-up): its banner, then echo and verbose replies again, then the
+// calibration and `!T!T!P!P*`. The `*` must not be taken for the answer to the set-up's `FT` (which the calibrating
+// unit never read): `FT` goes out again once the unit listens.
+TEST_F(FlirTest, AUnitThatResetsAsAtPowerUpIsSetUpAgainAndReachesGoals)
+{
+  startQuickUnit(true);
+  backend_->goTo({ 0.3, 0.1, 1.0 });
+  ASSERT_TRUE(waitUntil([&] { return atRest(*backend_, 0.3, 0.1); }, WAIT));
+  PtyClient other(emulator_->path());
+  ASSERT_TRUE(other.isOpen());
+  other.write("r ");
+  ASSERT_TRUE(waitUntil([&] { return counters().restarts == 1u; }, WAIT));  // its banner
+  ASSERT_TRUE(waitUntil([&] { return received("FT") >= 2u && backend_->sample().link_up; }, WAIT));
+  EXPECT_EQ(counters().resets, 1u);
+  EXPECT_GE(counters().banner_lines, 1u);
+  EXPECT_NE(backend_->lastLinkLoss().find("the FLIR PTU restarted"), std::string::npos) << backend_->lastLinkLoss();
+  EXPECT_TRUE(waitUntil([&] { return atRest(*backend_, 0.0, 0.0); }, WAIT));
+  backend_->goTo({ -0.4, -0.2, 1.0 });
+  EXPECT_TRUE(waitUntil([&] { return atRest(*backend_, -0.4, -0.2); }, WAIT));
+  EXPECT_EQ(counters().errors, 0u);
+  EXPECT_EQ(counters().limit_hits, 0u);
+  EXPECT_EQ(backend_->sample().fault_count, 0u);
 }
 
 TEST_F(FlirTest, LimitReportsComingOnTheirOwnAreCountedAndGoalsStillReached)

@@ -27,9 +27,13 @@ struct FlirPtuEmulatorConfig
   double acceleration = 3.0;    ///< rad/s^2 (PA, TA)
   long lower_speed = 31;        ///< positions/s: PL / TL at power-up, and the least they can be set to (a D46)
   long base_speed = 1000;       ///< positions/s: PB / TB at power-up (a D46)
-  /// Start verbose, with echo, and print a banner (at power-up and reset on a serial line, to a client that has the
-  /// port open; on every connection over TCP, ending `Initializing...*` once the unit is ready), as a real unit does.
+  /// Start verbose, with echo, and print a banner (at power-up on a serial line, to a client that has the port open;
+  /// on every connection over TCP, ending `Initializing...*` once the unit is ready), as a real unit does.
   bool banner = true;
+  /// `R` restarts the unit as at power-up (on a serial line its banner; echo on and verbose replies again, position
+  /// mode, the power-up speeds), then calibrates: for units that do. Off (the default), `R` only calibrates and keeps
+  /// every mode and setting, as the published drivers expect (they read `!T!T!P!P*` and go on terse, without echo).
+  bool reset_as_power_up = false;
 };
 
 /// A command as it reached the unit.
@@ -46,9 +50,12 @@ struct ReceivedCommand
  * break), verbose replies, position mode; on a serial line its banner is lost unless a client has the port open
  * then, as on a real line. Replies end CR LF. Understands FT/FV/F, ED/EE/E, CI/CV/C, PR/TR, PN/PX/TN/TX, PU/TU,
  * PL/TL, PB/TB, PA/TA, PP/TP (query, absolute), PO/TO (relative), PS/TS (speed; signed velocity in CV mode),
- * H/HP/HT, LE/LD, R (a reset: the banner and power-up modes, then the calibration) and RE (the calibration only):
- * the calibration runs each axis to both its limits and home, then answers `!T!T!P!P*`; the unit reads nothing
- * meanwhile. Anything else is answered `! Illegal Command`. Reports `!P` / `!T` when a velocity move reaches a limit.
+ * H/HP/HT, LE/LD, R and RE (the reset calibration): the calibration runs each axis to both its limits and home, then
+ * answers `!T!T!P!P*` (CR LF); the unit reads nothing meanwhile, and keeps its modes (terse or verbose, echo, control
+ * mode) and settings, so a driver that reads those 9 bytes goes on as before. With
+ * FlirPtuEmulatorConfig::reset_as_power_up, `R` first restarts the unit as at power-up (banner, echo, verbose). The
+ * banner comes only at power-up (reaching a client that has the serial port open then) and on a new TCP connection.
+ * Anything else is answered `! Illegal Command`. Reports `!P` / `!T` when a velocity move reaches a limit.
  */
 class FlirPtuEmulator : public LineEmulator<ReceivedCommand>
 {
@@ -75,11 +82,12 @@ private:
   std::string reply(const std::string& letters, bool has_value, long value, TimePoint at);
   std::string replyToAxisSetting(const std::string& letters, bool has_value, long value, TimePoint at);
   std::string replyToMotion(const std::string& letters, bool has_value, long value, TimePoint at);
-  /// Position mode, the power-up speeds; on a serial line the banner, echo on, verbose.
+  /// Position mode, the power-up speeds, echo on and verbose (unless configured without banner); on a serial line the
+  /// banner.
   void powerUp() override;
   /// tcp: an E-series unit greets every connection (echo on, verbose, a banner).
   void greet();
-  /// `R` / `RE`: the axes run to their limits and home; the answer comes at the end.
+  /// `R` / `RE`: the axes run to their limits and home; the answer comes at the end. Modes and settings stay.
   void startCalibration(TimePoint at);
   /// The calibration's reports due at \p now, appended to \p out.
   void calibrate(TimePoint now, std::string& out);

@@ -1,7 +1,9 @@
 #include "ptz_action_server/core/flir/flir_codec.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <cstring>
 
 namespace ptz_action_server
 {
@@ -63,6 +65,42 @@ bool isBannerLine(const std::string& trimmed)
          contains(lower, "flir commercial systems") || contains(lower, "all rights reserved");
 }
 
+/// What a reset's calibration answers: both axes (`R`, `RE`), tilt only (`RT`), pan only (`RP`); longest first.
+const char* const RESET_ANSWERS[] = { "!T!T!P!P*", "!T!T*", "!P!P*" };
+
+/// The reset answer \p line is, alone or after the echo of the command that asked for it (`r !T!T!P!P*`); "" if none.
+/// A limit hit reports each axis once, so two reports of one axis ahead of a bare `*` come from nothing else.
+std::string resetAnswer(const std::string& line)
+{
+  const std::string trimmed = trim(line);
+  for (const char* answer : RESET_ANSWERS)
+  {
+    const std::size_t length = std::strlen(answer);
+    if (trimmed.size() < length || trimmed.compare(trimmed.size() - length, length, answer) != 0)
+    {
+      continue;
+    }
+    const std::string echo = trim(trimmed.substr(0, trimmed.size() - length));
+    if (std::all_of(echo.begin(), echo.end(),
+                    [](char character) { return std::isalpha(static_cast<unsigned char>(character)) != 0; }))
+    {
+      return answer;
+    }
+  }
+  return {};
+}
+
+/// The length of the limit reports (`!P`, `!T`) \p text starts with.
+std::size_t leadingLimitReports(const std::string& text)
+{
+  std::size_t length = 0;
+  while (length + 1 < text.size() && text[length] == '!' && (text[length + 1] == 'P' || text[length + 1] == 'T'))
+  {
+    length += 2;
+  }
+  return length;
+}
+
 /// What a line without limit reports is.
 Reply classifyRest(const std::string& line)
 {
@@ -95,6 +133,15 @@ Reply classifyRest(const std::string& line)
 
 void classifyLine(const std::string& line, std::vector<Reply>& replies)
 {
+  const std::string reset = resetAnswer(line);
+  if (!reset.empty())
+  {
+    Reply calibrated;
+    calibrated.kind = Reply::Kind::RESET;
+    calibrated.text = reset;
+    replies.push_back(calibrated);
+    return;
+  }
   // `!P` / `!T` come whenever a limit is hit, with no line end of their own: take them out wherever they are. (An
   // error is `! <message>`, with a space.)
   std::string rest;
@@ -146,6 +193,11 @@ void ReplyParser::feed(const std::uint8_t* data, std::size_t size, std::vector<R
 void ReplyParser::reset()
 {
   line_.clear();
+}
+
+void ReplyParser::dropPartialReply()
+{
+  line_.resize(leadingLimitReports(line_));
 }
 
 std::string command(const char* letters)

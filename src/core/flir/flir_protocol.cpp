@@ -30,8 +30,25 @@ FlirProtocol::FlirProtocol(const FlirSettings& settings, DeviceSession& session)
 Capabilities FlirProtocol::capabilities() const
 {
   Capabilities capabilities;
-  capabilities.axes[ZOOM].present = false;
-  capabilities.axes[ZOOM].range = AxisRange{ 1.0, 1.0 };
+  for (Axis axis : { PAN, TILT })
+  {
+    // `PP` / `TP` go to a position and report it; `CV` with signed `PS` / `TS` moves at a speed.
+    AxisCapability& moved = capabilities.axes[axis];
+    moved.present = true;
+    moved.absolute = true;
+    moved.velocity = true;
+    moved.feedback = true;
+  }
+  AxisCapability& zoom = capabilities.axes[ZOOM];
+  zoom.present = false;
+  zoom.absolute = false;
+  zoom.velocity = false;
+  zoom.feedback = false;
+  zoom.range = AxisRange{ 1.0, 1.0 };
+  zoom.limitation = "a FLIR PTU has no zoom";
+  capabilities.relative_moves = true;  // `PO` / `TO` (the node's relative goals go to positions all the same)
+  capabilities.device_presets = false;
+  capabilities.device_home = false;
   return capabilities;
 }
 
@@ -181,6 +198,7 @@ void FlirProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
                       { "limit hits", counters_.limit_hits },
                       { "banner lines", counters_.banner_lines },
                       { "restarts", counters_.restarts },
+                      { "resets", counters_.resets },
                       { "unusable replies", counters_.unusable_replies },
                       { "unexpected text lines", counters_.unexpected_text } });
   channel_.diagnostics(values);
@@ -210,6 +228,9 @@ void FlirProtocol::handleReply(const flir::Reply& reply)
       return;
     case flir::Reply::Kind::BANNER:
       handleBanner(reply);
+      return;
+    case flir::Reply::Kind::RESET:
+      handleReset(reply);
       return;
     case flir::Reply::Kind::TEXT:
       ++counters_.unexpected_text;
@@ -241,6 +262,20 @@ void FlirProtocol::handleBanner(const flir::Reply& reply)
   }
   // The unit (re)started during the set-up: what was on the wire is lost. Start again once it has finished talking.
   setUpAfter(reply.endsBanner() ? Wait::QUIET : Wait::BANNER_END);
+}
+
+void FlirProtocol::handleReset(const flir::Reply& reply)
+{
+  ++counters_.resets;
+  // Someone reset the unit (a driver's `R`): it ran each axis to both its limits and home, reading nothing meanwhile.
+  // Its `*` acknowledges the reset, not what this backend asked last. The goal is lost, and a unit may be back in its
+  // power-up modes (echo, verbose): set it up afresh.
+  if (ready_)
+  {
+    session_.disconnect("the FLIR PTU was reset (it answered " + reply.text + " after its calibration)");
+    return;
+  }
+  setUpAfter(Wait::QUIET);
 }
 
 void FlirProtocol::handleAnswer(const TransactionChannel::Request& request, const flir::Reply& reply)
@@ -335,7 +370,7 @@ void FlirProtocol::unusable(Tag tag)
 
 void FlirProtocol::onTimeout(const TransactionChannel::Request& lost)
 {
-  parser_.reset();
+  parser_.dropPartialReply();  // the limit reports of a calibration still under way stay
   if (!ready_ && lost.tag != COMMAND)
   {
     // A set-up answer went missing (a slow unit, a busy machine): ask again, and go on from there.

@@ -4,11 +4,12 @@
  *
  * A command is `<letters>[<integer>]` ended by a space. In terse mode (`FT`) the unit answers `*` to a command,
  * `* <value>` to a query and `! <message>` to an error; every reply line ends with CR LF. `!P` / `!T` report a pan /
- * tilt limit hit whenever it happens, without a line end of their own, so they may lead any line (a reset answers
- * `!T!T!P!P*`). Before `ED` the unit echoes what it receives ahead of its reply (`PP * 12`; a CR delimiter is echoed
- * as a line break), before `FT` its replies are verbose ("* Current pan position is 1234"), and it prints a banner at
- * power-up (an E-series unit on every TCP connection). Positions are encoder steps; the unit's positive pan is
- * counter-clockwise, the opposite of ptz_action_server's.
+ * tilt limit hit whenever it happens, without a line end of their own, so they may lead any line. A reset (`R`, `RE`)
+ * calibrates: each axis runs to both its limits, tilt first, and the unit answers `!T!T!P!P*` (`RT` `!T!T*`, `RP`
+ * `!P!P*`), the answer the published drivers wait for. Before `ED` the unit echoes what it receives ahead of its
+ * reply (`PP * 12`; a CR delimiter is echoed as a line break), before `FT` its replies are verbose ("* Current pan
+ * position is 1234"), and it prints a banner at power-up (an E-series unit on every TCP connection). Positions are
+ * encoder steps; the unit's positive pan is counter-clockwise, the opposite of ptz_action_server's.
  */
 #pragma once
 
@@ -28,17 +29,20 @@ struct Reply
 {
   enum class Kind
   {
-    ACK,     ///< `*` without a number (after any echo: `ED *`)
-    VALUE,   ///< `*` with a number: the first number after it (terse `* 12`, verbose `* Current pan position is 12`)
-    ERROR,   ///< `! message`
-    LIMIT,   ///< `!P` or `!T`: a limit was hit (never an answer to a request)
+    ACK,    ///< `*` without a number (after any echo: `ED *`)
+    VALUE,  ///< `*` with a number: the first number after it (terse `* 12`, verbose `* Current pan position is 12`)
+    ERROR,  ///< `! message`
+    LIMIT,  ///< `!P` or `!T`: a limit was hit (never an answer to a request)
+    /// `!T!T!P!P*`, `!T!T*` or `!P!P*` on a line of its own (after the echo of the reset, if any): a reset's
+    /// calibration ended. Neither limit hits nor an acknowledgement of whatever was asked last.
+    RESET,
     BANNER,  ///< a line of the start-up banner (`### PAN-TILT CONTROLLER`, ..., `Initializing...*`): no reply either
     TEXT,    ///< anything else: an echo without a reply (`TP` before a CR), noise
   };
   Kind kind = Kind::TEXT;
   double value = 0.0;  ///< VALUE
   char axis = 0;       ///< LIMIT: 'P' or 'T'
-  std::string text;    ///< ERROR: the message; BANNER, TEXT: the line
+  std::string text;    ///< ERROR: the message; BANNER, TEXT: the line; RESET: the calibration's answer
 
   /// The banner's last line: the unit has finished starting.
   bool endsBanner() const
@@ -48,9 +52,9 @@ struct Reply
 };
 
 /**
- * \brief Classifies one line (without its line end) and appends what it says to \p replies: first a LIMIT for each
- * `!P` / `!T` anywhere in it, then what the rest of the line is (nothing if only limit reports were left). Never
- * throws.
+ * \brief Classifies one line (without its line end) and appends what it says to \p replies: a RESET for a reset's
+ * answer; otherwise first a LIMIT for each `!P` / `!T` anywhere in it, then what the rest of the line is (nothing if
+ * only limit reports were left). Never throws.
  */
 void classifyLine(const std::string& line, std::vector<Reply>& replies);
 
@@ -66,8 +70,11 @@ public:
 
   /// Appends the replies completed by \p data to \p replies.
   void feed(const std::uint8_t* data, std::size_t size, std::vector<Reply>& replies);
-  /// Forgets a partial line (after a reconnect or a timeout).
+  /// Forgets a partial line (after a reconnect).
   void reset();
+  /// Forgets a partial reply (after a timeout), but keeps the limit reports it starts with: they have no line end of
+  /// their own, and a reset's calibration sends them one by one, seconds apart (`!T`, `!T`, `!P`, `!P*`).
+  void dropPartialReply();
 
 private:
   std::string line_;

@@ -40,6 +40,7 @@ struct FlirCounters
   Counter limit_hits;        ///< `!P` / `!T`
   Counter banner_lines;      ///< lines of a start-up banner
   Counter restarts;          ///< banners after the set-up: the unit restarted under us
+  Counter resets;            ///< reset answers (`!T!T!P!P*`): someone reset the unit, which calibrated meanwhile
   Counter unusable_replies;  ///< a query answered without a usable number, or a set-up that made no sense
   Counter unexpected_text;   ///< echoes without a reply, noise
 };
@@ -56,9 +57,12 @@ struct FlirCounters
  *
  * Whatever a unit says besides its replies is never taken for one: echoes and verbose replies are read through,
  * `!P` / `!T` are counted wherever they come, and a banner during the set-up starts it again once the banner has
- * ended. A banner after the set-up means the unit restarted (a power cycle): it has forgotten the goal, its modes and
- * speeds, so the connection is dropped as lost ("the FLIR PTU restarted") and set up afresh. A `!` reply to a command
- * is a device fault (the goal aborts with the unit's message).
+ * ended. A banner after the set-up means the unit restarted (a power cycle, or a reset on a unit that resets as it
+ * powers up): it has forgotten the goal, its modes and speeds, so the connection is dropped as lost ("the FLIR PTU
+ * restarted") and set up afresh. A reset's answer (`!T!T!P!P*`, after someone else sent `R`) is no reply either, nor
+ * an error: the unit read nothing while it calibrated and may be back in its power-up modes, so the set-up starts
+ * again (after the set-up, the connection is dropped as lost: "the FLIR PTU was reset"). A `!` reply to a command is
+ * a device fault (the goal aborts with the unit's message).
  */
 class FlirProtocol : public DeviceProtocol
 {
@@ -73,7 +77,8 @@ public:
   {
     return "a FLIR PTU";
   }
-  /// No zoom; pan and tilt are unknown until the unit has told its limits (see onConnected()).
+  /// Pan and tilt go to positions, move at a speed and report where they are (their ranges and speeds are unknown
+  /// until the unit has told them, see onConnected()); no zoom ("a FLIR PTU has no zoom").
   Capabilities capabilities() const override;
   /// Waits for the line to fall quiet (on TCP, for the E-series banner); then `FT ED CI` and the queries of the unit's
   /// resolution, limits and upper speeds. The link is ready when the last answer is in and makes sense.
@@ -124,6 +129,7 @@ private:
 
   void handleReply(const flir::Reply& reply);
   void handleBanner(const flir::Reply& reply);
+  void handleReset(const flir::Reply& reply);
   void handleAnswer(const TransactionChannel::Request& request, const flir::Reply& reply);
   /// A query answered without its number, or a set-up that made no sense: counted; the set-up starts again.
   void unusable(Tag tag);
