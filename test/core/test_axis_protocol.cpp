@@ -337,7 +337,8 @@ TEST(AxisBackend, WithoutAnyZoomTableTheZoomIsADeclaredMissingCapabilityNeverASi
     EXPECT_TRUE(zoom.velocity);  // info=1 lists continuouszoommove
     EXPECT_EQ(zoom.limitation, "this Axis camera gives no zoom table");
     ASSERT_EQ(warnings.all(*backend).size(), 1u);
-    EXPECT_NE(warnings.all(*backend)[0].find(guess ? "its model family has no default" : "zoom_guess is off"), std::string::npos)
+    EXPECT_NE(warnings.all(*backend)[0].find(guess ? "its model family has no default" : "zoom_guess is off"),
+              std::string::npos)
         << warnings.all(*backend)[0];
     EXPECT_EQ(diagnostic(*backend, "zoom X-factor").rfind("UNKNOWN: no zoom table", 0), 0u);
 

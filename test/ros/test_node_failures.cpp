@@ -222,3 +222,42 @@ TEST_F(NodeTest, CapabilitiesAreLatchedAndAZoomTheDeviceCannotPositionIsRefusedN
     EXPECT_EQ(observer_->latest().zoom, 1.0f);
   }
 }
+
+/// Only in onvif_no_position_node.test: a camera whose status carries no position.
+TEST_F(NodeTest, ACameraThatReportsNoPositionTakesVelocityGoalsAndCancelOnly)
+{
+  const ptz_action_server::PtzCapabilities& can = *capabilities_;
+  for (const auto* axis : { &can.pan, &can.tilt })
+  {
+    EXPECT_TRUE(axis->present && axis->velocity);
+    EXPECT_FALSE(axis->feedback);
+    EXPECT_FALSE(axis->absolute);
+    EXPECT_FALSE(axis->limitation.empty());
+  }
+  // Its pose is unknown: NaN in ptz_state, no pan or tilt joint in joint_states (nor tf).
+  ASSERT_TRUE(observer_->waitTicks(2));
+  EXPECT_TRUE(std::isnan(observer_->latest().pan));
+  EXPECT_TRUE(std::isnan(observer_->latest().tilt));
+  EXPECT_TRUE(observer_->latestJoints().name.empty());
+
+  // Position, relative and frame goals need a position: refused with the camera's words.
+  EXPECT_EQ(moveTo(0.3, 0.0, 0.0), State::REJECTED);
+  EXPECT_NE(absolute_->getState().getText().find("pan goals are not supported"), std::string::npos)
+      << absolute_->getState().getText();
+  EXPECT_NE(absolute_->getState().getText().find(can.pan.limitation.substr(0, 20)), std::string::npos)
+      << absolute_->getState().getText();
+  relative_->sendGoal(makePtzGoal(0.1, 0.0, 0.0));
+  ASSERT_TRUE(relative_->waitForResult(ros::Duration(5.0)));
+  EXPECT_EQ(relative_->getState(), State::REJECTED) << relative_->getState().getText();
+
+  // A velocity goal runs (no limit or stall can be seen, so it goes on) until cancelled.
+  velocity_->sendGoal(makePtzGoal(0.3, 0.0, 0.0));
+  ASSERT_TRUE(observer_->waitFor([](const PtzState& state) { return state.mode == PtzState::MODE_VELOCITY; }, 10.0));
+  ASSERT_TRUE(observer_->waitTicks(15));
+  EXPECT_EQ(velocity_->getState(), State::ACTIVE) << velocity_->getState().getText();
+  velocity_->cancelGoal();
+  ASSERT_TRUE(velocity_->waitForResult(ros::Duration(GOAL_WAIT)));
+  EXPECT_EQ(velocity_->getState(), State::PREEMPTED) << velocity_->getState().getText();
+  EXPECT_NE(velocity_->getState().getText().find("cancelled"), std::string::npos) << velocity_->getState().getText();
+  ASSERT_TRUE(observer_->waitFor([](const PtzState& state) { return state.mode == PtzState::MODE_IDLE; }, 10.0));
+}

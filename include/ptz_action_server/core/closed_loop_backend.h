@@ -31,11 +31,11 @@ struct ClosedLoopConfig
  * \brief Runs goTo() as velocity commands on a device whose axes lack `absolute` but have `velocity` and `feedback`.
  *
  * At start() and before each goal, if any present axis of the wrapped device cannot go to a position but can move at
- * a speed and reports where it is (a camera may say so only once it has refused an absolute move), every present axis that can move at a speed and reports itself is steered here: on each state
- * report (the backend's sample listener, on its I/O thread), each axis gets the speed that brings it to the target
- * without overshoot (bounded by the max speed, by braking at half the device's acceleration, and by the gain), and
- * the device is stopped once every axis is within stop_within. Those axes then report `absolute`. The goal itself is
- * judged by the node, as on any device.
+ * a speed and reports where it is (a camera may say so only once it has refused an absolute move), every present axis
+ * that can move at a speed and reports itself is steered here: on each state report (the backend's sample listener, on
+ * its I/O thread), each axis gets the speed that brings it to the target without overshoot (bounded by the max speed,
+ * by braking at half the device's acceleration, and by the gain), and the device is stopped once every axis is within
+ * stop_within. Those axes then report `absolute`. The goal itself is judged by the node, as on any device.
  *
  * Devices whose axes all go to positions, and devices that cannot report state as it comes, pass through unchanged.
  * moveAtVelocity() and stop() end the steering. A lost link ends it too: the recovery never resumes an old goal.

@@ -318,9 +318,9 @@ bool AxisProtocol::findZoomTable(const vapix::Limits& limits)
         text = formatText("GUESS: %gX optical at VAPIX zoom 9999, linear, the usual zoom of %s", family.max_optical,
                           family.models);
         session_.warn(camera + " gives no zoom table (" + why + "): its zoom X-factor is a guess, " +
-                 formatText("%gX optical as is usual for %s, linear from VAPIX zoom 1 to 9999; ", family.max_optical,
-                            family.models) +
-                 "set axis/zoom_max_factor to its optical zoom (data sheet) or axis/zoom_table");
+                      formatText("%gX optical as is usual for %s, linear from VAPIX zoom 1 to 9999; ",
+                                 family.max_optical, family.models) +
+                      "set axis/zoom_max_factor to its optical zoom (data sheet) or axis/zoom_table");
       }
       else
       {
@@ -330,8 +330,8 @@ bool AxisProtocol::findZoomTable(const vapix::Limits& limits)
                                                       "its model family has no default";
         text = std::string("UNKNOWN: no zoom table, ") + reason + "; zoom goals are refused";
         session_.warn(camera + " gives no zoom table (" + why + ") and " + reason +
-                 ": zoom goals are not supported (velocity goals are); set axis/zoom_table or "
-                 "axis/zoom_max_factor (its optical zoom)");
+                      ": zoom goals are not supported (velocity goals are); set axis/zoom_table or "
+                      "axis/zoom_max_factor (its optical zoom)");
       }
     }
   }
@@ -395,7 +395,7 @@ void AxisProtocol::onConnected()
   if (zoom_source_ != AxisZoomSource::NO_ZOOM && !zoom_table_.empty() && !position.has_zoom)
   {
     session_.warn("this Axis camera reports no zoom position (query=position has no zoom=): zoom goals are not "
-             "supported");
+                  "supported");
   }
   session_.setCapabilities(capabilities);
   session_.ready();

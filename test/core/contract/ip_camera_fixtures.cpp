@@ -304,12 +304,12 @@ private:
 }  // namespace
 
 /// The contract cases the continuous-only and the no-position cameras cannot run, and why.
-const Unsupported CONTINUOUS_ONLY_CANNOT = {
-  { "*" },
-  { "AVelocityGoalMovesAtTheRateUntilStopped" },
-  "a continuous-only camera cannot go to a position: position goals run closed-loop above this DeviceBackend (the "
-  "node's ClosedLoopBackend); OnvifFieldCameras.ContinuousOnly* and ClosedLoopOnvif.* cover it"
-};
+const Unsupported CONTINUOUS_ONLY_CANNOT = { { "*" },
+                                             { "AVelocityGoalMovesAtTheRateUntilStopped" },
+                                             "a continuous-only camera cannot go to a position: position goals run "
+                                             "closed-loop above this DeviceBackend (the "
+                                             "node's ClosedLoopBackend); OnvifFieldCameras.ContinuousOnly* and "
+                                             "ClosedLoopOnvif.* cover it" };
 const Unsupported NO_POSITION_CANNOT = {
   { "AGoalArrivesAsTheProtocolsCommandsAndIsReached", "ANewGoalRetargetsTheMovingDeviceWithoutAStop",
     "AVelocityGoalMovesAtTheRateUntilStopped", "RecoveryHoldsTheDeviceOnceAndAGoalSentRightAfterSucceeds",

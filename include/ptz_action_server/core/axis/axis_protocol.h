@@ -149,7 +149,7 @@ private:
   AxisZoomSource zoom_source_ = AxisZoomSource::NO_ZOOM;
   bool zoom_feedback_ = false;  ///< the position reply carries zoom= and zoom_table_ maps it
   bool zoom_velocity_ = false;  ///< the camera has a zoom it moves with continuouszoommove
-  HttpRequest request_;  ///< reused: the 10 Hz poll allocates nothing once warm
+  HttpRequest request_;         ///< reused: the 10 Hz poll allocates nothing once warm
   vapix::Reply reply_;
   std::string arguments_;
   std::string arguments_path_;

@@ -113,8 +113,9 @@ struct MavlinkGimbalCounters
  * Control: DO_GIMBAL_MANAGER_CONFIGURE to the manager with param7 = the gimbal's id takes primary control of that
  * gimbal only, confirmed by its GIMBAL_MANAGER_STATUS; a refusal fails the start with the manager's result and who
  * holds control. Before taking it the gimbal's status is looked at (as the protocol asks), and when another controller
- * held primary control the session is warned once (DeviceSession::warn()), naming it. shutdown() releases the gimbal (-3, param7 = its
- * id). When control comes free again (the manager restarted, the other controller released it), it is taken back.
+ * held primary control the session is warned once (DeviceSession::warn()), naming it. shutdown() releases the gimbal
+ * (-3, param7 = its id). When control comes free again (the manager restarted, the other controller released it), it is
+ * taken back.
  *
  * Goals: positions as GIMBAL_MANAGER_SET_PITCHYAW to the manager for the gimbal (pitch = tilt, yaw = pan, rates NaN),
  * repeated every resend_period against loss; velocities as rates with NaN angles, repeated every rate_period; stop as
