@@ -51,35 +51,40 @@ void ClosedLoopBackend::start()
   refreshSteeringLocked();
 }
 
-void ClosedLoopBackend::refreshSteeringLocked()
+Capabilities ClosedLoopBackend::steeredView(Capabilities device, std::array<bool, AXIS_COUNT>& steered) const
 {
-  // Asked again before each goal: a camera may turn out to lack the absolute move it listed (it refused one).
-  capabilities_ = inner().capabilities();
-  steered_.fill(false);
+  steered.fill(false);
   const auto steerable = [](const AxisCapability& axis) { return axis.present && axis.velocity && axis.feedback; };
-  const bool needed = std::any_of(capabilities_.axes.begin(), capabilities_.axes.end(),
+  const bool needed = std::any_of(device.axes.begin(), device.axes.end(),
                                   [&](const AxisCapability& axis) { return steerable(axis) && !axis.absolute; });
   if (!needed || !reports_samples_)
   {
-    return;  // every axis goes to positions itself, or the state cannot be followed as it comes
+    return device;  // every axis goes to positions itself, or the state cannot be followed as it comes
   }
   for (Axis axis : ALL_AXES)
   {
-    AxisCapability& capability = capabilities_.axes[axis];
-    steered_[axis] = steerable(capability);
-    if (steered_[axis] && !capability.absolute)
+    AxisCapability& capability = device.axes[axis];
+    steered[axis] = steerable(capability);
+    if (steered[axis] && !capability.absolute)
     {
       capability.absolute = true;
       capability.limitation.clear();  // what it lacked is made up for here
       capability.remedy.clear();
     }
   }
+  return device;
+}
+
+void ClosedLoopBackend::refreshSteeringLocked()
+{
+  // Asked again before each goal: a camera may turn out to lack the absolute move it listed (it refused one).
+  capabilities_ = steeredView(inner().capabilities(), steered_);
 }
 
 Capabilities ClosedLoopBackend::capabilities() const
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return steers() ? capabilities_ : inner().capabilities();
+  std::array<bool, AXIS_COUNT> steered{};
+  return steeredView(inner().capabilities(), steered);
 }
 
 bool ClosedLoopBackend::steers() const

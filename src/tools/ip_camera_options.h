@@ -20,7 +20,10 @@ constexpr const char* HTTP_OPTIONS_HELP = R"(HTTP options:
   --password TEXT        its password (default pass)
   --auth MODE            digest (default), basic or none
   --nonce-uses N         a digest nonce goes stale after N requests (default 0: never)
-Faults:
+)";
+
+/// The fault options and signals every emulated IP camera takes (after its own options in its usage).
+constexpr const char* HTTP_FAULTS_HELP = R"(Faults:
   --delay S              answer every request S seconds late
   --http-error CODE      answer every request with this status (e.g. 500)
   --silent               start silent: read requests, never answer
@@ -44,7 +47,7 @@ inline std::string httpCameraUsage(const char* own, unsigned default_port)
 {
   char help[2048];
   std::snprintf(help, sizeof(help), HTTP_OPTIONS_HELP, default_port);
-  return std::string(own) + help;
+  return std::string(own) + help + HTTP_FAULTS_HELP;
 }
 
 /// Takes \p arg if it is an HTTP or fault option.

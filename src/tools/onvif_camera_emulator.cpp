@@ -60,13 +60,6 @@ Camera options:
   --generic-only         the same as --mode generic-only
   --clock-offset S       the camera's clock runs S seconds ahead (tokens must be stamped in its time)
   --refuse               refuse every move with ter:InvalidArgVal "PTZ is locked by another user"
-Faults:
-  --delay S              answer every request S seconds late
-  --http-error CODE      answer every request with this status (e.g. 500)
-  --silent               start silent: read requests, never answer
-  --silent-after S       fall silent S seconds after start
-Signals: SIGUSR1 toggles silence, SIGUSR2 drops every connection; SIGINT / SIGTERM end the program.
-  --pid-file PATH        write the program's pid there (for whoever sends the signals)
 )";
 }  // namespace
 
@@ -80,7 +73,7 @@ int main(int argc, char** argv)
   std::string modes;
   char usage_text[8192];
   std::snprintf(usage_text, sizeof(usage_text), USAGE_FORMAT, DEFAULT_PORT);
-  const std::string usage = usage_text;
+  const std::string usage = std::string(usage_text) + emulator_main::HTTP_FAULTS_HELP;
   emulator_main::parseArguments(
       argc, argv, PROGRAM, usage, [&](const std::string& arg, const emulator_main::Value& value) {
         if (arg == "--auth")

@@ -15,6 +15,7 @@
 
 #include "ptz_action_server/core/goal_supervisor.h"
 #include "ptz_action_server/core/sim_device_model.h"
+#include "wait_until.h"
 
 namespace goal_supervisor_test
 {
@@ -155,6 +156,27 @@ inline GoalConverter positionGoal(double pan, double tilt, double zoom)
     command.values = { pan, tilt, zoom };
     return std::string();
   };
+}
+
+/**
+ * \brief Runs \p goal as the node's supervisor does on a real \p backend (validation, the axes it judges, its
+ * monitor), judging each fresh sample until the goal ends or \p wait s pass; returns how it ended ("SUCCEEDED: ...",
+ * "" if it had not by then). The supervisor takes the backend's capabilities as its limits.
+ */
+inline std::string runGoalToItsEnd(std::shared_ptr<PtzBackend> backend, const GoalConverter& goal,
+                                   const GoalMonitorConfig& config, double wait)
+{
+  GoalSupervisor supervisor(backend, backend->capabilities(), config, false);
+  auto log = std::make_shared<GoalLog>();
+  supervisor.submit(std::make_unique<RecordingGoal>("position_abs", "goal", log), goal);
+  waitUntil(
+      [&] {
+        supervisor.supervise(supervisor.sample());
+        return !log->end.empty();
+      },
+      wait);
+  supervisor.shutdown("the test is over");
+  return log->end;
 }
 
 inline GoalConverter velocityGoal(double pan, double tilt, double zoom)

@@ -106,17 +106,7 @@ std::string runGoal(const std::shared_ptr<PtzBackend>& backend, const GoalConver
 {
   GoalMonitorConfig config;
   config.stall_timeout = 2.0;
-  GoalSupervisor supervisor(backend, backend->capabilities(), config, false);
-  auto log = std::make_shared<goal_supervisor_test::GoalLog>();
-  supervisor.submit(std::make_unique<goal_supervisor_test::RecordingGoal>("position_abs", "goal", log), goal);
-  waitUntil(
-      [&] {
-        supervisor.supervise(supervisor.sample());
-        return !log->end.empty();
-      },
-      WAIT);
-  supervisor.shutdown("the test is over");
-  return log->end;
+  return goal_supervisor_test::runGoalToItsEnd(backend, goal, config, WAIT);
 }
 
 std::string diagnostic(const PtzBackend& backend, const std::string& name)

@@ -223,22 +223,14 @@ protected:
     backend_ = withClosedLoop(device_, GoalMonitorConfig().tolerance);
     backend_->setSampleListener([] {});
     backend_->start();
-    supervisor_ = std::make_unique<GoalSupervisor>(backend_, backend_->capabilities(), GoalMonitorConfig(), false);
   }
 
   /// Runs a position goal as the node would, to its end; returns "SUCCEEDED: ..." or the like.
   std::string run(const AxisValues& target)
   {
-    auto log = std::make_shared<goal_supervisor_test::GoalLog>();
-    supervisor_->submit(std::make_unique<goal_supervisor_test::RecordingGoal>("position_abs", "goal", log),
-                        goal_supervisor_test::positionGoal(target[PAN], target[TILT], target[ZOOM]));
-    waitUntil(
-        [&] {
-          supervisor_->supervise(supervisor_->sample());
-          return !log->end.empty();
-        },
-        WAIT, std::chrono::milliseconds(20));
-    return log->end;
+    return goal_supervisor_test::runGoalToItsEnd(
+        backend_, goal_supervisor_test::positionGoal(target[PAN], target[TILT], target[ZOOM]), GoalMonitorConfig(),
+        WAIT);
   }
 
   std::size_t absoluteMoves() const
@@ -254,7 +246,6 @@ protected:
   std::unique_ptr<OnvifCameraEmulator> camera_;
   std::shared_ptr<PtzBackend> device_;
   std::shared_ptr<PtzBackend> backend_;
-  std::unique_ptr<GoalSupervisor> supervisor_;
 };
 }  // namespace
 
@@ -264,10 +255,13 @@ TEST_F(ClosedLoopOnvif, AContinuousOnlyCameraReachesPositionGoalsOnItsStatusAndN
   ASSERT_FALSE(device_->capabilities().axes[PAN].absolute);
   EXPECT_TRUE(backend_->capabilities().axes[PAN].absolute);  // made up for by the steering
   // Zoom 0: this camera has no zoom position space, and the goal leaves it alone.
-  EXPECT_EQ(run({ { 0.6, -0.2, 0.0 } }).rfind("SUCCEEDED: reached pan 0.6", 0), 0u);
+  const std::string first = run({ { 0.6, -0.2, 0.0 } });
+  EXPECT_EQ(first.rfind("SUCCEEDED: reached pan 0.", 0), 0u) << first;
   EXPECT_NEAR(camera_->sample().position[PAN], 0.6, GoalMonitorConfig().tolerance[PAN]);
   EXPECT_NEAR(camera_->sample().position[TILT], -0.2, GoalMonitorConfig().tolerance[TILT]);
-  EXPECT_EQ(run({ { -0.3, 0.1, 0.0 } }).rfind("SUCCEEDED: reached pan -0.3", 0), 0u);
+  const std::string second = run({ { -0.3, 0.1, 0.0 } });
+  EXPECT_EQ(second.rfind("SUCCEEDED: reached pan -0.", 0), 0u) << second;
+  EXPECT_NEAR(camera_->sample().position[PAN], -0.3, GoalMonitorConfig().tolerance[PAN]);
   EXPECT_EQ(absoluteMoves(), 0u);
 }
 
@@ -278,6 +272,7 @@ TEST_F(ClosedLoopOnvif, ACameraThatRefusesTheAbsoluteMoveItListedIsSteeredFromIt
   EXPECT_EQ(first.rfind("ABORTED: device fault: the ONVIF camera refused AbsoluteMove", 0), 0u) << first;
   // Its answer told the truth about it: the next goal is steered on its status, and reached.
   const std::string second = run({ { 0.5, 0.0, 1.0 } });
-  EXPECT_EQ(second.rfind("SUCCEEDED: reached pan 0.5", 0), 0u) << second;
+  EXPECT_EQ(second.rfind("SUCCEEDED: reached pan 0.", 0), 0u) << second;
+  EXPECT_NEAR(camera_->sample().position[PAN], 0.5, GoalMonitorConfig().tolerance[PAN]);
   EXPECT_EQ(absoluteMoves(), 1u);
 }

@@ -66,6 +66,8 @@ private:
   void steerLocked();
   /// Reads the wrapped device's capabilities and decides which axes are steered here (mutex_ held).
   void refreshSteeringLocked();
+  /// \p device as seen through this decorator (the axes steered here go to positions), and which are steered.
+  Capabilities steeredView(Capabilities device, std::array<bool, AXIS_COUNT>& steered) const;
   /// The speed that brings \p axis from \p position to the target.
   double speedFor(Axis axis, double position) const;
 

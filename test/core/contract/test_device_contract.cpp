@@ -256,24 +256,14 @@ TEST_P(DeviceContract, ALinkThatBreaksAndReopensAtOnceEndsTheGoalAndTheRecoveryN
   EXPECT_EQ(device_->holds(device_->commands(), target), 1u) << describe(device_->commands());
 }
 
-/// A goal the node's supervisor runs on the backend (validation, the axes it judges, its monitor), recorded.
+/// A position goal the node's supervisor runs on the backend, to its end.
 std::string runGoalToItsEnd(PtzBackend& backend, const AxisValues& target, double stall_timeout)
 {
   GoalMonitorConfig config;
   config.stall_timeout = stall_timeout;
-  GoalSupervisor supervisor(std::shared_ptr<PtzBackend>(&backend, [](PtzBackend*) {}), backend.capabilities(), config,
-                            false);
-  auto log = std::make_shared<goal_supervisor_test::GoalLog>();
-  supervisor.submit(std::make_unique<goal_supervisor_test::RecordingGoal>("position_abs", "ignored axis", log),
-                    goal_supervisor_test::positionGoal(target[PAN], target[TILT], target[ZOOM]));
-  waitUntil(
-      [&] {
-        supervisor.supervise(supervisor.sample());
-        return !log->end.empty();
-      },
-      WAIT);
-  supervisor.shutdown("the test is over");
-  return log->end;
+  return goal_supervisor_test::runGoalToItsEnd(
+      std::shared_ptr<PtzBackend>(&backend, [](PtzBackend*) {}),
+      goal_supervisor_test::positionGoal(target[PAN], target[TILT], target[ZOOM]), config, WAIT);
 }
 
 TEST_P(DeviceContract, ADeviceThatIgnoresAnAxisNeverGetsASucceededForIt)
