@@ -280,15 +280,7 @@ std::string absoluteMove(const std::string& profile, const Vector& position)
 
 std::string absoluteMove(const std::string& profile, double x, double y, const char* space, bool with_zoom, double zoom)
 {
-  Vector position;
-  position.pan_tilt = true;
-  position.x = x;
-  position.y = y;
-  position.pan_tilt_space = space;
-  position.zoom = with_zoom;
-  position.z = zoom;
-  position.zoom_space = GENERIC_ZOOM_SPACE;
-  return absoluteMove(profile, position);
+  return absoluteMove(profile, Vector::of(true, x, y, space, with_zoom, zoom, GENERIC_ZOOM_SPACE));
 }
 
 std::string relativeMove(const std::string& profile, const Vector& translation)
@@ -300,14 +292,8 @@ std::string relativeMove(const std::string& profile, const Vector& translation)
 std::string continuousMove(const std::string& profile, double x, double y, bool with_zoom, double zoom,
                            int timeout_seconds, bool with_pan_tilt)
 {
-  Vector velocity;
-  velocity.pan_tilt = with_pan_tilt;
-  velocity.x = x;
-  velocity.y = y;
-  velocity.pan_tilt_space = GENERIC_PAN_TILT_VELOCITY;
-  velocity.zoom = with_zoom;
-  velocity.z = zoom;
-  velocity.zoom_space = GENERIC_ZOOM_VELOCITY;
+  const Vector velocity =
+      Vector::of(with_pan_tilt, x, y, GENERIC_PAN_TILT_VELOCITY, with_zoom, zoom, GENERIC_ZOOM_VELOCITY);
   return "<tptz:ContinuousMove><tptz:ProfileToken>" + escaped(profile) + "</tptz:ProfileToken><tptz:Velocity>" +
          vectorElements(velocity) +
          formatText("</tptz:Velocity><tptz:Timeout>PT%dS</tptz:Timeout></tptz:ContinuousMove>", timeout_seconds);

@@ -62,6 +62,14 @@ struct Vector
   bool zoom = false;
   double z = 0.0;
   std::string zoom_space;
+
+  /// Pan-tilt \p x, \p y in \p space (left out unless \p with_pan_tilt), zoom \p z in \p z_space (unless
+  /// \p with_zoom).
+  static Vector of(bool with_pan_tilt, double x, double y, const char* space, bool with_zoom, double z,
+                   const char* z_space)
+  {
+    return Vector{ with_pan_tilt, x, y, space, with_zoom, z, z_space };
+  }
 };
 
 /// Request bodies (device service).
