@@ -28,7 +28,7 @@ TEST_F(NodeTest, FrameGoalsPointAtTfFrames)
   // tf listener has them (it rejects the goal until then).
   PtzFrameGoal frame_goal;
   frame_goal.frame_id = "test_target";
-  frame_goal.zoom = 2.0;
+  frame_goal.zoom = zoomOr1(2.0);
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(10.0);
   do
   {
