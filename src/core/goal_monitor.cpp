@@ -78,6 +78,7 @@ GoalMonitor::GoalMonitor(Kind kind, const AxisValues& goal, const PtzSample& sta
   , last_moved_position_(start.position)
 {
   last_moved_at_.fill(now);
+  last_moved_stamp_.fill(start.stamp);
   if (kind == Kind::POSITION)
   {
     expected_duration_ = expectedDuration(goal, start, capabilities);
@@ -244,9 +245,13 @@ std::size_t GoalMonitor::findStalledAxis(const PtzSample& sample, TimePoint now,
     {
       last_moved_position_[axis] = sample.position[axis];
       last_moved_at_[axis] = std::max(last_moved_at_[axis], now);  // a late sample is judged at its own, earlier time
+      last_moved_stamp_[axis] = std::max(last_moved_stamp_[axis], sample.stamp);
     }
-    else if (stalled == AXIS_COUNT && secondsBetween(last_moved_at_[axis], now) > config_.stall_timeout)
+    else if (stalled == AXIS_COUNT && secondsBetween(last_moved_at_[axis], now) > config_.stall_timeout &&
+             secondsBetween(last_moved_stamp_[axis], sample.stamp) > config_.stall_timeout)
     {
+      // The device's own reports must span the stall timeout: an axis that stood still in the last reports before a
+      // silence has not been seen to stall (the silence is the link supervision's to report, at its own deadline).
       stalled = axis;
     }
   }

@@ -53,9 +53,21 @@ public:
   {
     commands.push_back("stop");
   }
+  /// The state, stamped as the device's newest report: now while it reports, the moment it fell silent after.
   PtzSample sample() const override
   {
-    return state;
+    PtzSample sample = state;
+    if (clock)
+    {
+      sample.stamp = reporting ? clock->now() : silent_since;
+    }
+    return sample;
+  }
+  /// The device stops reporting (its link stays up until the backend's deadline says otherwise: set state.link_up).
+  void fallSilent()
+  {
+    reporting = false;
+    silent_since = clock->now();
   }
   std::string lastFault() const override
   {
@@ -73,7 +85,10 @@ public:
     state.moving = moving;
   }
 
-  PtzSample state;  ///< what sample() returns
+  PtzSample state;  ///< what sample() returns (stamped by clock, when set)
+  std::shared_ptr<const Clock> clock;
+  bool reporting = true;
+  TimePoint silent_since{};
   std::string last_fault;
   std::string last_link_loss;
   std::vector<std::string> commands;
@@ -196,6 +211,7 @@ protected:
     , clock_(std::make_shared<ManualClock>())
     , supervisor_(backend_, backend_->capabilities(), GoalMonitorConfig(), clamp_goals, clock_)
   {
+    backend_->clock = clock_;
   }
 
   /// Submits a goal of \p action with id \p id; returns its log.

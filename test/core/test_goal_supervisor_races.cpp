@@ -97,3 +97,39 @@ TEST_F(GoalSupervisorTest, AStallSeenAsTheLinkGoesDownEndsTheGoalAsALostLink)
   EXPECT_EQ(goal->end, "ABORTED: link lost: no state from a MAVLink gimbal for 1.00 s");
   EXPECT_EQ(backend_->commands.back(), "stop");
 }
+
+// Issue 23: the device's last reports before a silence show no progress (it was braking, or its reports lag), and the
+// stall timeout equals the state timeout. The stall rule counts from the last progress, the link from the last report,
+// so the stall came first, while the link was still judged up, and a silent device ended its goal "stalled". The
+// device's reports must span the stall timeout for a stall: this one ends as a lost link, at the link's deadline.
+TEST_F(GoalSupervisorTest, ADeviceThatFallsSilentAfterReportsWithoutProgressEndsAsALostLinkNotAStall)
+{
+  const auto goal = submit(positionGoal(1.0, 0.0, 1.0));
+  backend_->at({ 0.4, 0.0, 1.0 }, true);
+  tick();  // the last progress
+  clock_->advance(0.05);
+  supervisor_.supervise(supervisor_.sample());  // one more report, unchanged
+  backend_->fallSilent();
+  for (int ticks = 0; ticks < 10; ++ticks)  // 1.0 s more: past the stall timeout since the last progress
+  {
+    tick();
+  }
+  EXPECT_TRUE(goal->end.empty()) << goal->end;
+  backend_->state.link_up = false;  // the backend's deadline: 1 s after the last report
+  backend_->last_link_loss = "no state from a MAVLink gimbal for 1.00 s";
+  tick();
+  EXPECT_EQ(goal->end, "ABORTED: link lost: no state from a MAVLink gimbal for 1.00 s");
+}
+
+// The stall rule still holds for a device that keeps reporting the same position.
+TEST_F(GoalSupervisorTest, ADeviceThatKeepsReportingAnAxisThatDoesNotMoveStalls)
+{
+  const auto goal = submit(positionGoal(1.0, 0.0, 1.0));
+  backend_->at({ 0.4, 0.0, 1.0 }, true);
+  tick();
+  for (int ticks = 0; ticks < 12 && goal->end.empty(); ++ticks)
+  {
+    tick();
+  }
+  EXPECT_EQ(goal->end, "ABORTED: stalled: pan made no progress for 1.00 s (remaining 0.6000 rad)");
+}

@@ -105,8 +105,9 @@ private:
   double timeout_ = 0.0;
   std::uint64_t start_fault_count_ = 0;
   std::uint64_t start_link_losses_ = 0;
-  AxisValues last_moved_position_{};  ///< position where each axis was last seen moving
-  std::array<TimePoint, AXIS_COUNT> last_moved_at_{};
+  AxisValues last_moved_position_{};                      ///< position where each axis was last seen moving
+  std::array<TimePoint, AXIS_COUNT> last_moved_at_{};     ///< on the monitor's clock
+  std::array<TimePoint, AXIS_COUNT> last_moved_stamp_{};  ///< the device's report (PtzSample::stamp) of that moment
 };
 
 }  // namespace ptz_action_server
