@@ -14,8 +14,7 @@ TEST_F(NodeTest, PositionGoalSucceedsWithFeedback)
   FeedbackLog<ptz_action_server::PtzFeedback> feedback;
   observer_->clear();
   absolute_->sendGoal(makePtzGoal(0.6, -0.3, zoomOr1(5.0)), PtzClient::SimpleDoneCallback(),
-                      PtzClient::SimpleActiveCallback(),
-                      [&](const PtzFeedbackConstPtr& item) { feedback.add(*item); });
+                      PtzClient::SimpleActiveCallback(), [&](const PtzFeedbackConstPtr& item) { feedback.add(*item); });
   ASSERT_TRUE(absolute_->waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(absolute_->getState(), State::SUCCEEDED) << absolute_->getState().getText();
   ASSERT_TRUE(absolute_->getResult());

@@ -160,7 +160,7 @@ private:
   std::shared_ptr<PtzBackend> backend_;
   Capabilities limits_;
 
-  ros::Publisher capabilities_publisher_;  ///< latched: what the device can do, once started
+  ros::Publisher capabilities_publisher_;            ///< latched: what the device can do, once started
   std::unique_ptr<GoalSupervisor> supervisor_;       ///< the goal state machine, on the main thread; built by start()
   std::unique_ptr<StatePublisher> state_publisher_;  ///< the 10 Hz tick, on its own thread; built by start()
   SystemClock clock_;
