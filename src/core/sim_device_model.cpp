@@ -131,7 +131,7 @@ PtzSample SimDeviceModel::sample(TimePoint now)
   for (Axis axis : ALL_AXES)
   {
     const AxisMotionState state = exactState(axis, now);
-    sample.position[axis] = clampAndQuantise(axis, state.position);
+    sample.position[axis] = clampAndQuantise(axis, state.position) + faults_.report_offset[axis];
     sample.velocity[axis] = state.velocity;
     const AxisMotion& motion = axes_[axis];
     sample.moving = sample.moving || secondsBetween(motion.planned_at, now) < motion.profile.duration();

@@ -6,6 +6,9 @@
  */
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <cstdlib>
+
 #include "wait_until.h"
 
 #include <sstream>
@@ -71,9 +74,9 @@ public:
     text >> word;
     if (word == "STATE")
     {
-      double pan = 0.0;
+      std::string pan;  // strtod: "nan" and "inf" too
       text >> pan;
-      session_.reportState(AxisValues{ { pan, 0.0, 1.0 } });
+      session_.reportState(AxisValues{ { std::strtod(pan.c_str(), nullptr), 0.0, 1.0 } });
     }
     else if (word == "READY")
     {
@@ -282,6 +285,61 @@ TEST_F(DeviceSessionTest, SilencePastTheDeadlineIsALossWithItsReasonAndTheRecove
   EXPECT_EQ(received, (std::vector<std::string>{ "HOLD", "GOTO" }));
   EXPECT_EQ(backend->session().counters().recoveries, 1u);
   EXPECT_EQ(backend->sample().link_losses, 1u);  // counted once, however often it was looked at
+}
+
+TEST_F(DeviceSessionTest, ImpossibleStatesAreDroppedAndOnlyThemForTheDeadlineIsALossNamingThem)
+{
+  auto backend = makeBackend();
+  startUp(*backend);
+  for (const char* impossible : { "nan", "inf", "3.5", "-40" })
+  {
+    const std::uint64_t dropped = backend->session().counters().impossible_states.value();
+    device_.send(std::string("STATE ") + impossible);
+    ASSERT_TRUE(waitUntil([&] { return backend->session().counters().impossible_states.value() > dropped; }, WAIT))
+        << impossible;
+    EXPECT_DOUBLE_EQ(backend->sample().position[PAN], 0.1) << impossible << " was taken as the device's pan";
+  }
+  // Nothing but NaN for the state timeout: a loss, named for what came.
+  ASSERT_TRUE(waitUntil(
+      [&] {
+        device_.send("STATE nan");
+        return !backend->sample().link_up;
+      },
+      WAIT));
+  EXPECT_EQ(backend->lastLinkLoss(), "only impossible states from the text device for 0.20 s (pan is NaN)");
+  EXPECT_DOUBLE_EQ(backend->sample().position[PAN], 0.1);
+  // A possible state brings the link back.
+  device_.send("STATE 0.12");
+  ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
+  EXPECT_DOUBLE_EQ(backend->sample().position[PAN], 0.12);
+}
+
+TEST_F(DeviceSessionTest, ADeviceThatReportsOnlyImpossibleStatesFailsToStartNamingThem)
+{
+  auto backend = makeBackend(0.5);
+  std::atomic<bool> done{ false };
+  std::thread device([&] {
+    device_.receiveUntil("HELLO");
+    device_.send("READY");
+    while (!done)
+    {
+      device_.send("STATE 7.0");
+      device_.receive(0.02);
+    }
+  });
+  try
+  {
+    backend->start();
+    FAIL() << "start() believed a pan of 7 rad on a device that turns 3";
+  }
+  catch (const BackendError& error)
+  {
+    EXPECT_EQ(std::string(error.what()),
+              "only impossible states from the text device on udp 127.0.0.1:" + std::to_string(device_.port()) +
+                  " within 0.5 s: pan 7.00 rad is outside the device's limits [-3.00, 3.00]");
+  }
+  done = true;
+  device.join();
 }
 
 TEST_F(DeviceSessionTest, AHostThatDoesNotResolveIsAnOpenFailureNamedAtStart)

@@ -42,6 +42,8 @@ struct SimFaults
 {
   std::array<bool, AXIS_COUNT> stalled{};  ///< a stalled axis freezes where it is and ignores commands
   double lag = 0.0;                        ///< seconds between a command and the moment the device acts on it
+  /// Added to the position the device reports, not to where it is: a jump, or a place outside its limits.
+  AxisValues report_offset{};
 };
 
 /**

@@ -62,6 +62,7 @@ void DeviceSession::start()
     return;
   }
   const std::string problem = startup_problem_;
+  const std::string impossible = impossible_state_;
   lock.unlock();
   const std::string device = protocol_->deviceName() + " on " + link_->config().describe();
   const std::string link_error = link_->lastError();
@@ -69,6 +70,11 @@ void DeviceSession::start()
   if (!problem.empty())
   {
     throw BackendError(device + ": " + problem);
+  }
+  if (!impossible.empty())
+  {
+    throw BackendError(formatText("only impossible states from %s within %.1f s: %s", device.c_str(),
+                                  config_.startup_timeout, impossible.c_str()));
   }
   throw BackendError(formatText("no answer from %s within %.1f s%s%s", device.c_str(), config_.startup_timeout,
                                 link_error.empty() ? "" : ": ", link_error.c_str()));
@@ -186,7 +192,8 @@ void DeviceSession::diagnostics(std::vector<DiagnosticValue>& values) const
   addCounts(values, { { "state reports", counters_.state_reports },
                       { "link losses", counters_.link_losses },
                       { "recoveries (device held after a loss)", counters_.recoveries },
-                      { "faults of replaced commands (ignored)", counters_.stale_faults } });
+                      { "faults of replaced commands (ignored)", counters_.stale_faults },
+                      { "impossible states dropped", counters_.impossible_states } });
   values.emplace_back("last link loss", lastLinkLoss());
 }
 
@@ -198,12 +205,21 @@ void DeviceSession::setCapabilities(const Capabilities& capabilities)
 
 void DeviceSession::reportState(const AxisValues& position)
 {
-  ++counters_.state_reports;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     const TimePoint now = clock_->now();
     checkLinkLocked(now);  // a report after a silence ends that silence as a loss first
+    std::string impossible = plausibility_.judge(position, now, capabilities_);
+    if (!impossible.empty())
+    {
+      ++counters_.impossible_states;
+      impossible_state_ = std::move(impossible);
+      return;
+    }
+    ++counters_.state_reports;
+    impossible_state_.clear();
     last_state_at_ = now;
+    last_position_at_ = now;
     has_state_ = true;
     last_position_ = position;
     motion_.add(now, position);
@@ -263,6 +279,8 @@ void DeviceSession::onLinkUp()
     ready_ = false;
     has_state_ = false;
     motion_.clear();  // old positions say nothing about the device behind a new connection
+    plausibility_.forget();
+    impossible_state_.clear();
   }
   protocol_->onConnected();
 }
@@ -312,12 +330,30 @@ void DeviceSession::tick()
 
 bool DeviceSession::linkUpLocked(TimePoint now) const
 {
-  return connected_ && ready_ && has_state_ && secondsBetween(last_state_at_, now) <= config_.state_timeout;
+  return connected_ && ready_ && has_state_ && secondsBetween(last_state_at_, now) <= config_.state_timeout &&
+         !onlyImpossibleLocked(now);
+}
+
+bool DeviceSession::onlyImpossibleLocked(TimePoint now) const
+{
+  return !impossible_state_.empty() && secondsBetween(last_position_at_, now) > config_.state_timeout;
 }
 
 void DeviceSession::checkLinkLocked(TimePoint now) const
 {
-  if (link_was_up_ && !linkUpLocked(now))
+  if (!link_was_up_ || linkUpLocked(now))
+  {
+    return;
+  }
+  if (onlyImpossibleLocked(now))
+  {
+    recordLossLocked(formatText("only impossible states from %s for %.2f s (%s)", protocol_->deviceName().c_str(),
+                                config_.state_timeout, impossible_state_.c_str()));
+    // A device that goes on reporting the same new place is believed from its next report on (it may have been
+    // moved by hand, or re-homed): the loss has ended the goal that relied on the old one.
+    plausibility_.forget();
+  }
+  else
   {
     recordLossLocked(formatText("no state from %s for %.2f s", protocol_->deviceName().c_str(), config_.state_timeout));
   }

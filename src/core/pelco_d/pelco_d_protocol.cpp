@@ -223,9 +223,11 @@ void PelcoProtocol::handle(const pelco::FrameParser::Event& event)
   {
     case QUERY_PAN:
       polled_[PAN] = toRadians(pelco::decodePan(value));
+      answered_in_round_ = 1;
       return;
     case QUERY_TILT:
       polled_[TILT] = toRadians(pelco::decodeTilt(value, settings_.tilt_encoding));
+      answered_in_round_ = answered_in_round_ == 1 ? 2 : 0;
       if (settings_.axes[ZOOM].present)
       {
         return;  // the zoom answer completes the state
@@ -233,11 +235,17 @@ void PelcoProtocol::handle(const pelco::FrameParser::Event& event)
       break;
     case QUERY_ZOOM:
       polled_[ZOOM] = settings_.positionToZoom(value);
+      answered_in_round_ = answered_in_round_ == 2 ? 3 : 0;
       break;
     default:
       return;
   }
-  session_.reportState(polled_);
+  const int whole_round = settings_.axes[ZOOM].present ? 3 : 2;
+  if (answered_in_round_ == whole_round)
+  {
+    session_.reportState(polled_);
+  }
+  answered_in_round_ = 0;
 }
 
 std::unique_ptr<DeviceBackend> makePelcoBackend(const PelcoConfig& config, std::shared_ptr<const Clock> clock)

@@ -29,13 +29,6 @@ std::string uniqueLink(const char* name)
   return ::testing::TempDir() + "ptz_" + name + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
 }
 
-SimFaults ignoring(Axis axis, bool ignore)
-{
-  SimFaults faults;
-  faults.stalled[axis] = ignore;
-  return faults;
-}
-
 std::vector<DeviceCommand> withoutQueries(const std::vector<DeviceCommand>& commands)
 {
   std::vector<DeviceCommand> kept;
@@ -52,6 +45,13 @@ std::string describe(const std::vector<DeviceCommand>& commands)
     text += (text.empty() ? "" : " | ") + command.text;
   }
   return text.empty() ? "(none)" : text;
+}
+
+bool DeviceFixture::ignoreAxis(Axis axis, bool ignore)
+{
+  SimFaults faults;
+  faults.stalled[axis] = ignore;
+  return setFaults(faults);
 }
 
 std::size_t DeviceFixture::holds(const std::vector<DeviceCommand>& commands, const AxisValues&) const

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ptz_action_server/core/device/device_backend.h"
+#include "ptz_action_server/core/sim_device_model.h"
 
 namespace ptz_action_server
 {
@@ -70,14 +71,16 @@ public:
   /// A word of lastLinkLoss() when breakLink() ended the goal.
   virtual std::string linkLossWords() const = 0;
 
-  /// Makes the emulated device accept every command and silently ignore \p axis from now on (it stays where it is),
-  /// or obey it again; false when this emulator cannot (the contract case then fails: every emulator must).
-  virtual bool ignoreAxis(Axis axis, bool ignore)
+  /// Gives the emulated device \p faults (a stalled axis, a lag, a reported offset); false when this emulator cannot
+  /// (the contract cases that need faults then fail: every emulator must).
+  virtual bool setFaults(const SimFaults& faults)
   {
-    (void)axis;
-    (void)ignore;
+    (void)faults;
     return false;
   }
+  /// Makes the emulated device accept every command and silently ignore \p axis from now on (it stays where it is),
+  /// or obey it again (setFaults()).
+  bool ignoreAxis(Axis axis, bool ignore);
 
   /// Makes the device refuse a goal: fills \p goal with one it refuses and returns the words its refusal carries,
   /// or "" for protocols without refusals (Pelco-D, PanTilt).

@@ -20,9 +20,6 @@ std::string hex(const std::vector<std::uint8_t>& bytes);
 /// A path for an emulator's pseudo-terminal link, unique in this process.
 std::string uniqueLink(const char* name);
 
-/// The emulators' fault set that makes \p axis ignore every command (or none, when \p ignore is false).
-SimFaults ignoring(Axis axis, bool ignore);
-
 /// \p commands without the state polls.
 std::vector<DeviceCommand> withoutQueries(const std::vector<DeviceCommand>& commands);
 

@@ -113,9 +113,9 @@ public:
   {
     return emulator_->sample();
   }
-  bool ignoreAxis(Axis axis, bool ignore) override
+  bool setFaults(const SimFaults& faults) override
   {
-    emulator_->setFaults(ignoring(axis, ignore));
+    emulator_->setFaults(faults);
     return true;
   }
   std::string prepareRefusal(AxisValues& goal) override
@@ -272,9 +272,9 @@ public:
   {
     return emulator_->sample();
   }
-  bool ignoreAxis(Axis axis, bool ignore) override
+  bool setFaults(const SimFaults& faults) override
   {
-    emulator_->setFaults(ignoring(axis, ignore));
+    emulator_->setFaults(faults);
     return true;
   }
   std::string prepareRefusal(AxisValues& goal) override

@@ -54,9 +54,9 @@ protected:
   {
     emulator_->port().setSilent(silent);
   }
-  bool ignoreAxis(Axis axis, bool ignore) override
+  bool setFaults(const SimFaults& faults) override
   {
-    emulator_->setFaults(ignoring(axis, ignore));
+    emulator_->setFaults(faults);
     return true;
   }
   void breakLink() override

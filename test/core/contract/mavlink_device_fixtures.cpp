@@ -107,9 +107,9 @@ public:
   {
     emulator_->setSilent(silent);
   }
-  bool ignoreAxis(Axis axis, bool ignore) override
+  bool setFaults(const SimFaults& faults) override
   {
-    emulator_->setFaults(ignoring(axis, ignore));
+    emulator_->setFaults(faults);
     return true;
   }
   void breakLink() override

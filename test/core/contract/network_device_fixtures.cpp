@@ -101,9 +101,9 @@ public:
   {
     emulator_->setSilent(silent);
   }
-  bool ignoreAxis(Axis axis, bool ignore) override
+  bool setFaults(const SimFaults& faults) override
   {
-    emulator_->panTilt().setFaults(ignoring(axis, ignore));
+    emulator_->panTilt().setFaults(faults);
     return true;
   }
   void breakLink() override
@@ -242,9 +242,9 @@ public:
   {
     emulator_->setSilent(silent);
   }
-  bool ignoreAxis(Axis axis, bool ignore) override
+  bool setFaults(const SimFaults& faults) override
   {
-    emulator_->setFaults(ignoring(axis, ignore));
+    emulator_->setFaults(faults);
     return true;
   }
   void breakLink() override

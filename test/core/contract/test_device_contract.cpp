@@ -208,7 +208,10 @@ TEST_P(DeviceContract, RecoveryHoldsTheDeviceOnceAndAGoalSentRightAfterSucceeds)
   // At once, as a client would: the recovery must not override it.
   const AxisValues target = device_->goal(-0.5, 0.1);
   backend_->goTo(target);
-  ASSERT_TRUE(waitForRest(target)) << "sent " << describe(device_->commands());
+  ASSERT_TRUE(waitForRest(target)) << "at " << backend_->sample().position[PAN] << " after "
+                                   << backend_->session().counters().impossible_states.value()
+                                   << " impossible states; last loss: " << backend_->lastLinkLoss() << "; sent "
+                                   << describe(device_->commands()).substr(0, 400);
   EXPECT_EQ(backend_->session().counters().recoveries, recoveries + 1);
   EXPECT_EQ(device_->holds(device_->commands(), target), 1u) << describe(device_->commands());
 }
@@ -254,6 +257,66 @@ TEST_P(DeviceContract, ALinkThatBreaksAndReopensAtOnceEndsTheGoalAndTheRecoveryN
   backend_->goTo(target);
   ASSERT_TRUE(waitForRest(target)) << "sent " << describe(device_->commands());
   EXPECT_EQ(device_->holds(device_->commands(), target), 1u) << describe(device_->commands());
+}
+
+TEST_P(DeviceContract, AnImpossiblePositionIsNeverBelievedAndAGoalOnItEndsAsLinkLostNamingIt)
+{
+  if (!backend_->capabilities().axes[PAN].feedback)
+  {
+    GTEST_SKIP() << "the device reports no pan: nothing to judge";
+  }
+  const AxisValues far = startLongGoal();
+  GoalMonitorConfig config;
+  config.stall_timeout = stateTimeout();  // a stall must not win either: the frozen position is no progress
+  GoalMonitor monitor = monitorFor(far, config);
+  const PtzSample before = backend_->sample();
+  const double pan_before = before.position[PAN];
+  // The device goes on moving towards the goal, but reports itself 2.5 rad back: further than it can go in the
+  // time between two reports.
+  SimFaults jumping;
+  jumping.report_offset[PAN] = -2.5;
+  ASSERT_TRUE(device_->setFaults(jumping)) << "the emulator cannot report an offset";
+  const TimePoint faulted = SteadyClock::now();
+  double lowest_pan = pan_before;
+  GoalVerdict verdict;
+  waitUntil(
+      [&] {
+        const PtzSample sample = backend_->sample();
+        if (sample.link_losses == before.link_losses)  // after the loss, the new place is believed
+        {
+          lowest_pan = std::min(lowest_pan, sample.position[PAN]);
+        }
+        if (sample.link_up)
+        {
+          last_up_at_ = sample.stamp;
+        }
+        verdict = monitor.update(sample, SteadyClock::now());
+        return verdict.phase != GoalPhase::ACTIVE;
+      },
+      WAIT);
+  EXPECT_EQ(verdict.phase, GoalPhase::ABORTED) << verdict.reason;
+  EXPECT_TRUE(verdict.link_lost) << verdict.reason;
+  const AxisCapability pan = backend_->session().capabilities().axes[PAN];
+  EXPECT_GE(lowest_pan, pan_before - 0.05) << "the jumped position was taken as the device's (pan " << pan.range.min
+                                           << ".." << pan.range.max << " at " << pan.max_speed << " rad/s)";
+  EXPECT_LE(secondsBetween(faulted, last_up_at_), stateTimeout() + DEADLINE_SLACK);
+  EXPECT_NE(backend_->lastLinkLoss().find("only impossible states"), std::string::npos) << backend_->lastLinkLoss();
+  EXPECT_NE(backend_->lastLinkLoss().find("pan jumped"), std::string::npos) << backend_->lastLinkLoss();
+  EXPECT_GT(backend_->session().counters().impossible_states.value(), 0u);
+
+  // Reporting truthfully again, the device is believed where it is (after one more state timeout: from the place it
+  // was believed at, the true one is a jump too), and the next goal works.
+  ASSERT_TRUE(device_->setFaults(SimFaults()));
+  ASSERT_TRUE(waitUntil(
+      [&] {
+        const PtzSample sample = backend_->sample();
+        return sample.link_up && std::abs(sample.position[PAN] - device_->deviceState().position[PAN]) < 0.05;
+      },
+      WAIT))
+      << "never believed again: " << backend_->lastLinkLoss();
+  const AxisValues target = device_->goal(-0.4, 0.1);
+  backend_->goTo(target);
+  EXPECT_TRUE(waitForRest(target));
 }
 
 /// A position goal the node's supervisor runs on the backend, to its end.

@@ -84,9 +84,9 @@ public:
   {
     emulator_->port().setSilent(silent);
   }
-  bool ignoreAxis(Axis axis, bool ignore) override
+  bool setFaults(const SimFaults& faults) override
   {
-    emulator_->setFaults(ignoring(axis, ignore));
+    emulator_->setFaults(faults);
     return true;
   }
   void breakLink() override

@@ -18,6 +18,7 @@
 
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/counter.h"
+#include "ptz_action_server/core/device/state_plausibility.h"
 #include "ptz_action_server/core/motion_estimator.h"
 #include "ptz_action_server/core/transport/http_link.h"
 #include "ptz_action_server/core/transport/link.h"
@@ -39,10 +40,11 @@ struct DeviceSessionConfig
 /// What a session counts beyond its link.
 struct DeviceSessionCounters
 {
-  Counter state_reports;  ///< valid states the protocol reported
-  Counter link_losses;    ///< the link went down after being up (closed, vanished or silent past the deadline)
-  Counter recoveries;     ///< the device answered again after a loss and was held where it was
-  Counter stale_faults;   ///< refusals of a command the node had already replaced: counted, not reported
+  Counter state_reports;      ///< valid states the protocol reported
+  Counter link_losses;        ///< the link went down after being up (closed, vanished or silent past the deadline)
+  Counter recoveries;         ///< the device answered again after a loss and was held where it was
+  Counter stale_faults;       ///< refusals of a command the node had already replaced: counted, not reported
+  Counter impossible_states;  ///< reports dropped as impossible (NaN, outside the limits, a jump): never believed
 };
 
 /**
@@ -149,7 +151,9 @@ public:
     link_->disconnect(reason);
   }
 
-  /// A valid state from the device: keeps the link alive and feeds the motion estimate (pan, tilt rad; zoom X).
+  /// A state from the device (pan, tilt rad; zoom X). A possible one keeps the link alive and feeds the motion
+  /// estimate; an impossible one (StatePlausibility) is dropped and counted, and if nothing but impossible states
+  /// comes for state_timeout the link counts as lost, with the reason.
   void reportState(const AxisValues& position);
   /// A valid answer that carries no state: keeps the link alive.
   void reportAlive();
@@ -181,6 +185,8 @@ private:
   void tick();
   /// Counts a loss if the link was up and is not any more (call with mutex_ held).
   void checkLinkLocked(TimePoint now) const;
+  /// Nothing but impossible states came for state_timeout (call with mutex_ held).
+  bool onlyImpossibleLocked(TimePoint now) const;
   bool linkUpLocked(TimePoint now) const;
   /// Brings the link up if it now is, and runs the recovery once after a loss (I/O thread, mutex_ not held).
   void refreshLink();
@@ -205,9 +211,12 @@ private:
   std::condition_variable startup_changed_;
   Capabilities capabilities_;
   bool connected_ = false;
-  bool ready_ = false;         ///< the protocol's set-up is done on this connection
-  TimePoint last_state_at_{};  ///< the last valid report on this connection
-  bool has_state_ = false;     ///< a valid report arrived on this connection
+  bool ready_ = false;                      ///< the protocol's set-up is done on this connection
+  TimePoint last_state_at_{};               ///< the last valid report on this connection
+  TimePoint last_position_at_{};            ///< the last possible state on this connection
+  mutable StatePlausibility plausibility_;  ///< mutable: a loss noticed in sample() makes it forget its reference
+  std::string impossible_state_;  ///< why the reports since the last possible state were dropped ("" if none was)
+  bool has_state_ = false;        ///< a valid report arrived on this connection
   mutable bool link_was_up_ = false;
   bool ever_up_ = false;
   mutable bool recovery_owed_ = false;  ///< a loss happened: hold the device when it answers again

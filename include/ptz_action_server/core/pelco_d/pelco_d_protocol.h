@@ -113,6 +113,9 @@ private:
 
   // I/O thread only.
   AxisValues polled_{ { 0.0, 0.0, 1.0 } };
+  /// How many axes of this poll's round (pan, then tilt, then zoom) have been answered in order: a state is
+  /// reported only when the round is whole, never with an axis left from before a lost reply (a silence).
+  int answered_in_round_ = 0;
   std::vector<pelco::FrameParser::Event> events_;  ///< reused for every read
 };
 
