@@ -26,12 +26,59 @@ namespace ptz_action_server
 TeleopConfig loadTeleopConfig(const ParamReader& params);
 
 /**
- * \brief Drives one camera from a joystick: subscribes to joy (sensor_msgs/Joy) and sends goals to move_ptz/velocity
- * and move_ptz/preset in \p node_handle's namespace (the camera's: /ptz).
+ * \brief Sends what a TeleopController decides to one camera: goals to move_ptz/velocity and move_ptz/preset in
+ * \p node_handle's namespace (the camera's: /ptz); a stop cancels the goal it sent last. A preset without a name is
+ * the saved preset of its rank in move_ptz/list_presets (home excluded), asked for when it is wanted.
+ *
+ * Used from one thread (the action clients' callbacks may run on another: they only update their own state).
+ */
+class TeleopGoals
+{
+public:
+  explicit TeleopGoals(const ros::NodeHandle& node_handle);
+
+  TeleopGoals(const TeleopGoals&) = delete;
+  TeleopGoals& operator=(const TeleopGoals&) = delete;
+
+  void execute(const std::vector<TeleopCommand>& commands);
+
+  /// Waits up to \p timeout s for both action servers; false if one is missing.
+  bool waitForServers(double timeout);
+  /// Waits up to \p timeout s until the goal sent last has ended (after a stop: the node took the cancel).
+  bool waitUntilDone(double timeout);
+
+  /// What it did last, for a status line: "velocity pan -0.50 tilt 0.00 zoom 0.00", "preset home", "stop".
+  const std::string& lastCommand() const
+  {
+    return last_command_;
+  }
+
+private:
+  /// The name of the preset_index-th saved preset, or "" (logged) if there is none.
+  std::string savedPreset(int preset_index) const;
+
+  enum class Sent
+  {
+    NONE,
+    VELOCITY,
+    PRESET,
+  };
+
+  ros::NodeHandle node_handle_;
+  Sent sent_ = Sent::NONE;
+  std::string last_command_;
+  actionlib::SimpleActionClient<PtzAction> velocity_client_;
+  actionlib::SimpleActionClient<PtzPresetAction> preset_client_;
+};
+
+/// The speeds a TeleopController may command, from the node's latched capabilities (0: the axis takes no velocity).
+AxisValues teleopSpeedLimits(const PtzCapabilities& capabilities);
+
+/**
+ * \brief Drives one camera from a joystick: subscribes to joy (sensor_msgs/Joy) in \p node_handle's namespace and
+ * sends the TeleopController's commands through TeleopGoals.
  *
  * Velocities are clamped to the speeds the node's latched capabilities give; Joy messages wait until those are known.
- * A stop cancels the goal the teleop sent last. A preset button without a configured name takes the saved preset of
- * its rank in move_ptz/list_presets (home excluded), asked for when the button is pressed.
  *
  * One thread: \p node_handle's queue runs every callback and the stale-joystick timer.
  */
@@ -46,24 +93,12 @@ public:
 private:
   void onJoy(const sensor_msgs::Joy::ConstPtr& joy);
   void onCapabilities(const PtzCapabilities::ConstPtr& capabilities);
-  void execute(const std::vector<TeleopCommand>& commands);
-  /// The name of the preset_index-th saved preset, or "" (logged) if there is none.
-  std::string savedPreset(int preset_index) const;
-
-  enum class Sent
-  {
-    NONE,
-    VELOCITY,
-    PRESET,
-  };
 
   ros::NodeHandle node_handle_;
   TeleopController controller_;
+  TeleopGoals goals_;
   SystemClock clock_;
   bool ready_ = false;  ///< the capabilities are known
-  Sent sent_ = Sent::NONE;
-  actionlib::SimpleActionClient<PtzAction> velocity_client_;
-  actionlib::SimpleActionClient<PtzPresetAction> preset_client_;
   ros::Subscriber joy_subscriber_;
   ros::Subscriber capabilities_subscriber_;
   ros::SteadyTimer stale_timer_;
