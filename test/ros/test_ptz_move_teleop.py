@@ -116,11 +116,12 @@ class PtzMoveTeleopTest(unittest.TestCase):
     def test_keys_drive_the_camera_and_q_restores_the_terminal(self):
         terminal = self.start()
         pan = self.state.pan
+        goals_before = len(self.velocity_goals)
         terminal.hold(LEFT, 1.0)
-        self.assertTrue(self.velocity_goals, 'no velocity goal from the left arrow')
+        self.assertTrue(wait_until(lambda: self.state.pan < pan - 0.1, 5.0), 'the left arrow did not pan left')
+        self.assertGreater(len(self.velocity_goals), goals_before, 'no velocity goal from the left arrow')
         self.assertLess(self.velocity_goals[-1].pan, 0.0)
-        self.assertLess(len(self.velocity_goals), 4, 'a held key repeated the goal')
-        self.assertLess(self.state.pan, pan - 0.1)
+        self.assertLess(len(self.velocity_goals) - goals_before, 4, 'a held key repeated the goal')
         self.assertIn('velocity pan -0.50', terminal.last_line())
         # Released: the key is no longer repeated, the camera stops and the line shows it.
         self.assertTrue(wait_until(lambda: self.state.mode == PtzState.MODE_IDLE, 5.0))
