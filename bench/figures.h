@@ -23,6 +23,11 @@ int runSimFigures(const BenchOptions& options, SharedCounters* counters, BenchPr
 /// between the optical axis of each joint state and the frame's true direction at its stamp, after the first second.
 Row trackFigure(ros::NodeHandle& node_handle);
 
+/// Sim row: a Joy message with the dead-man held and a stick deflected -> the backend's first command, through a
+/// PtzTeleop with the default mapping in this process (the Joy hop is in-process, the velocity goal goes over TCP),
+/// 200 times.
+Row teleopFigure(SharedCounters* counters);
+
 /**
  * \brief Device rows: goal -> first goal command at the emulator and cancel -> stop command at the emulator (their
  * own wire time subtracted), and the ptz_state rate while a goal runs. Prints a table; returns 0, or 1 if the node

@@ -271,6 +271,7 @@ int runSimFigures(const BenchOptions& options, SharedCounters* counters, BenchPr
   zeroGoalFigures(client, counters, options.zero_goals, rows);
   rows.push_back(cancelFigure(client, counters, options.cancels));
   rows.push_back(trackFigure(node_handle));
+  rows.push_back(teleopFigure(counters));
   stormFigures(node_handle, counters, node, options.storm_seconds, rows);
   rows.push_back({ "node peak RSS", formatText("%.1f MB", peakRssKilobytes(node) / 1024.0), "" });
   printTable("sim (sim backend)", rows);

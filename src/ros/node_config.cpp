@@ -22,6 +22,8 @@ const char* actionName(ActionKind kind)
       return "track_frame";
     case ActionKind::PRESET:
       return "preset";
+    case ActionKind::CLICKED_POINT:
+      return "look_at_clicked_point";
   }
   return "?";
 }
@@ -57,6 +59,7 @@ NodeConfig NodeConfig::load(const ParamReader& params)
   config.mount = loadMountConfig(params);
   config.field_of_view = FieldOfViewSettings::load(params);
   config.presets = PresetConfig::load(params);
+  config.look_at_clicked_point = LookAtClickedPointConfig::load(params);
   return config;
 }
 

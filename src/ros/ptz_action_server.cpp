@@ -159,6 +159,8 @@ void PtzActionServer::start()
   frame_server_->start();
   track_frame_server_->start();
   preset_server_->start();
+  look_at_clicked_point_ = std::make_unique<LookAtClickedPoint>(
+      node_handle_, config_.look_at_clicked_point, [this](const geometry_msgs::PointStamped& point) { lookAt(point); });
   ROS_INFO("ptz_action_server ready with backend '%s': pan %s; tilt %s; zoom %s; device extras: %s",
            backend_->name().c_str(), describeAxis(limits_, PAN).c_str(), describeAxis(limits_, TILT).c_str(),
            describeAxis(limits_, ZOOM).c_str(), describeExtras(limits_).c_str());
@@ -218,17 +220,14 @@ void PtzActionServer::onGoal(actionlib::ServerGoalHandle<Action> handle, ActionK
       // The listener has just started: hold the goal until tf has its frame or frame_wait is over, without holding
       // up anything else.
       const auto result = [] { return typename Action::_action_result_type::_result_type(); };
-      waiting_frame_goal_ =
+      waitForFrame(
           WaitingFrameGoal{ handle.getGoalID().id, frame_id, [this, handle, kind] { submit(handle, kind); },
                             [this, handle, result](const std::string& text) {
                               postStatus([handle, result, text]() mutable { handle.setRejected(result(), text); });
                             },
                             [this, handle, result](const std::string& text) {
                               postStatus([handle, result, text]() mutable { handle.setCanceled(result(), text); });
-                            } };
-      frame_wait_timer_ =
-          node_handle_.createSteadyTimer(ros::WallDuration(FRAME_WAIT_CHECK_PERIOD),
-                                         [this](const ros::SteadyTimerEvent&) { checkWaitingFrameGoal(); });
+                            } });
       return;
     }
   }
@@ -272,6 +271,38 @@ void PtzActionServer::supersedeWaitingFrameGoal(ActionKind kind)
     goal.reject(std::string("superseded by a new ") + actionName(kind) + " goal while waiting for tf to have '" +
                 goal.frame_id + "'");
   }
+}
+
+void PtzActionServer::lookAt(const geometry_msgs::PointStamped& point)
+{
+  // No status hold: a clicked point has no actionlib client that could miss its status.
+  supersedeWaitingFrameGoal(ActionKind::CLICKED_POINT);
+  const std::string id = std::string(ClickedPointGoal::ACTION) + "_" + std::to_string(++clicked_points_);
+  const auto submit_point = [this, point, id] {
+    supervisor_->submit(
+        std::make_unique<ClickedPointGoal>(id, describePoint(point)),
+        [&](const PtzSample& current, GoalCommand& command) { return toCommand(point, current, command); });
+  };
+  frame_listener_->listen();
+  if (!point.header.frame_id.empty() && !frame_listener_->ready(kinematics_.baseFrame(), point.header.frame_id))
+  {
+    const std::string where = describePoint(point);
+    waitForFrame(WaitingFrameGoal{ id, point.header.frame_id, submit_point,
+                                   [where](const std::string& text) {
+                                     ROS_WARN("look_at_clicked_point: not aiming at %s: %s", where.c_str(),
+                                              text.c_str());
+                                   },
+                                   [](const std::string&) {} });
+    return;
+  }
+  submit_point();
+}
+
+void PtzActionServer::waitForFrame(WaitingFrameGoal goal)
+{
+  waiting_frame_goal_ = std::move(goal);
+  frame_wait_timer_ = node_handle_.createSteadyTimer(ros::WallDuration(FRAME_WAIT_CHECK_PERIOD),
+                                                     [this](const ros::SteadyTimerEvent&) { checkWaitingFrameGoal(); });
 }
 
 PtzActionServer::WaitingFrameGoal PtzActionServer::takeWaitingFrameGoal()
@@ -381,6 +412,30 @@ std::string PtzActionServer::toCommand(const PtzPresetGoal& goal, ActionKind, co
     return "no preset named '" + goal.name + "'";
   }
   command.values = *pose;
+  return {};
+}
+
+std::string PtzActionServer::toCommand(const geometry_msgs::PointStamped& point, const PtzSample& sample,
+                                       GoalCommand& command) const
+{
+  const Eigen::Vector3d in_frame(point.point.x, point.point.y, point.point.z);
+  if (!in_frame.allFinite())
+  {
+    return "the point is not finite";
+  }
+  Eigen::Isometry3d frame_in_base = identity();
+  const std::string reason = lookupFrame(point.header.frame_id, frame_in_base);
+  if (!reason.empty())
+  {
+    return reason;
+  }
+  // The zoom stays where it is (0: left alone on a device that cannot position or report it).
+  const AxisCapability& zoom = limits_.axes[ZOOM];
+  command.values[ZOOM] = zoom.present && zoom.absolute && zoom.feedback ? sample.position[ZOOM] : 0.0;
+  if (!kinematics_.aimAt(frame_in_base * in_frame, command.values[PAN], command.values[TILT]))
+  {
+    return "cannot point at it: it is too close to the camera";
+  }
   return {};
 }
 

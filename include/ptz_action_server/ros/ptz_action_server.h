@@ -25,6 +25,7 @@
 #include "ptz_action_server/core/status_hold.h"
 #include "ptz_action_server/ros/frame_listener.h"
 #include "ptz_action_server/ros/frame_tracking.h"
+#include "ptz_action_server/ros/look_at_clicked_point.h"
 #include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/preset_services.h"
 #include "ptz_action_server/ros/view_config.h"
@@ -48,13 +49,14 @@ struct NodeConfig
   MountConfig mount;                 ///< how the device is mounted; PtzNode wraps the backend with it
   /// The field_of_view topic and the zoomed camera_info.
   FieldOfViewSettings field_of_view;
-  PresetConfig presets;  ///< the presets file and home
+  PresetConfig presets;                            ///< the presets file and home
+  LookAtClickedPointConfig look_at_clicked_point;  ///< "look here" from rviz
 
   /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
   /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,
   /// ~status_list_timeout, ~frame_listen_time, ~frame_wait, ~track/rate, ~track/gain, ~track/feed_forward,
   /// ~track_timeout, ~status_hold, ~mount, ~pan_offset, ~field_of_view/*, ~camera_info_topic, ~camera_info_zoom,
-  /// and the presets' (see PresetConfig::load).
+  /// ~look_at_clicked_point, ~clicked_point_topic and the presets' (see PresetConfig::load).
   static NodeConfig load(const ParamReader& params);
 };
 
@@ -68,6 +70,7 @@ enum class ActionKind
   FRAME,
   TRACK_FRAME,
   PRESET,
+  CLICKED_POINT,  ///< not an action: a point on the clicked point topic (LookAtClickedPoint)
 };
 
 const char* actionName(ActionKind kind);
@@ -135,6 +138,9 @@ private:
   void submit(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   /// Rejects the frame goal waiting for tf, if any, because a \p kind goal came after it.
   void supersedeWaitingFrameGoal(ActionKind kind);
+  /// Aims the optical axis at a clicked point, as a frame goal aims it at a frame's origin: it waits for tf the same
+  /// way, then preempts the active goal (or is rejected, moving nothing, with the reason in the log).
+  void lookAt(const geometry_msgs::PointStamped& point);
 
   /// Runs \p change (a goal's status change) through the status hold, arming its release timer if it is held.
   void postStatus(StatusHold::Change change);
@@ -151,6 +157,7 @@ private:
   std::string toCommand(const PtzFrameGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
   std::string toCommand(const PtzPresetGoal& goal, ActionKind kind, const PtzSample& sample,
                         GoalCommand& command) const;
+  std::string toCommand(const geometry_msgs::PointStamped& point, const PtzSample& sample, GoalCommand& command) const;
   /// The transform from \p frame_id to the base frame, looked up once without waiting; "" or the reason.
   std::string lookupFrame(const std::string& frame_id, Eigen::Isometry3d& frame_in_base) const;
 
@@ -187,6 +194,8 @@ private:
     std::function<void(const std::string&)> cancel;
   };
 
+  /// Holds \p goal until its frame is known or the wait is over (checkWaitingFrameGoal()).
+  void waitForFrame(WaitingFrameGoal goal);
   /// Submits the waiting frame goal once its frame is known or the wait is over.
   void checkWaitingFrameGoal();
   /// The waiting frame goal, which waits no more (there must be one).
@@ -206,6 +215,8 @@ private:
   std::unique_ptr<FrameTracking> frame_tracking_;  ///< steers track_frame goals; built by start()
   std::unique_ptr<PresetServices> presets_;        ///< the preset services and lookups; built by start()
   std::unique_ptr<PtzPresetServer> preset_server_;
+  std::unique_ptr<LookAtClickedPoint> look_at_clicked_point_;  ///< the switch; built by start()
+  std::uint64_t clicked_points_ = 0;                           ///< clicked points so far, for their ids
 };
 
 }  // namespace ptz_action_server
