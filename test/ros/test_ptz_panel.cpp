@@ -1,0 +1,299 @@
+// The rviz panel against the running sim node, under Xvfb: the panel is loaded through rviz's plugin loader as rviz
+// loads it, its jog and preset buttons are clicked with QTest, and the test checks the goals the node received and the
+// state the panel shows. main() starts its own Xvfb when there is no DISPLAY; only when none can start do the tests
+// skip.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QComboBox>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QtTest/QTest>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <actionlib_msgs/GoalID.h>
+#include <pluginlib/class_loader.hpp>
+#include <ros/ros.h>
+#include <rviz/panel.h>
+
+#include "ptz_action_server/PtzActionGoal.h"
+#include "ptz_action_server/PtzPresetActionGoal.h"
+#include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/panel/panel_model.h"
+#include "ptz_action_server/panel/ptz_panel.h"
+
+namespace
+{
+std::string g_no_display;  ///< why no X display could be had ("" when there is one)
+pid_t g_xvfb = 0;
+constexpr double WAIT = 20.0;  // s
+
+/// Starts Xvfb on a free display when DISPLAY is unset; returns "" or why it could not.
+std::string ensureDisplay()
+{
+  if (const char* display = std::getenv("DISPLAY"); display != nullptr && *display != '\0')
+  {
+    return "";
+  }
+  for (int number = 90; number < 200; ++number)
+  {
+    const std::string lock = "/tmp/.X" + std::to_string(number) + "-lock";
+    const std::string socket = "/tmp/.X11-unix/X" + std::to_string(number);
+    struct stat info;
+    if (stat(lock.c_str(), &info) == 0 || stat(socket.c_str(), &info) == 0)
+    {
+      continue;
+    }
+    const std::string display = ":" + std::to_string(number);
+    const pid_t pid = fork();
+    if (pid == 0)
+    {
+      execlp("Xvfb", "Xvfb", display.c_str(), "-screen", "0", "1280x1024x24", "-nolisten", "tcp",
+             static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    if (pid < 0)
+    {
+      return "fork failed";
+    }
+    for (int i = 0; i < 100; ++i)  // up to 10 s for its socket
+    {
+      int status = 0;
+      if (waitpid(pid, &status, WNOHANG) == pid)
+      {
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
+        {
+          return "Xvfb is not installed (apt-get install xvfb)";
+        }
+        break;  // lost a race for this display: try the next
+      }
+      if (stat(socket.c_str(), &info) == 0)
+      {
+        g_xvfb = pid;
+        setenv("DISPLAY", display.c_str(), 1);
+        return "";
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    if (g_xvfb == 0)
+    {
+      kill(pid, SIGTERM);
+      waitpid(pid, nullptr, 0);
+    }
+  }
+  return "Xvfb could not start on any display :90 to :199";
+}
+
+/// What the node received and published, heard on the test's own spinner.
+class Observer
+{
+public:
+  Observer()
+  {
+    ros::NodeHandle node("/ptz");
+    subscribers_.push_back(node.subscribe("ptz_state", 10, &Observer::onState, this));
+    subscribers_.push_back(node.subscribe("move_ptz/velocity/goal", 10, &Observer::onVelocity, this));
+    subscribers_.push_back(node.subscribe("move_ptz/velocity/cancel", 10, &Observer::onCancel, this));
+    subscribers_.push_back(node.subscribe("move_ptz/preset/goal", 10, &Observer::onPreset, this));
+  }
+  std::mutex mutex;
+  ptz_action_server::PtzState state;
+  bool has_state = false;
+  std::vector<ptz_action_server::PtzGoal> velocity_goals;
+  int cancels = 0;
+  std::vector<std::string> preset_goals;
+
+private:
+  void onState(const ptz_action_server::PtzState& message)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    state = message;
+    has_state = true;
+  }
+  void onVelocity(const ptz_action_server::PtzActionGoal& message)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    velocity_goals.push_back(message.goal);
+  }
+  void onCancel(const actionlib_msgs::GoalID&)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    ++cancels;
+  }
+  void onPreset(const ptz_action_server::PtzPresetActionGoal& message)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    preset_goals.push_back(message.goal.name);
+  }
+  std::vector<ros::Subscriber> subscribers_;
+};
+
+class PanelTest : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    if (!g_no_display.empty())
+    {
+      GTEST_SKIP() << "no X display for the panel: " << g_no_display;
+    }
+    // As rviz loads it: by its class name, through the package's rviz plugin export.
+    loader_ = std::make_unique<pluginlib::ClassLoader<rviz::Panel>>("rviz", "rviz::Panel");
+    panel_.reset(loader_->createUnmanagedInstance("ptz_action_server/PtzPanel"));
+    ASSERT_NE(dynamic_cast<ptz_action_server::panel::PtzPanel*>(panel_.get()), nullptr);
+    panel_->resize(360, 800);
+    panel_->show();
+  }
+  void TearDown() override
+  {
+    panel_.reset();
+  }
+
+  ptz_action_server::panel::PtzPanel* panel() const
+  {
+    return static_cast<ptz_action_server::panel::PtzPanel*>(panel_.get());
+  }
+  template <typename T>
+  T* child(const char* name) const
+  {
+    T* widget = panel_->findChild<T*>(name);
+    EXPECT_NE(widget, nullptr) << name;
+    return widget;
+  }
+  /// Runs the Qt event loop until `done` holds or WAIT passes.
+  bool waitFor(const std::function<bool()>& done, double seconds = WAIT)
+  {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < deadline)
+    {
+      QApplication::processEvents();
+      panel()->refresh();
+      if (done())
+      {
+        return true;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return done();
+  }
+  std::string text(const char* label) const
+  {
+    QLabel* widget = child<QLabel>(label);
+    return widget == nullptr ? "" : widget->text().toStdString();
+  }
+  bool enabled(const char* name) const
+  {
+    QWidget* widget = child<QWidget>(name);
+    return widget != nullptr && widget->isEnabled();
+  }
+
+  Observer observer_;
+  std::unique_ptr<pluginlib::ClassLoader<rviz::Panel>> loader_;
+  std::unique_ptr<rviz::Panel> panel_;
+};
+
+TEST_F(PanelTest, OffersTheCameraAndShowsItsState)
+{
+  ASSERT_TRUE(waitFor([&] { return enabled("jog_right") && enabled("preset_go"); }))
+      << "banner: " << text("banner") << ", goal: " << text("state_goal");
+  EXPECT_EQ(text("state_link"), "up");
+  QComboBox* camera = child<QComboBox>("camera");
+  ASSERT_NE(camera, nullptr);
+  EXPECT_GE(camera->findText("/ptz"), 0);
+  // The pan the panel shows is one ptz_state published (the camera is still).
+  EXPECT_TRUE(waitFor([&] {
+    std::lock_guard<std::mutex> lock(observer_.mutex);
+    return observer_.has_state && text("state_pan") == ptz_action_server::panel::angleText(observer_.state.pan) &&
+           text("state_mode") == "idle";
+  })) << text("state_pan");
+  // The look_at_clicked_point switch stays greyed without its service.
+  EXPECT_FALSE(enabled("look_at_clicked_point"));
+}
+
+TEST_F(PanelTest, JogSendsAVelocityGoalWhileHeldAndStopsOnRelease)
+{
+  QPushButton* right = child<QPushButton>("jog_right");
+  ASSERT_NE(right, nullptr);
+  ASSERT_TRUE(waitFor([&] { return right->isEnabled(); }));
+  double start_pan = 0.0;
+  {
+    std::lock_guard<std::mutex> lock(observer_.mutex);
+    start_pan = observer_.state.pan;
+  }
+  QTest::mousePress(right, Qt::LeftButton);
+  EXPECT_TRUE(waitFor([&] {
+    std::lock_guard<std::mutex> lock(observer_.mutex);
+    return !observer_.velocity_goals.empty() && observer_.velocity_goals.back().pan > 0.0 &&
+           observer_.velocity_goals.back().tilt == 0.0 && observer_.state.mode == 2 &&
+           observer_.state.pan > start_pan + 0.01;
+  }));
+  EXPECT_TRUE(waitFor([&] { return text("state_mode") == "velocity" && text("state_goal") == "velocity: active"; }))
+      << text("state_mode") << " / " << text("state_goal");
+  QTest::mouseRelease(right, Qt::LeftButton);
+  EXPECT_TRUE(waitFor([&] {
+    std::lock_guard<std::mutex> lock(observer_.mutex);
+    return observer_.cancels >= 1 && observer_.state.mode == 0;
+  }));
+  EXPECT_TRUE(waitFor([&] { return text("state_mode") == "idle"; }));
+}
+
+TEST_F(PanelTest, PresetGoSendsThePresetGoal)
+{
+  QListWidget* presets = child<QListWidget>("presets");
+  ASSERT_NE(presets, nullptr);
+  ASSERT_TRUE(waitFor([&] { return presets->count() >= 1 && enabled("preset_go"); }));
+  presets->setCurrentRow(0);  // home comes first
+  QTest::mouseClick(child<QPushButton>("preset_go"), Qt::LeftButton);
+  EXPECT_TRUE(waitFor([&] {
+    std::lock_guard<std::mutex> lock(observer_.mutex);
+    return !observer_.preset_goals.empty() && observer_.preset_goals.back() == "home";
+  }));
+  EXPECT_TRUE(waitFor([&] { return text("state_goal").rfind("preset: ", 0) == 0; })) << text("state_goal");
+}
+
+TEST_F(PanelTest, GreysWithoutPtzStateAndRecovers)
+{
+  ASSERT_TRUE(waitFor([&] { return enabled("jog_right"); }));
+  panel()->setNamespace("/no_camera_here");  // as a node that went away: nothing publishes there
+  EXPECT_TRUE(waitFor([&] { return text("banner") == "no ptz_state for 2 s" && !enabled("jog_right"); }));
+  EXPECT_FALSE(enabled("preset_go"));
+  panel()->setNamespace("/ptz");
+  EXPECT_TRUE(waitFor([&] { return enabled("jog_right") && text("banner").empty(); }));
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_ptz_panel");
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  g_no_display = ensureDisplay();
+  int result = 0;
+  if (g_no_display.empty())
+  {
+    QApplication application(argc, argv);
+    result = RUN_ALL_TESTS();
+  }
+  else
+  {
+    result = RUN_ALL_TESTS();  // each test skips, saying why
+  }
+  if (g_xvfb != 0)
+  {
+    kill(g_xvfb, SIGTERM);
+    waitpid(g_xvfb, nullptr, 0);
+  }
+  return result;
+}
