@@ -88,6 +88,7 @@ void PanelClient::setNamespace(const std::string& ns)
     jogging_ = false;
     watch_.reset();
     statuses_.clear();
+    last_finished_.reset();
     const std::vector<std::string> namespaces = snapshot_.namespaces;
     snapshot_ = PanelSnapshot();
     snapshot_.namespaces = namespaces;
@@ -126,7 +127,6 @@ void PanelClient::setNamespace(const std::string& ns)
     absolute_client_ = std::make_unique<PtzClient>(node, "move_ptz/position_abs", false);
     preset_client_ = std::make_unique<PresetClient>(node, "move_ptz/preset", false);
   }
-  post([this, ns, generation] { listPresets(ns, generation); });
   discovery_wake_.notify_all();
 }
 
@@ -145,6 +145,10 @@ PanelSnapshot PanelClient::snapshot() const
   {
     goals.insert(goals.end(), entries.begin(), entries.end());
   }
+  if (last_finished_)
+  {
+    goals.push_back(*last_finished_);
+  }
   copy.goal = goalText(goals);
   return copy;
 }
@@ -156,7 +160,14 @@ void PanelClient::onState(std::uint64_t generation, const PtzState::ConstPtr& st
   {
     return;
   }
-  watch_.received(now());
+  const double t = now();
+  if (!watch_.fresh(t))
+  {
+    // The camera appeared or came back (a restarted node may have other presets): list them again.
+    const std::string ns = ns_;
+    post([this, ns, generation] { listPresets(ns, generation); });
+  }
+  watch_.received(t);
   snapshot_.has_state = true;
   snapshot_.mode = state->mode;
   snapshot_.pan = state->pan;
@@ -213,6 +224,13 @@ void PanelClient::onStatus(std::uint64_t generation, const std::string& action,
   for (const actionlib_msgs::GoalStatus& goal : status->status_list)
   {
     entries.push_back({ action, goal.status, goal.text, goal.goal_id.stamp.toSec() });
+    const bool finished =
+        goal.status != actionlib_msgs::GoalStatus::PENDING && goal.status != actionlib_msgs::GoalStatus::ACTIVE &&
+        goal.status != actionlib_msgs::GoalStatus::PREEMPTING && goal.status != actionlib_msgs::GoalStatus::RECALLING;
+    if (finished && (!last_finished_ || entries.back().stamp >= last_finished_->stamp))
+    {
+      last_finished_ = entries.back();
+    }
   }
 }
 

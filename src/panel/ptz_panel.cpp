@@ -103,6 +103,12 @@ void PtzPanel::build()
   goal_->setWordWrap(true);
   layout->addLayout(state);
 
+  look_ = new QCheckBox("Look at clicked point");
+  look_->setObjectName("look_at_clicked_point");
+  look_->setToolTip("rviz's Publish Point aims the camera (the node's look_at_clicked_point service)");
+  connect(look_, &QCheckBox::clicked, this, [this](bool on) { client_->setLookAt(on); });
+  layout->addWidget(look_);
+
   auto* jog_box = new QGroupBox("Jog (hold)");
   auto* jog = new QGridLayout(jog_box);
   up_ = jogButton("\u25b2", "jog_up", Jog::UP);
@@ -177,7 +183,7 @@ void PtzPanel::build()
   auto* presets = new QGridLayout(preset_box);
   presets_ = new QListWidget;
   presets_->setObjectName("presets");
-  presets_->setMaximumHeight(110);
+  presets_->setMaximumHeight(90);
   connect(presets_, &QListWidget::itemDoubleClicked, this,
           [this] { client_->goPreset(selectedPreset().toStdString()); });
   connect(presets_, &QListWidget::currentItemChanged, this, [this] {
@@ -223,12 +229,6 @@ void PtzPanel::build()
     }
   });
   layout->addWidget(preset_box);
-
-  look_ = new QCheckBox("Look at clicked point");
-  look_->setObjectName("look_at_clicked_point");
-  look_->setToolTip("rviz's Publish Point aims the camera (the node's look_at_clicked_point service)");
-  connect(look_, &QCheckBox::clicked, this, [this](bool on) { client_->setLookAt(on); });
-  layout->addWidget(look_);
 
   message_ = new QLabel;
   message_->setObjectName("message");

@@ -29,6 +29,7 @@
 #include "ptz_action_server/PtzActionGoal.h"
 #include "ptz_action_server/PtzPresetActionGoal.h"
 #include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/SetSimFaults.h"
 #include "ptz_action_server/panel/panel_model.h"
 #include "ptz_action_server/panel/ptz_panel.h"
 
@@ -206,7 +207,7 @@ TEST_F(PanelTest, OffersTheCameraAndShowsItsState)
 {
   ASSERT_TRUE(waitFor([&] { return enabled("jog_right") && enabled("preset_go"); }))
       << "banner: " << text("banner") << ", goal: " << text("state_goal");
-  EXPECT_EQ(text("state_link"), "up");
+  EXPECT_TRUE(waitFor([&] { return text("state_link") == "up"; })) << text("state_link");  // diagnostics: 1 Hz
   QComboBox* camera = child<QComboBox>("camera");
   ASSERT_NE(camera, nullptr);
   EXPECT_GE(camera->findText("/ptz"), 0);
@@ -269,6 +270,20 @@ TEST_F(PanelTest, GreysWithoutPtzStateAndRecovers)
   EXPECT_FALSE(enabled("preset_go"));
   panel()->setNamespace("/ptz");
   EXPECT_TRUE(waitFor([&] { return enabled("jog_right") && text("banner").empty(); }));
+}
+
+TEST_F(PanelTest, GreysMotionWhileTheLinkIsDown)
+{
+  ASSERT_TRUE(waitFor([&] { return enabled("jog_right") && text("state_link") == "up"; }));
+  ptz_action_server::SetSimFaults faults;
+  faults.request.dropout = true;
+  ASSERT_TRUE(ros::service::call("/ptz/ptz_action_server/sim/set_faults", faults));
+  EXPECT_TRUE(waitFor([&] { return text("state_link") == "down" && !enabled("jog_right"); }));
+  EXPECT_FALSE(enabled("preset_go"));
+  EXPECT_EQ(text("banner"), "");  // ptz_state goes on: only the motion is greyed
+  faults.request.dropout = false;
+  ASSERT_TRUE(ros::service::call("/ptz/ptz_action_server/sim/set_faults", faults));
+  EXPECT_TRUE(waitFor([&] { return text("state_link") == "up" && enabled("jog_right"); }));
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -85,7 +86,7 @@ public:
   PanelClient& operator=(const PanelClient&) = delete;
 
   /// Watches the camera in `ns` ("" for none): drops what it knew of the previous one, subscribes, creates the
-  /// action clients and asks for the presets.
+  /// action clients; the presets are listed whenever its ptz_state starts (or resumes) arriving.
   void setNamespace(const std::string& ns);
   PanelSnapshot snapshot() const;
 
@@ -139,6 +140,9 @@ private:
   StateWatch watch_;
   PanelSnapshot snapshot_;
   std::map<std::string, std::vector<GoalStatusEntry>> statuses_;  ///< per action
+  /// The newest goal seen to end: the node drops finished goals from its status lists after a second, the panel keeps
+  /// showing how the last one ended.
+  std::optional<GoalStatusEntry> last_finished_;
 
   std::atomic<bool> running_{ true };
   std::mutex jobs_mutex_;
