@@ -222,4 +222,53 @@ Enables enables(const EnableInputs& inputs)
   return result;
 }
 
+Quaternion orientationOfAim(const Aim& aim)
+{
+  // q = Rz(-pan) * Ry(-tilt)
+  const double cz = std::cos(-aim.pan / 2.0), sz = std::sin(-aim.pan / 2.0);
+  const double cy = std::cos(-aim.tilt / 2.0), sy = std::sin(-aim.tilt / 2.0);
+  Quaternion q;
+  q.w = cz * cy;
+  q.x = -sz * sy;
+  q.y = cz * sy;
+  q.z = sz * cy;
+  return q;
+}
+
+Aim aimOfOrientation(const Quaternion& orientation)
+{
+  const double norm = std::sqrt(orientation.x * orientation.x + orientation.y * orientation.y +
+                                orientation.z * orientation.z + orientation.w * orientation.w);
+  if (!(norm > 0.0))
+  {
+    return {};
+  }
+  const double x = orientation.x / norm, y = orientation.y / norm, z = orientation.z / norm, w = orientation.w / norm;
+  // The rotated x axis: the first column of the rotation matrix.
+  const double dx = 1.0 - 2.0 * (y * y + z * z);
+  const double dy = 2.0 * (x * y + w * z);
+  const double dz = 2.0 * (x * z - w * y);
+  const double horizontal = std::hypot(dx, dy);
+  Aim aim;
+  aim.tilt = std::atan2(dz, horizontal);
+  aim.pan = horizontal > 1e-9 ? -std::atan2(dy, dx) : 0.0;
+  return aim;
+}
+
+bool RateLimiter::allow(double now)
+{
+  if (!(period_ > 0.0) || (any_ && now - last_ < period_))
+  {
+    return false;
+  }
+  any_ = true;
+  last_ = now;
+  return true;
+}
+
+void RateLimiter::reset()
+{
+  any_ = false;
+}
+
 }  // namespace ptz_action_server::panel

@@ -141,3 +141,45 @@ TEST(PanelModel, GreyingRules)
   e = enables(inputs);
   EXPECT_FALSE(e.absolute || e.presets);
 }
+
+TEST(PanelModel, AimMarkerOrientationFollowsTheUrdfConventions)
+{
+  // README, URDF and tf: at pan +0.5 the optical axis is (cos 0.5, -sin 0.5, 0); at tilt +0.3 it is (cos 0.3, 0, sin
+  // 0.3).
+  const Quaternion q = orientationOfAim({ 0.5, 0.0 });
+  const double dx = 1.0 - 2.0 * (q.y * q.y + q.z * q.z);
+  const double dy = 2.0 * (q.x * q.y + q.w * q.z);
+  EXPECT_NEAR(dx, std::cos(0.5), 1e-12);
+  EXPECT_NEAR(dy, -std::sin(0.5), 1e-12);
+  const Quaternion up = orientationOfAim({ 0.0, 0.3 });
+  EXPECT_NEAR(2.0 * (up.x * up.z - up.w * up.y), std::sin(0.3), 1e-12);
+  for (const Aim aim : { Aim{ 0.6, 0.35 }, Aim{ -2.5, -1.2 }, Aim{ 3.0, 0.0 }, Aim{ 0.0, -0.7 } })
+  {
+    const Aim back = aimOfOrientation(orientationOfAim(aim));
+    EXPECT_NEAR(back.pan, aim.pan, 1e-9);
+    EXPECT_NEAR(back.tilt, aim.tilt, 1e-9);
+  }
+  // Not normalised, and rolled about the optical axis: the same aim.
+  Quaternion q2 = orientationOfAim({ 0.6, 0.35 });
+  q2.x *= 3.0;
+  q2.y *= 3.0;
+  q2.z *= 3.0;
+  q2.w *= 3.0;
+  EXPECT_NEAR(aimOfOrientation(q2).pan, 0.6, 1e-9);
+  const Quaternion roll{ std::sin(0.2), 0.0, 0.0, std::cos(0.2) };  // about x only
+  EXPECT_NEAR(aimOfOrientation(roll).pan, 0.0, 1e-12);
+  EXPECT_NEAR(aimOfOrientation(roll).tilt, 0.0, 1e-12);
+  EXPECT_NEAR(aimOfOrientation(orientationOfAim({ 1.0, M_PI / 2.0 })).tilt, M_PI / 2.0, 1e-6);
+}
+
+TEST(PanelModel, RateLimiterLetsOneEventThroughPerPeriod)
+{
+  RateLimiter limiter(0.25);
+  EXPECT_TRUE(limiter.allow(10.0));
+  EXPECT_FALSE(limiter.allow(10.1));
+  EXPECT_TRUE(limiter.allow(10.25));
+  limiter.reset();
+  EXPECT_TRUE(limiter.allow(10.3));
+  RateLimiter never(0.0);
+  EXPECT_FALSE(never.allow(1.0));
+}

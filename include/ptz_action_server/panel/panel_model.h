@@ -160,4 +160,45 @@ struct EnableInputs
 /// the node offers it.
 Enables enables(const EnableInputs& inputs);
 
+/// The aim marker's logic (ptz_aim_marker): the contract's pan and tilt against a marker orientation in the base frame.
+struct Aim
+{
+  double pan = 0.0;   ///< rad, clockwise seen from above
+  double tilt = 0.0;  ///< rad, up
+};
+
+/// A quaternion (x, y, z, w).
+struct Quaternion
+{
+  double x = 0.0;
+  double y = 0.0;
+  double z = 0.0;
+  double w = 1.0;
+};
+
+/// The orientation whose x axis is the optical axis at `aim` with the URDF's conventions (pan about -z, tilt about -y):
+/// a rotation by -pan about z, then by -tilt about the turned y.
+Quaternion orientationOfAim(const Aim& aim);
+/// The pan and tilt that point the optical axis along the x axis of `orientation` (any quaternion, normalised here;
+/// roll about the axis is ignored). Straight up or down keeps pan 0.
+Aim aimOfOrientation(const Quaternion& orientation);
+
+/// Lets an event through at most once per `period` seconds (0: never; the drag then sends only on release).
+class RateLimiter
+{
+public:
+  explicit RateLimiter(double period) : period_(period)
+  {
+  }
+  /// Whether an event at `now` (s) may pass; if so it counts as the last one.
+  bool allow(double now);
+  /// Forget the last event (a new drag starts).
+  void reset();
+
+private:
+  double period_;
+  bool any_ = false;
+  double last_ = 0.0;
+};
+
 }  // namespace ptz_action_server::panel
