@@ -136,10 +136,14 @@ PanelSnapshot PanelClient::snapshot() const
   PanelSnapshot copy = snapshot_;
   const double t = now();
   copy.fresh = watch_.fresh(t);
-  copy.banner = copy.ns.empty() ? "no camera picked" : watch_.banner(t);
   copy.actions_connected = velocity_client_ && velocity_client_->isServerConnected() && absolute_client_ &&
                            absolute_client_->isServerConnected() && preset_client_ &&
                            preset_client_->isServerConnected();
+  copy.banner = copy.ns.empty() ? "no camera picked" : watch_.banner(t);
+  if (copy.banner.empty() && !copy.actions_connected)
+  {
+    copy.banner = "connecting to the node's actions";
+  }
   std::vector<GoalStatusEntry> goals;
   for (const auto& [action, entries] : statuses_)
   {

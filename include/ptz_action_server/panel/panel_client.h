@@ -60,7 +60,7 @@ struct PanelSnapshot
   std::vector<std::string> namespaces;  ///< every camera on the master
   std::string ns;                       ///< the camera watched, "" for none
   bool fresh = false;                   ///< a ptz_state within STATE_TIMEOUT
-  std::string banner;                   ///< "" or NO_STATE_TEXT
+  std::string banner;                   ///< "", NO_STATE_TEXT, or why the controls are greyed though ptz_state arrives
   bool has_state = false;               ///< a ptz_state arrived from this camera
   int mode = 0;
   double pan = 0.0, tilt = 0.0, zoom = 0.0;
