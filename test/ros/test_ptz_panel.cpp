@@ -45,13 +45,10 @@ std::string g_no_display;  ///< why no X display could be had ("" when there is 
 pid_t g_xvfb = 0;
 constexpr double WAIT = 20.0;  // s
 
-/// Starts Xvfb on a free display when DISPLAY is unset; returns "" or why it could not.
+/// Starts Xvfb on a free display and points DISPLAY at it (never the desktop's, which may be absent or unreachable);
+/// returns "" or why it could not.
 std::string ensureDisplay()
 {
-  if (const char* display = std::getenv("DISPLAY"); display != nullptr && *display != '\0')
-  {
-    return "";
-  }
   for (int number = 90; number < 200; ++number)
   {
     const std::string lock = "/tmp/.X" + std::to_string(number) + "-lock";
