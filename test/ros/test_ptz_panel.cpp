@@ -7,6 +7,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
 #include <QtTest/QTest>
@@ -297,6 +298,31 @@ TEST_F(PanelTest, PresetGoSendsThePresetGoal)
     return !observer_.preset_goals.empty() && observer_.preset_goals.back() == "home";
   }));
   EXPECT_TRUE(waitFor([&] { return text("state_goal").rfind("preset: ", 0) == 0; })) << text("state_goal");
+}
+
+TEST_F(PanelTest, SavesAndDeletesAPreset)
+{
+  QListWidget* presets = child<QListWidget>("presets");
+  QLineEdit* name = child<QLineEdit>("preset_name");
+  ASSERT_TRUE(presets != nullptr && name != nullptr);
+  ASSERT_TRUE(waitFor([&] { return presets->count() >= 1 && enabled("preset_save"); }));
+  const auto row = [&](const QString& wanted) {
+    for (int i = 0; i < presets->count(); ++i)
+    {
+      if (presets->item(i)->data(Qt::UserRole).toString() == wanted)
+      {
+        return i;
+      }
+    }
+    return -1;
+  };
+  name->setText("panel test");
+  QTest::mouseClick(child<QPushButton>("preset_save"), Qt::LeftButton);
+  EXPECT_TRUE(waitFor([&] { return row("panel test") >= 0; })) << text("message");
+  EXPECT_EQ(text("message").rfind("saved 'panel test'", 0), 0u) << text("message");
+  presets->setCurrentRow(row("panel test"));
+  QTest::mouseClick(child<QPushButton>("preset_delete"), Qt::LeftButton);
+  EXPECT_TRUE(waitFor([&] { return row("panel test") < 0 && presets->count() >= 1; })) << text("message");
 }
 
 TEST_F(PanelTest, GreysWithoutPtzStateAndRecovers)
