@@ -159,6 +159,11 @@ void PtzPanel::build()
   // Dragging a slider moves its field; letting go sends the goal.
   connect(pan_slider_, &QSlider::sliderMoved, pan_field_, [this](int value) { pan_field_->setValue(value); });
   connect(tilt_slider_, &QSlider::sliderMoved, tilt_field_, [this](int value) { tilt_field_->setValue(value); });
+  // Typed values move the sliders (setValue emits no sliderMoved, so no loop).
+  connect(pan_field_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), pan_slider_,
+          [this](double value) { pan_slider_->setValue(static_cast<int>(std::lround(value))); });
+  connect(tilt_field_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), tilt_slider_,
+          [this](double value) { tilt_slider_->setValue(static_cast<int>(std::lround(value))); });
   connect(pan_slider_, &QSlider::sliderReleased, this, &PtzPanel::goToFields);
   connect(tilt_slider_, &QSlider::sliderReleased, this, &PtzPanel::goToFields);
   pose->addWidget(new QLabel("Pan"), 0, 0);

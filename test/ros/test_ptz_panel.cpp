@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -28,6 +29,8 @@
 #include <pluginlib/class_loader.hpp>
 #include <ros/ros.h>
 #include <rviz/panel.h>
+#include <std_msgs/Bool.h>
+#include <std_srvs/SetBool.h>
 #include <visualization_msgs/InteractiveMarkerFeedback.h>
 #include <visualization_msgs/InteractiveMarkerInit.h>
 #include <visualization_msgs/InteractiveMarkerUpdate.h>
@@ -323,6 +326,43 @@ TEST_F(PanelTest, SavesAndDeletesAPreset)
   presets->setCurrentRow(row("panel test"));
   QTest::mouseClick(child<QPushButton>("preset_delete"), Qt::LeftButton);
   EXPECT_TRUE(waitFor([&] { return row("panel test") < 0 && presets->count() >= 1; })) << text("message");
+}
+
+TEST_F(PanelTest, TheLookSwitchCallsTheServiceAndFollowsItsState)
+{
+  // The node's look_at_clicked_point as the panel expects it, played by the test: a SetBool service and its latched
+  // state, in the camera's namespace.
+  ros::NodeHandle node("/ptz");
+  ros::Publisher state = node.advertise<std_msgs::Bool>("look_at_clicked_point/enabled", 1, true);
+  std::mutex mutex;
+  std::vector<bool> requests;
+  ros::ServiceServer service = node.advertiseService<std_srvs::SetBool::Request, std_srvs::SetBool::Response>(
+      "look_at_clicked_point", [&](std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response) {
+        std::lock_guard<std::mutex> lock(mutex);
+        requests.push_back(request.data);
+        std_msgs::Bool on;
+        on.data = request.data;
+        state.publish(on);
+        response.success = true;
+        return true;
+      });
+  std_msgs::Bool off;
+  state.publish(off);
+  QCheckBox* look = child<QCheckBox>("look_at_clicked_point");
+  ASSERT_NE(look, nullptr);
+  ASSERT_TRUE(waitFor([&] { return look->isEnabled(); }));  // the service exists now
+  EXPECT_FALSE(look->isChecked());
+  QTest::mouseClick(look, Qt::LeftButton, Qt::NoModifier, QPoint(8, look->height() / 2));  // on the box
+  EXPECT_TRUE(waitFor([&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    return requests == std::vector<bool>{ true } && look->isChecked();
+  }));
+  std_msgs::Bool on;
+  on.data = false;  // switched off elsewhere: the box follows
+  state.publish(on);
+  EXPECT_TRUE(waitFor([&] { return !look->isChecked(); }));
+  service.shutdown();
+  EXPECT_TRUE(waitFor([&] { return !look->isEnabled(); }));  // gone again: greyed
 }
 
 TEST_F(PanelTest, GreysWithoutPtzStateAndRecovers)
