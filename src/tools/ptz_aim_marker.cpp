@@ -3,7 +3,7 @@
 // and one when the drag ends. Otherwise the marker follows ptz_state. Runs in the camera's namespace, as the node does.
 //
 // Parameters (private): base_frame (ptz_base_link), camera_link (ptz_camera_link): the marker's frame and the link it
-// sits on; scale (0.15 m); rate (4 goals/s while dragging; 0: only on release).
+// sits on; scale (0.15 m, 0.01..100); rate (4 goals/s while dragging, 0..100; 0: only on release).
 #include <cmath>
 #include <string>
 
@@ -17,7 +17,9 @@
 
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/core/types.h"
 #include "ptz_action_server/panel/panel_model.h"
+#include "ptz_action_server/ros/param_reader.h"
 
 namespace
 {
@@ -54,15 +56,33 @@ InteractiveMarkerControl ring(const std::string& name, double x, double y, doubl
   return control;
 }
 
+/// The node's parameters, read and checked once.
+struct AimMarkerConfig
+{
+  std::string base_frame;   ///< the marker's frame
+  std::string camera_link;  ///< where it sits
+  double scale = 0.15;      ///< m
+  double rate = 4.0;        ///< goals per second while dragging; 0: only on release
+
+  static AimMarkerConfig load(const ptz_action_server::ParamReader& params)
+  {
+    AimMarkerConfig config;
+    config.base_frame = params.text("base_frame", "ptz_base_link");
+    config.camera_link = params.text("camera_link", "ptz_camera_link");
+    config.scale = params.number("scale", config.scale, 0.01, 100.0);
+    config.rate = params.number("rate", config.rate, 0.0, 100.0);
+    return config;
+  }
+};
+
 class AimMarker
 {
 public:
-  AimMarker()
-    : private_("~")
-    , base_frame_(private_.param<std::string>("base_frame", "ptz_base_link"))
-    , camera_link_(private_.param<std::string>("camera_link", "ptz_camera_link"))
-    , scale_(private_.param("scale", 0.15))
-    , limiter_(rate(private_.param("rate", 4.0)))
+  explicit AimMarker(const AimMarkerConfig& config)
+    : base_frame_(config.base_frame)
+    , camera_link_(config.camera_link)
+    , scale_(config.scale)
+    , limiter_(config.rate > 0.0 ? 1.0 / config.rate : 0.0)
     , client_(node_, "move_ptz/position_abs", false)
     , server_("aim_marker")
     , listener_(buffer_)
@@ -72,11 +92,6 @@ public:
   }
 
 private:
-  static double rate(double goals_per_second)
-  {
-    return std::isfinite(goals_per_second) && goals_per_second > 0.0 ? 1.0 / goals_per_second : 0.0;
-  }
-
   void insertMarker()
   {
     visualization_msgs::InteractiveMarker marker;
@@ -180,7 +195,6 @@ private:
   }
 
   ros::NodeHandle node_;
-  ros::NodeHandle private_;
   std::string base_frame_;
   std::string camera_link_;
   double scale_;
@@ -201,7 +215,18 @@ private:
 int main(int argc, char** argv)
 {
   ros::init(argc, argv, "ptz_aim_marker");
-  AimMarker marker;
+  const ros::NodeHandle private_handle("~");
+  AimMarkerConfig config;
+  try
+  {
+    config = AimMarkerConfig::load(ptz_action_server::ParamReader(private_handle));
+  }
+  catch (const ptz_action_server::ConfigError& error)
+  {
+    ROS_FATAL("configuration error: %s", error.what());
+    return 1;
+  }
+  AimMarker marker(config);
   ros::spin();
   return 0;
 }
