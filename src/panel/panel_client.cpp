@@ -1,0 +1,470 @@
+#include "ptz_action_server/panel/panel_client.h"
+
+#include <ros/master.h>
+#include <std_srvs/SetBool.h>
+
+#include "ptz_action_server/DeletePreset.h"
+#include "ptz_action_server/ListPresets.h"
+#include "ptz_action_server/SavePreset.h"
+
+namespace ptz_action_server::panel
+{
+namespace
+{
+/// The node's actions whose status topics feed the goal line.
+const char* const STATUS_ACTIONS[] = { "position_abs", "position_rel", "velocity", "position_abs_tf",
+                                       "frame",        "track_frame",  "preset" };
+constexpr std::chrono::milliseconds DISCOVERY_PERIOD{ 1000 };
+
+AxisAbility toAbility(const PtzAxisCapability& axis)
+{
+  AxisAbility ability;
+  ability.present = axis.present;
+  ability.absolute = axis.absolute;
+  ability.velocity = axis.velocity;
+  ability.min = axis.min;
+  ability.max = axis.max;
+  ability.max_speed = axis.max_speed;
+  return ability;
+}
+
+PtzGoal ptzGoal(double pan, double tilt, double zoom)
+{
+  PtzGoal goal;
+  goal.pan = static_cast<float>(pan);
+  goal.tilt = static_cast<float>(tilt);
+  goal.zoom = static_cast<float>(zoom);
+  return goal;
+}
+}  // namespace
+
+PanelClient::PanelClient()
+{
+  spinner_ = std::make_unique<ros::AsyncSpinner>(1, &queue_);
+  spinner_->start();
+  worker_ = std::thread([this] { workerLoop(); });
+  discovery_ = std::thread([this] { discoveryLoop(); });
+}
+
+PanelClient::~PanelClient()
+{
+  running_ = false;
+  jobs_changed_.notify_all();
+  discovery_wake_.notify_all();
+  worker_.join();
+  discovery_.join();
+  spinner_->stop();
+  std::lock_guard<std::mutex> lock(mutex_);
+  subscribers_.clear();
+  velocity_client_.reset();
+  absolute_client_.reset();
+  preset_client_.reset();
+}
+
+double PanelClient::now() const
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void PanelClient::setNamespace(const std::string& ns)
+{
+  std::uint64_t generation = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (ns == ns_ && generation_ != 0)
+    {
+      return;
+    }
+    generation = ++generation_;
+    ns_ = ns;
+    for (ros::Subscriber& subscriber : subscribers_)
+    {
+      subscriber.shutdown();
+    }
+    subscribers_.clear();
+    velocity_client_.reset();
+    absolute_client_.reset();
+    preset_client_.reset();
+    jogging_ = false;
+    watch_.reset();
+    statuses_.clear();
+    last_finished_.reset();
+    const std::vector<std::string> namespaces = snapshot_.namespaces;
+    snapshot_ = PanelSnapshot();
+    snapshot_.namespaces = namespaces;
+    snapshot_.ns = ns;
+    if (ns.empty())
+    {
+      return;
+    }
+    ros::NodeHandle node(ns);
+    node.setCallbackQueue(&queue_);
+    ros::NodeHandle root("/");
+    root.setCallbackQueue(&queue_);
+    subscribers_.push_back(node.subscribe<PtzState>(
+        STATE_TOPIC, 1, [this, generation](const PtzState::ConstPtr& state) { onState(generation, state); }));
+    subscribers_.push_back(node.subscribe<PtzCapabilities>(
+        "capabilities", 1, [this, generation](const PtzCapabilities::ConstPtr& capabilities) {
+          onCapabilities(generation, capabilities);
+        }));
+    subscribers_.push_back(node.subscribe<std_msgs::Bool>(
+        LOOK_STATE_TOPIC, 1, [this, generation](const std_msgs::Bool::ConstPtr& on) { onLookState(generation, on); }));
+    subscribers_.push_back(root.subscribe<diagnostic_msgs::DiagnosticArray>(
+        "/diagnostics", 10, [this, generation](const diagnostic_msgs::DiagnosticArray::ConstPtr& array) {
+          onDiagnostics(generation, array);
+        }));
+    for (const char* action : STATUS_ACTIONS)
+    {
+      const std::string name = action;
+      subscribers_.push_back(node.subscribe<actionlib_msgs::GoalStatusArray>(
+          "move_ptz/" + name + "/status", 1,
+          [this, generation, name](const actionlib_msgs::GoalStatusArray::ConstPtr& status) {
+            onStatus(generation, name, status);
+          }));
+    }
+    // spin_thread = false: the clients' callbacks run on queue_, which node hands them.
+    velocity_client_ = std::make_unique<PtzClient>(node, "move_ptz/velocity", false);
+    absolute_client_ = std::make_unique<PtzClient>(node, "move_ptz/position_abs", false);
+    preset_client_ = std::make_unique<PresetClient>(node, "move_ptz/preset", false);
+  }
+  discovery_wake_.notify_all();
+}
+
+PanelSnapshot PanelClient::snapshot() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  PanelSnapshot copy = snapshot_;
+  const double t = now();
+  copy.fresh = watch_.fresh(t);
+  copy.actions_connected = velocity_client_ && velocity_client_->isServerConnected() && absolute_client_ &&
+                           absolute_client_->isServerConnected() && preset_client_ &&
+                           preset_client_->isServerConnected();
+  copy.banner = copy.ns.empty() ? "no camera picked" : watch_.banner(t);
+  if (copy.banner.empty() && !copy.actions_connected)
+  {
+    copy.banner = "connecting to the node's actions";
+  }
+  std::vector<GoalStatusEntry> goals;
+  for (const auto& [action, entries] : statuses_)
+  {
+    goals.insert(goals.end(), entries.begin(), entries.end());
+  }
+  if (last_finished_)
+  {
+    goals.push_back(*last_finished_);
+  }
+  copy.goal = goalText(goals);
+  return copy;
+}
+
+void PanelClient::onState(std::uint64_t generation, const PtzState::ConstPtr& state)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (generation != generation_)
+  {
+    return;
+  }
+  const double t = now();
+  if (!watch_.fresh(t))
+  {
+    // The camera appeared or came back (a restarted node may have other presets): list them again.
+    const std::string ns = ns_;
+    post([this, ns, generation] { listPresets(ns, generation); });
+  }
+  watch_.received(t);
+  snapshot_.has_state = true;
+  snapshot_.mode = state->mode;
+  snapshot_.pan = state->pan;
+  snapshot_.tilt = state->tilt;
+  snapshot_.zoom = state->zoom;
+}
+
+void PanelClient::onCapabilities(std::uint64_t generation, const PtzCapabilities::ConstPtr& capabilities)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (generation != generation_)
+  {
+    return;
+  }
+  snapshot_.abilities.known = true;
+  snapshot_.abilities.pan = toAbility(capabilities->pan);
+  snapshot_.abilities.tilt = toAbility(capabilities->tilt);
+  snapshot_.abilities.zoom = toAbility(capabilities->zoom);
+}
+
+void PanelClient::onDiagnostics(std::uint64_t generation, const diagnostic_msgs::DiagnosticArray::ConstPtr& array)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (generation != generation_)
+  {
+    return;
+  }
+  for (const diagnostic_msgs::DiagnosticStatus& status : array->status)
+  {
+    if (!diagnosticsOfNamespace(ns_, status.name))
+    {
+      continue;
+    }
+    for (const diagnostic_msgs::KeyValue& value : status.values)
+    {
+      if (value.key == "link")
+      {
+        snapshot_.link = value.value == "up" ? Link::UP : Link::DOWN;
+      }
+    }
+  }
+}
+
+void PanelClient::onStatus(std::uint64_t generation, const std::string& action,
+                           const actionlib_msgs::GoalStatusArray::ConstPtr& status)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (generation != generation_)
+  {
+    return;
+  }
+  std::vector<GoalStatusEntry>& entries = statuses_[action];
+  entries.clear();
+  for (const actionlib_msgs::GoalStatus& goal : status->status_list)
+  {
+    entries.push_back({ action, goal.status, goal.text, goal.goal_id.stamp.toSec() });
+    const bool finished =
+        goal.status != actionlib_msgs::GoalStatus::PENDING && goal.status != actionlib_msgs::GoalStatus::ACTIVE &&
+        goal.status != actionlib_msgs::GoalStatus::PREEMPTING && goal.status != actionlib_msgs::GoalStatus::RECALLING;
+    if (finished && (!last_finished_ || entries.back().stamp >= last_finished_->stamp))
+    {
+      last_finished_ = entries.back();
+    }
+  }
+}
+
+void PanelClient::onLookState(std::uint64_t generation, const std_msgs::Bool::ConstPtr& enabled)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (generation == generation_)
+  {
+    snapshot_.look_enabled = enabled->data;
+  }
+}
+
+void PanelClient::jog(const Velocity& velocity)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (velocity_client_)
+  {
+    velocity_client_->sendGoal(ptzGoal(velocity.pan, velocity.tilt, velocity.zoom));
+    jogging_ = true;
+  }
+}
+
+void PanelClient::stopJog()
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (velocity_client_ && jogging_)
+  {
+    velocity_client_->cancelGoal();
+    jogging_ = false;
+  }
+}
+
+void PanelClient::stopAll()
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (velocity_client_)
+  {
+    velocity_client_->sendGoal(ptzGoal(0.0, 0.0, 0.0));
+    jogging_ = false;
+  }
+}
+
+void PanelClient::goAbsolute(double pan, double tilt, double zoom)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (absolute_client_)
+  {
+    absolute_client_->sendGoal(ptzGoal(pan, tilt, zoom));
+    jogging_ = false;  // the position goal preempts the velocity goal
+  }
+}
+
+void PanelClient::goPreset(const std::string& name)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (preset_client_)
+  {
+    PtzPresetGoal goal;
+    goal.name = name;
+    preset_client_->sendGoal(goal);
+    jogging_ = false;
+  }
+}
+
+void PanelClient::setMessage(std::uint64_t generation, const std::string& message)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (generation == generation_)
+  {
+    snapshot_.message = message;
+  }
+}
+
+void PanelClient::listPresets(const std::string& ns, std::uint64_t generation)
+{
+  ListPresets list;
+  const std::string name = inNamespace(ns, "move_ptz/list_presets");
+  if (!ros::service::call(name, list))
+  {
+    setMessage(generation, "no presets: " + name + " did not answer");
+    return;
+  }
+  std::vector<Preset> presets;
+  for (std::size_t i = 0; i < list.response.names.size(); ++i)
+  {
+    Preset preset;
+    preset.name = list.response.names[i];
+    preset.pan = i < list.response.pan.size() ? list.response.pan[i] : 0.0;
+    preset.tilt = i < list.response.tilt.size() ? list.response.tilt[i] : 0.0;
+    preset.zoom = i < list.response.zoom.size() ? list.response.zoom[i] : 0.0;
+    presets.push_back(preset);
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (generation != generation_)
+  {
+    return;
+  }
+  snapshot_.presets = std::move(presets);
+  ++snapshot_.presets_serial;
+  if (!list.response.message.empty())
+  {
+    snapshot_.message = list.response.message;
+  }
+}
+
+void PanelClient::refreshPresets()
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const std::string ns = ns_;
+  const std::uint64_t generation = generation_;
+  if (!ns.empty())
+  {
+    post([this, ns, generation] { listPresets(ns, generation); });
+  }
+}
+
+void PanelClient::savePreset(const std::string& name)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const std::string ns = ns_;
+  const std::uint64_t generation = generation_;
+  post([this, ns, generation, name] {
+    SavePreset save;
+    save.request.name = name;
+    const std::string service = inNamespace(ns, "move_ptz/save_preset");
+    setMessage(generation, ros::service::call(service, save) ? save.response.message : service + " did not answer");
+    listPresets(ns, generation);
+  });
+}
+
+void PanelClient::deletePreset(const std::string& name)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const std::string ns = ns_;
+  const std::uint64_t generation = generation_;
+  post([this, ns, generation, name] {
+    DeletePreset remove;
+    remove.request.name = name;
+    const std::string service = inNamespace(ns, "move_ptz/delete_preset");
+    setMessage(generation, ros::service::call(service, remove) ? remove.response.message : service + " did not answer");
+    listPresets(ns, generation);
+  });
+}
+
+void PanelClient::setLookAt(bool enabled)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const std::string ns = ns_;
+  const std::uint64_t generation = generation_;
+  post([this, ns, generation, enabled] {
+    std_srvs::SetBool request;
+    request.request.data = enabled;
+    const std::string service = inNamespace(ns, LOOK_SERVICE);
+    if (!ros::service::call(service, request))
+    {
+      setMessage(generation, service + " did not answer");
+    }
+    else
+    {
+      setMessage(generation, request.response.message.empty() ?
+                                 std::string("look at clicked point ") + (enabled ? "on" : "off") :
+                                 request.response.message);
+    }
+  });
+}
+
+void PanelClient::post(std::function<void()> job)
+{
+  {
+    std::lock_guard<std::mutex> lock(jobs_mutex_);
+    jobs_.push_back(std::move(job));
+  }
+  jobs_changed_.notify_one();
+}
+
+void PanelClient::workerLoop()
+{
+  while (running_)
+  {
+    std::function<void()> job;
+    {
+      std::unique_lock<std::mutex> lock(jobs_mutex_);
+      jobs_changed_.wait(lock, [this] { return !running_ || !jobs_.empty(); });
+      if (!running_)
+      {
+        return;
+      }
+      job = std::move(jobs_.front());
+      jobs_.pop_front();
+    }
+    job();
+  }
+}
+
+void PanelClient::discoveryLoop()
+{
+  while (running_)
+  {
+    // Both calls may wait (the master's topic list for a master that is gone): off the widget's thread, unlocked.
+    ros::master::V_TopicInfo master_topics;
+    std::vector<std::string> namespaces;
+    // check() never waits; getTopics waits for a master that is gone, which would hold the destructor's join.
+    if (ros::master::check() && ros::master::getTopics(master_topics))
+    {
+      std::vector<TopicInfo> topics;
+      for (const ros::master::TopicInfo& topic : master_topics)
+      {
+        topics.push_back({ topic.name, topic.datatype });
+      }
+      namespaces = cameraNamespaces(topics);
+    }
+    std::string ns;
+    std::uint64_t generation = 0;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      ns = ns_;
+      generation = generation_;
+    }
+    const bool look = !ns.empty() && ros::service::exists(inNamespace(ns, LOOK_SERVICE), false);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      snapshot_.namespaces = namespaces;
+      if (generation == generation_)
+      {
+        snapshot_.look_available = look;
+      }
+    }
+    std::unique_lock<std::mutex> lock(discovery_mutex_);
+    discovery_wake_.wait_for(lock, DISCOVERY_PERIOD, [this] { return !running_; });
+  }
+}
+
+}  // namespace ptz_action_server::panel

@@ -1,0 +1,473 @@
+// The rviz panel against the running sim node, under Xvfb: the panel is loaded through rviz's plugin loader as rviz
+// loads it, its jog and preset buttons are clicked with QTest, and the test checks the goals the node received and the
+// state the panel shows. main() starts its own Xvfb when there is no DISPLAY; only when none can start do the tests
+// skip.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QtTest/QTest>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <actionlib/client/simple_action_client.h>
+#include <actionlib_msgs/GoalID.h>
+#include <pluginlib/class_loader.hpp>
+#include <ros/ros.h>
+#include <rviz/panel.h>
+#include <std_msgs/Bool.h>
+#include <std_srvs/SetBool.h>
+#include <visualization_msgs/InteractiveMarkerFeedback.h>
+#include <visualization_msgs/InteractiveMarkerInit.h>
+#include <visualization_msgs/InteractiveMarkerUpdate.h>
+
+#include "ptz_action_server/PtzAction.h"
+#include "ptz_action_server/PtzActionGoal.h"
+#include "ptz_action_server/PtzPresetActionGoal.h"
+#include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/SetSimFaults.h"
+#include "ptz_action_server/panel/panel_model.h"
+#include "ptz_action_server/panel/ptz_panel.h"
+
+namespace
+{
+std::string g_no_display;  ///< why no X display could be had ("" when there is one)
+pid_t g_xvfb = 0;
+constexpr double WAIT = 20.0;  // s
+
+/// Starts Xvfb on a free display and points DISPLAY at it (never the desktop's, which may be absent or unreachable);
+/// returns "" or why it could not.
+std::string ensureDisplay()
+{
+  for (int number = 90; number < 200; ++number)
+  {
+    const std::string lock = "/tmp/.X" + std::to_string(number) + "-lock";
+    const std::string socket = "/tmp/.X11-unix/X" + std::to_string(number);
+    struct stat info;
+    if (stat(lock.c_str(), &info) == 0 || stat(socket.c_str(), &info) == 0)
+    {
+      continue;
+    }
+    const std::string display = ":" + std::to_string(number);
+    const pid_t pid = fork();
+    if (pid == 0)
+    {
+      execlp("Xvfb", "Xvfb", display.c_str(), "-screen", "0", "1280x1024x24", "-nolisten", "tcp",
+             static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    if (pid < 0)
+    {
+      return "fork failed";
+    }
+    for (int i = 0; i < 100; ++i)  // up to 10 s for its socket
+    {
+      int status = 0;
+      if (waitpid(pid, &status, WNOHANG) == pid)
+      {
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
+        {
+          return "Xvfb is not installed (apt-get install xvfb)";
+        }
+        break;  // lost a race for this display: try the next
+      }
+      if (stat(socket.c_str(), &info) == 0)
+      {
+        g_xvfb = pid;
+        setenv("DISPLAY", display.c_str(), 1);
+        return "";
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    if (g_xvfb == 0)
+    {
+      kill(pid, SIGTERM);
+      waitpid(pid, nullptr, 0);
+    }
+  }
+  return "Xvfb could not start on any display :90 to :199";
+}
+
+/// What the node received and published, heard on the test's own spinner.
+class Observer
+{
+public:
+  Observer()
+  {
+    ros::NodeHandle node("/ptz");
+    subscribers_.push_back(node.subscribe("ptz_state", 10, &Observer::onState, this));
+    subscribers_.push_back(node.subscribe("move_ptz/velocity/goal", 10, &Observer::onVelocity, this));
+    subscribers_.push_back(node.subscribe("move_ptz/velocity/cancel", 10, &Observer::onCancel, this));
+    subscribers_.push_back(node.subscribe("move_ptz/preset/goal", 10, &Observer::onPreset, this));
+    subscribers_.push_back(node.subscribe("move_ptz/position_abs/goal", 10, &Observer::onAbsolute, this));
+    subscribers_.push_back(node.subscribe("aim_marker/update", 10, &Observer::onMarker, this));
+    subscribers_.push_back(node.subscribe("aim_marker/update_full", 1, &Observer::onMarkerInit, this));
+  }
+  std::mutex mutex;
+  ptz_action_server::PtzState state;
+  bool has_state = false;
+  std::vector<ptz_action_server::PtzGoal> velocity_goals;
+  int cancels = 0;
+  std::vector<std::string> preset_goals;
+  std::vector<ptz_action_server::PtzGoal> absolute_goals;
+  std::optional<ptz_action_server::panel::Aim> marker_aim;  ///< the aim marker's latest pose
+
+private:
+  void onAbsolute(const ptz_action_server::PtzActionGoal& message)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    absolute_goals.push_back(message.goal);
+  }
+  void onMarkerInit(const visualization_msgs::InteractiveMarkerInit& init)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (const auto& marker : init.markers)
+    {
+      const geometry_msgs::Quaternion& q = marker.pose.orientation;
+      marker_aim = ptz_action_server::panel::aimOfOrientation({ q.x, q.y, q.z, q.w });
+    }
+  }
+  void onMarker(const visualization_msgs::InteractiveMarkerUpdate& update)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    const auto take = [this](const geometry_msgs::Quaternion& q) {
+      marker_aim = ptz_action_server::panel::aimOfOrientation({ q.x, q.y, q.z, q.w });
+    };
+    for (const auto& marker : update.markers)
+    {
+      take(marker.pose.orientation);
+    }
+    for (const auto& pose : update.poses)
+    {
+      take(pose.pose.orientation);
+    }
+  }
+  void onState(const ptz_action_server::PtzState& message)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    state = message;
+    has_state = true;
+  }
+  void onVelocity(const ptz_action_server::PtzActionGoal& message)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    velocity_goals.push_back(message.goal);
+  }
+  void onCancel(const actionlib_msgs::GoalID&)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    ++cancels;
+  }
+  void onPreset(const ptz_action_server::PtzPresetActionGoal& message)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    preset_goals.push_back(message.goal.name);
+  }
+  std::vector<ros::Subscriber> subscribers_;
+};
+
+class PanelTest : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    if (!g_no_display.empty())
+    {
+      GTEST_SKIP() << "no X display for the panel: " << g_no_display;
+    }
+    // As rviz loads it: by its class name, through the package's rviz plugin export.
+    loader_ = std::make_unique<pluginlib::ClassLoader<rviz::Panel>>("rviz", "rviz::Panel");
+    panel_.reset(loader_->createUnmanagedInstance("ptz_action_server/PtzPanel"));
+    ASSERT_NE(dynamic_cast<ptz_action_server::panel::PtzPanel*>(panel_.get()), nullptr);
+    panel_->resize(360, 800);
+    panel_->show();
+  }
+  void TearDown() override
+  {
+    panel_.reset();
+  }
+
+  ptz_action_server::panel::PtzPanel* panel() const
+  {
+    return static_cast<ptz_action_server::panel::PtzPanel*>(panel_.get());
+  }
+  template <typename T>
+  T* child(const char* name) const
+  {
+    T* widget = panel_->findChild<T*>(name);
+    EXPECT_NE(widget, nullptr) << name;
+    return widget;
+  }
+  /// Runs the Qt event loop until `done` holds or WAIT passes.
+  bool waitFor(const std::function<bool()>& done, double seconds = WAIT)
+  {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < deadline)
+    {
+      QApplication::processEvents();
+      panel()->refresh();
+      if (done())
+      {
+        return true;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return done();
+  }
+  std::string text(const char* label) const
+  {
+    QLabel* widget = child<QLabel>(label);
+    return widget == nullptr ? "" : widget->text().toStdString();
+  }
+  bool enabled(const char* name) const
+  {
+    QWidget* widget = child<QWidget>(name);
+    return widget != nullptr && widget->isEnabled();
+  }
+
+  Observer observer_;
+  std::unique_ptr<pluginlib::ClassLoader<rviz::Panel>> loader_;
+  std::unique_ptr<rviz::Panel> panel_;
+};
+
+TEST_F(PanelTest, OffersTheCameraAndShowsItsState)
+{
+  ASSERT_TRUE(waitFor([&] { return enabled("jog_right") && enabled("preset_go"); }))
+      << "banner: " << text("banner") << ", goal: " << text("state_goal");
+  EXPECT_TRUE(waitFor([&] { return text("state_link") == "up"; })) << text("state_link");  // diagnostics: 1 Hz
+  QComboBox* camera = child<QComboBox>("camera");
+  ASSERT_NE(camera, nullptr);
+  EXPECT_GE(camera->findText("/ptz"), 0);
+  // The pan the panel shows is one ptz_state published (the camera is still).
+  EXPECT_TRUE(waitFor([&] {
+    std::lock_guard<std::mutex> lock(observer_.mutex);
+    return observer_.has_state && text("state_pan") == ptz_action_server::panel::angleText(observer_.state.pan) &&
+           text("state_mode") == "idle";
+  })) << text("state_pan");
+  // The look_at_clicked_point switch stays greyed without its service.
+  EXPECT_FALSE(enabled("look_at_clicked_point"));
+}
+
+TEST_F(PanelTest, JogSendsAVelocityGoalWhileHeldAndStopsOnRelease)
+{
+  QPushButton* right = child<QPushButton>("jog_right");
+  ASSERT_NE(right, nullptr);
+  ASSERT_TRUE(waitFor([&] { return right->isEnabled(); }));
+  double start_pan = 0.0;
+  {
+    std::lock_guard<std::mutex> lock(observer_.mutex);
+    start_pan = observer_.state.pan;
+  }
+  QTest::mousePress(right, Qt::LeftButton);
+  EXPECT_TRUE(waitFor([&] {
+    std::lock_guard<std::mutex> lock(observer_.mutex);
+    return !observer_.velocity_goals.empty() && observer_.velocity_goals.back().pan > 0.0 &&
+           observer_.velocity_goals.back().tilt == 0.0 && observer_.state.mode == 2 &&
+           observer_.state.pan > start_pan + 0.01;
+  }));
+  EXPECT_TRUE(waitFor([&] { return text("state_mode") == "velocity" && text("state_goal") == "velocity: active"; }))
+      << text("state_mode") << " / " << text("state_goal");
+  QTest::mouseRelease(right, Qt::LeftButton);
+  EXPECT_TRUE(waitFor([&] {
+    std::lock_guard<std::mutex> lock(observer_.mutex);
+    return observer_.cancels >= 1 && observer_.state.mode == 0;
+  }));
+  EXPECT_TRUE(waitFor([&] { return text("state_mode") == "idle"; }));
+}
+
+TEST_F(PanelTest, PresetGoSendsThePresetGoal)
+{
+  QListWidget* presets = child<QListWidget>("presets");
+  ASSERT_NE(presets, nullptr);
+  ASSERT_TRUE(waitFor([&] { return presets->count() >= 1 && enabled("preset_go"); }));
+  presets->setCurrentRow(0);  // home comes first
+  QTest::mouseClick(child<QPushButton>("preset_go"), Qt::LeftButton);
+  EXPECT_TRUE(waitFor([&] {
+    std::lock_guard<std::mutex> lock(observer_.mutex);
+    return !observer_.preset_goals.empty() && observer_.preset_goals.back() == "home";
+  }));
+  EXPECT_TRUE(waitFor([&] { return text("state_goal").rfind("preset: ", 0) == 0; })) << text("state_goal");
+}
+
+TEST_F(PanelTest, SavesAndDeletesAPreset)
+{
+  QListWidget* presets = child<QListWidget>("presets");
+  QLineEdit* name = child<QLineEdit>("preset_name");
+  ASSERT_TRUE(presets != nullptr && name != nullptr);
+  ASSERT_TRUE(waitFor([&] { return presets->count() >= 1 && enabled("preset_save"); }));
+  const auto row = [&](const QString& wanted) {
+    for (int i = 0; i < presets->count(); ++i)
+    {
+      if (presets->item(i)->data(Qt::UserRole).toString() == wanted)
+      {
+        return i;
+      }
+    }
+    return -1;
+  };
+  name->setText("panel test");
+  QTest::mouseClick(child<QPushButton>("preset_save"), Qt::LeftButton);
+  EXPECT_TRUE(waitFor([&] { return row("panel test") >= 0; })) << text("message");
+  EXPECT_EQ(text("message").rfind("saved 'panel test'", 0), 0u) << text("message");
+  presets->setCurrentRow(row("panel test"));
+  QTest::mouseClick(child<QPushButton>("preset_delete"), Qt::LeftButton);
+  EXPECT_TRUE(waitFor([&] { return row("panel test") < 0 && presets->count() >= 1; })) << text("message");
+}
+
+TEST_F(PanelTest, TheLookSwitchCallsTheServiceAndFollowsItsState)
+{
+  // The node's look_at_clicked_point as the panel expects it, played by the test: a SetBool service and its latched
+  // state, in the camera's namespace.
+  ros::NodeHandle node("/ptz");
+  ros::Publisher state = node.advertise<std_msgs::Bool>("look_at_clicked_point/enabled", 1, true);
+  std::mutex mutex;
+  std::vector<bool> requests;
+  ros::ServiceServer service = node.advertiseService<std_srvs::SetBool::Request, std_srvs::SetBool::Response>(
+      "look_at_clicked_point", [&](std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response) {
+        std::lock_guard<std::mutex> lock(mutex);
+        requests.push_back(request.data);
+        std_msgs::Bool on;
+        on.data = request.data;
+        state.publish(on);
+        response.success = true;
+        return true;
+      });
+  std_msgs::Bool off;
+  state.publish(off);
+  QCheckBox* look = child<QCheckBox>("look_at_clicked_point");
+  ASSERT_NE(look, nullptr);
+  ASSERT_TRUE(waitFor([&] { return look->isEnabled(); }));  // the service exists now
+  EXPECT_FALSE(look->isChecked());
+  QTest::mouseClick(look, Qt::LeftButton, Qt::NoModifier, QPoint(8, look->height() / 2));  // on the box
+  EXPECT_TRUE(waitFor([&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    return requests == std::vector<bool>{ true } && look->isChecked();
+  }));
+  std_msgs::Bool on;
+  on.data = false;  // switched off elsewhere: the box follows
+  state.publish(on);
+  EXPECT_TRUE(waitFor([&] { return !look->isChecked(); }));
+  service.shutdown();
+  EXPECT_TRUE(waitFor([&] { return !look->isEnabled(); }));  // gone again: greyed
+}
+
+TEST_F(PanelTest, GreysWithoutPtzStateAndRecovers)
+{
+  ASSERT_TRUE(waitFor([&] { return enabled("jog_right"); }));
+  panel()->setNamespace("/no_camera_here");  // as a node that went away: nothing publishes there
+  EXPECT_TRUE(waitFor([&] { return text("banner") == "no ptz_state for 2 s" && !enabled("jog_right"); }));
+  EXPECT_FALSE(enabled("preset_go"));
+  panel()->setNamespace("/ptz");
+  EXPECT_TRUE(waitFor([&] { return enabled("jog_right") && text("banner").empty(); }));
+}
+
+TEST_F(PanelTest, GreysMotionWhileTheLinkIsDown)
+{
+  ASSERT_TRUE(waitFor([&] { return enabled("jog_right") && text("state_link") == "up"; }));
+  ptz_action_server::SetSimFaults faults;
+  faults.request.dropout = true;
+  ASSERT_TRUE(ros::service::call("/ptz/ptz_action_server/sim/set_faults", faults));
+  EXPECT_TRUE(waitFor([&] { return text("state_link") == "down" && !enabled("jog_right"); }));
+  EXPECT_FALSE(enabled("preset_go"));
+  EXPECT_EQ(text("banner"), "");  // ptz_state goes on: only the motion is greyed
+  faults.request.dropout = false;
+  ASSERT_TRUE(ros::service::call("/ptz/ptz_action_server/sim/set_faults", faults));
+  EXPECT_TRUE(waitFor([&] { return text("state_link") == "up" && enabled("jog_right"); }));
+}
+
+/// ptz_aim_marker, fed the feedback rviz sends when an operator drags the marker: no display needed.
+TEST(AimMarker, ADragSendsAPositionGoalAndTheMarkerFollowsTheCamera)
+{
+  Observer observer;
+  ros::NodeHandle node("/ptz");
+  ros::Publisher feedback = node.advertise<visualization_msgs::InteractiveMarkerFeedback>("aim_marker/feedback", 10);
+  const auto until = [](const std::function<bool()>& done) {
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(WAIT);
+    while (!done() && ros::WallTime::now() < deadline)
+    {
+      ros::WallDuration(0.02).sleep();
+    }
+    return done();
+  };
+  ASSERT_TRUE(until([&] { return feedback.getNumSubscribers() > 0; }));
+  ASSERT_TRUE(until([&] {
+    std::lock_guard<std::mutex> lock(observer.mutex);
+    return observer.has_state && observer.marker_aim.has_value();
+  }));
+
+  visualization_msgs::InteractiveMarkerFeedback drag;
+  drag.client_id = "/rviz/InteractiveMarkers";
+  drag.marker_name = "aim";
+  drag.control_name = "pan";
+  drag.header.frame_id = "ptz_base_link";
+  const ptz_action_server::panel::Quaternion q = ptz_action_server::panel::orientationOfAim({ 0.4, 0.2 });
+  drag.pose.orientation.x = q.x;
+  drag.pose.orientation.y = q.y;
+  drag.pose.orientation.z = q.z;
+  drag.pose.orientation.w = q.w;
+  drag.event_type = visualization_msgs::InteractiveMarkerFeedback::MOUSE_DOWN;
+  feedback.publish(drag);
+  drag.event_type = visualization_msgs::InteractiveMarkerFeedback::MOUSE_UP;
+  feedback.publish(drag);
+  EXPECT_TRUE(until([&] {
+    std::lock_guard<std::mutex> lock(observer.mutex);
+    return !observer.absolute_goals.empty() && std::abs(observer.absolute_goals.back().pan - 0.4) < 1e-4 &&
+           std::abs(observer.absolute_goals.back().tilt - 0.2) < 1e-4 && std::abs(observer.state.pan - 0.4) < 0.006 &&
+           std::abs(observer.state.tilt - 0.2) < 0.006;
+  }));
+
+  // Another client moves the camera: the marker follows ptz_state.
+  actionlib::SimpleActionClient<ptz_action_server::PtzAction> client(node, "move_ptz/position_abs", true);
+  ASSERT_TRUE(client.waitForServer(ros::Duration(WAIT)));
+  ptz_action_server::PtzGoal goal;
+  goal.pan = -0.3f;
+  goal.tilt = 0.1f;
+  goal.zoom = 1.0f;
+  client.sendGoal(goal);
+  EXPECT_TRUE(until([&] {
+    std::lock_guard<std::mutex> lock(observer.mutex);
+    return observer.marker_aim && std::abs(observer.marker_aim->pan + 0.3) < 0.006 &&
+           std::abs(observer.marker_aim->tilt - 0.1) < 0.006;
+  }));
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_ptz_panel");
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  g_no_display = ensureDisplay();
+  int result = 0;
+  if (g_no_display.empty())
+  {
+    QApplication application(argc, argv);
+    result = RUN_ALL_TESTS();
+  }
+  else
+  {
+    result = RUN_ALL_TESTS();  // each test skips, saying why
+  }
+  if (g_xvfb != 0)
+  {
+    kill(g_xvfb, SIGTERM);
+    waitpid(g_xvfb, nullptr, 0);
+  }
+  return result;
+}
