@@ -26,6 +26,7 @@ PTZ_APT_PACKAGES=(
   nlohmann-json3-dev
   libcurl4-openssl-dev libssl-dev libtinyxml2-dev
   libyaml-cpp-dev
+  libnodelet-dev libnodeletlib-dev libnodeletlib-tools
 )
 
 # A step's heading, with the time of day, so a CI log shows where its time went.

@@ -57,6 +57,7 @@ NodeConfig NodeConfig::load(const ParamReader& params)
   config.mount = loadMountConfig(params);
   config.field_of_view = FieldOfViewSettings::load(params);
   config.presets = PresetConfig::load(params);
+  config.node_name = params.nodeHandle().getNamespace();
   return config;
 }
 

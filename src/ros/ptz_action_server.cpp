@@ -129,7 +129,8 @@ void PtzActionServer::start()
 
   // The 10 Hz state tick on its own thread; its samples reach the supervisor through the main queue.
   state_publisher_ = std::make_unique<StatePublisher>(
-      node_handle_, kinematics_, backend_, *supervisor_, limits_, config_.publish_tf, [this](const GoalSample& sample) {
+      node_handle_, config_.node_name, kinematics_, backend_, *supervisor_, limits_, config_.publish_tf,
+      [this](const GoalSample& sample) {
         node_handle_.getCallbackQueue()->addCallback(
             boost::make_shared<FunctionCallback>([this, sample] { supervisor_->supervise(sample); }),
             reinterpret_cast<uint64_t>(this));

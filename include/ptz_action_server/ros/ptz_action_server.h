@@ -49,6 +49,8 @@ struct NodeConfig
   /// The field_of_view topic and the zoomed camera_info.
   FieldOfViewSettings field_of_view;
   PresetConfig presets;  ///< the presets file and home
+  /// The node's private namespace (/left/ptz_action_server): its name in the diagnostics, as a process or a nodelet.
+  std::string node_name;
 
   /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
   /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -14,7 +15,6 @@
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
-#include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "ptz_action_server/PtzState.h"
@@ -25,6 +25,8 @@
 
 namespace ptz_action_server
 {
+class SharedStaticTransforms;
+
 /**
  * \brief Publishes the device's state from a 10 Hz steady timer, whatever the backend does, and hands the samples on.
  *
@@ -43,8 +45,9 @@ public:
   using SampleHandler = std::function<void(const GoalSample&)>;
 
   /// \p supervisor must outlive the publisher; only its thread-safe sample(), mode() and goalActive() are used.
-  /// \p limits are the node's (the device's capabilities within the URDF's limits).
-  StatePublisher(const ros::NodeHandle& node_handle, const PtzKinematics& kinematics,
+  /// \p limits are the node's (the device's capabilities within the URDF's limits). \p node_name is the node's
+  /// private namespace (/left/ptz_action_server): it names the diagnostics, whether the node is a process or a nodelet.
+  StatePublisher(const ros::NodeHandle& node_handle, const std::string& node_name, const PtzKinematics& kinematics,
                  std::shared_ptr<PtzBackend> backend, const GoalSupervisor& supervisor, const Capabilities& limits,
                  bool publish_tf, SampleHandler hand_over);
   /// Stops the timer and its spinner: once it returns, the handler is not called any more.
@@ -73,6 +76,7 @@ private:
 
   ros::CallbackQueue queue_;     ///< declared first: everything below registers on it
   ros::NodeHandle node_handle_;  ///< the node's namespace, on queue_
+  const std::string node_name_;  ///< the node's private namespace
   PtzKinematics kinematics_;
   std::shared_ptr<PtzBackend> backend_;
   const GoalSupervisor& supervisor_;
@@ -90,7 +94,8 @@ private:
   std::vector<geometry_msgs::TransformStamped> joint_transforms_;  ///< of reported_joints_, reused every tick
   TimePoint last_transform_stamp_{};                               ///< of the state the joint tf was last sent for
   std::unique_ptr<tf2_ros::TransformBroadcaster> transform_broadcaster_;
-  std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
+  /// The process's one latched /tf_static, which carries every camera's fixed joints (see SharedStaticTransforms).
+  std::shared_ptr<SharedStaticTransforms> static_transforms_;
   std::unique_ptr<diagnostic_updater::Updater> diagnostics_;
   double state_rate_min_ = 0.0;
   double state_rate_max_ = 0.0;
