@@ -2,11 +2,8 @@
 
 #include <algorithm>
 #include <limits>
-#include <map>
-#include <mutex>
 
 #include <tf2_eigen/tf2_eigen.h>
-#include <tf2_msgs/TFMessage.h>
 
 #include "ptz_action_server/core/capabilities.h"
 
@@ -23,70 +20,6 @@ static_assert(static_cast<int>(GoalMode::IDLE) == PtzState::MODE_IDLE &&
                   static_cast<int>(GoalMode::VELOCITY) == PtzState::MODE_VELOCITY,
               "GoalMode must keep PtzState's mode values");
 }  // namespace
-
-/**
- * \brief The process's one latched /tf_static publisher, shared by every camera in it (several nodelets in one
- * manager), carrying the fixed joints of all of them.
- *
- * roscpp keeps one publication per topic and process, and a latched topic hands late subscribers only the last
- * message published: with one tf2_ros::StaticTransformBroadcaster per camera, a listener that starts after the
- * cameras would hear the fixed joints of the last camera only. Thread-safe; it lives as long as a camera holds it.
- */
-class SharedStaticTransforms
-{
-public:
-  static std::shared_ptr<SharedStaticTransforms> instance()
-  {
-    static std::mutex mutex;
-    static std::weak_ptr<SharedStaticTransforms> shared;
-    std::lock_guard<std::mutex> lock(mutex);
-    std::shared_ptr<SharedStaticTransforms> current = shared.lock();
-    if (!current)
-    {
-      current = std::make_shared<SharedStaticTransforms>();
-      shared = current;
-    }
-    return current;
-  }
-
-  SharedStaticTransforms()
-  {
-    publisher_ = ros::NodeHandle().advertise<tf2_msgs::TFMessage>("/tf_static", 100, true);
-  }
-
-  /// Publishes \p transforms as \p owner's, with every other owner's.
-  void set(const void* owner, const std::vector<geometry_msgs::TransformStamped>& transforms)
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    owned_[owner] = transforms;
-    publish();
-  }
-
-  /// Drops \p owner's transforms from what late subscribers hear.
-  void remove(const void* owner)
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (owned_.erase(owner) > 0 && !owned_.empty())
-    {
-      publish();
-    }
-  }
-
-private:
-  void publish()
-  {
-    tf2_msgs::TFMessage message;
-    for (const auto& entry : owned_)
-    {
-      message.transforms.insert(message.transforms.end(), entry.second.begin(), entry.second.end());
-    }
-    publisher_.publish(message);
-  }
-
-  std::mutex mutex_;
-  std::map<const void*, std::vector<geometry_msgs::TransformStamped>> owned_;
-  ros::Publisher publisher_;
-};
 
 StatePublisher::StatePublisher(const ros::NodeHandle& node_handle, const std::string& node_name,
                                const PtzKinematics& kinematics, std::shared_ptr<PtzBackend> backend,
@@ -110,10 +43,6 @@ StatePublisher::~StatePublisher()
   if (spinner_)
   {
     spinner_->stop();
-  }
-  if (static_transforms_)
-  {
-    static_transforms_->remove(this);
   }
 }
 
@@ -140,7 +69,7 @@ void StatePublisher::start()
   if (publish_tf_)
   {
     transform_broadcaster_ = std::make_unique<tf2_ros::TransformBroadcaster>();
-    static_transforms_ = SharedStaticTransforms::instance();
+    static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
     joint_transforms_.resize(reported_joints_.size());
     for (std::size_t index = 0; index < reported_joints_.size(); ++index)
     {
@@ -245,7 +174,7 @@ void StatePublisher::publishStaticTransforms()
   }
   if (!transforms.empty())
   {
-    static_transforms_->set(this, transforms);
+    static_broadcaster_->sendTransform(transforms);
   }
 }
 

@@ -15,6 +15,7 @@
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
+#include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "ptz_action_server/PtzState.h"
@@ -25,8 +26,6 @@
 
 namespace ptz_action_server
 {
-class SharedStaticTransforms;
-
 /**
  * \brief Publishes the device's state from a 10 Hz steady timer, whatever the backend does, and hands the samples on.
  *
@@ -94,8 +93,7 @@ private:
   std::vector<geometry_msgs::TransformStamped> joint_transforms_;  ///< of reported_joints_, reused every tick
   TimePoint last_transform_stamp_{};                               ///< of the state the joint tf was last sent for
   std::unique_ptr<tf2_ros::TransformBroadcaster> transform_broadcaster_;
-  /// The process's one latched /tf_static, which carries every camera's fixed joints (see SharedStaticTransforms).
-  std::shared_ptr<SharedStaticTransforms> static_transforms_;
+  std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
   std::unique_ptr<diagnostic_updater::Updater> diagnostics_;
   double state_rate_min_ = 0.0;
   double state_rate_max_ = 0.0;
