@@ -145,6 +145,10 @@ void StatePublisher::onTick()
   {
     hand_over_(tagged);
   }
+  if (tick_hook_)
+  {
+    tick_hook_();
+  }
 }
 
 const JointModel& StatePublisher::joint(Axis axis) const

@@ -84,6 +84,18 @@ struct StatusPoster
 class StatePublisher;
 
 /**
+ * \brief An actionlib server whose status list the node publishes (PtzActionServer::publishStatuses()) instead of a
+ * ros::Timer of its own: actionlib's publishStatus(), protected in its base, made callable.
+ */
+template <class Action>
+class NodeActionServer : public actionlib::ActionServer<Action>
+{
+public:
+  using actionlib::ActionServer<Action>::ActionServer;
+  using actionlib::ActionServerBase<Action>::publishStatus;
+};
+
+/**
  * \brief The ptz_action_server node around one backend.
  *
  * It converts the goals of its actions (looking frames up in tf) and adapts actionlib's goal handles; the
@@ -120,14 +132,18 @@ public:
   }
 
 private:
-  using PtzServer = actionlib::ActionServer<PtzAction>;
-  using PtzRelToServer = actionlib::ActionServer<PtzRelToAction>;
-  using PtzFrameServer = actionlib::ActionServer<PtzFrameAction>;
-  using PtzPresetServer = actionlib::ActionServer<PtzPresetAction>;
+  using PtzServer = NodeActionServer<PtzAction>;
+  using PtzRelToServer = NodeActionServer<PtzRelToAction>;
+  using PtzFrameServer = NodeActionServer<PtzFrameAction>;
+  using PtzPresetServer = NodeActionServer<PtzPresetAction>;
 
   /// The action server of \p kind, not started, with the node's queue sizes and status_list_timeout.
   template <class Action>
-  std::unique_ptr<actionlib::ActionServer<Action>> makeServer(ActionKind kind);
+  std::unique_ptr<NodeActionServer<Action>> makeServer(ActionKind kind);
+  /// Starts the action servers without a status timer each: publishStatuses() publishes their status lists.
+  void startServers();
+  /// On the state thread, every tick: publishes the servers' status lists at actionlib_status_frequency.
+  void publishStatuses();
   template <class Action>
   void onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   template <class Action>
@@ -178,6 +194,9 @@ private:
   };
   std::shared_ptr<ListenerTarget> listener_target_;
   std::atomic<bool> verdict_check_queued_{ false };  ///< an early verdict check waits on the main queue
+  std::atomic<bool> servers_started_{ false };       ///< the action servers are started: their status may go out
+  int status_period_ticks_ = 0;                      ///< state ticks between status lists; 0: none (set before start)
+  int status_ticks_ = 0;                             ///< state ticks so far (state thread)
 
   /// A frame goal held back, neither accepted nor rejected, while a listener that just started hears tf.
   struct WaitingFrameGoal

@@ -58,6 +58,12 @@ public:
   /// Publishes field_of_view on each tick (and serves the zoomed camera_info on this thread). Before start().
   void addFieldOfView(const FieldOfViewSettings& settings);
 
+  /// Calls \p hook on the state thread at the end of every tick. Before start().
+  void setTickHook(std::function<void()> hook)
+  {
+    tick_hook_ = std::move(hook);
+  }
+
   /// Advertises the topics, publishes the static transforms once (with tf on), then starts the timer and spinner.
   void start();
 
@@ -83,6 +89,7 @@ private:
   std::vector<Axis> reported_joints_;  ///< pan and tilt, those the device reports, in joint_states and tf
   const bool publish_tf_;
   const SampleHandler hand_over_;
+  std::function<void()> tick_hook_;
   SystemClock clock_;
 
   // Only the state thread touches these after start().
