@@ -27,6 +27,7 @@ PTZ_APT_PACKAGES=(
   libcurl4-openssl-dev libssl-dev libtinyxml2-dev
   libyaml-cpp-dev
   librviz-dev rviz xvfb libinteractive-markers-dev libstd-srvs-dev libvisualization-msgs-dev
+  libnodelet-dev libnodeletlib-dev libnodeletlib-tools
 )
 
 # A step's heading, with the time of day, so a CI log shows where its time went.

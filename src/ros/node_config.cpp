@@ -60,6 +60,7 @@ NodeConfig NodeConfig::load(const ParamReader& params)
   config.field_of_view = FieldOfViewSettings::load(params);
   config.presets = PresetConfig::load(params);
   config.look_at_clicked_point = LookAtClickedPointConfig::load(params);
+  config.node_name = params.nodeHandle().getNamespace();
   return config;
 }
 

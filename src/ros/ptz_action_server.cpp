@@ -1,7 +1,10 @@
 #include "ptz_action_server/ros/ptz_action_server.h"
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <type_traits>
+#include <vector>
 
 #include <boost/make_shared.hpp>
 #include <tf2/exceptions.h>
@@ -73,7 +76,7 @@ PtzActionServer::~PtzActionServer()
 }
 
 template <class Action>
-std::unique_ptr<actionlib::ActionServer<Action>> PtzActionServer::makeServer(ActionKind kind)
+std::unique_ptr<NodeActionServer<Action>> PtzActionServer::makeServer(ActionKind kind)
 {
   const std::string name = std::string("move_ptz/") + actionName(kind);
   // A storm of goals from several clients must lose none: large actionlib queues, and finished goals leave the
@@ -91,7 +94,7 @@ std::unique_ptr<actionlib::ActionServer<Action>> PtzActionServer::makeServer(Act
   {
     action_handle.setParam("status_list_timeout", config_.status_list_timeout);
   }
-  using Server = actionlib::ActionServer<Action>;
+  using Server = NodeActionServer<Action>;
   return std::make_unique<Server>(
       node_handle_, name, [this, kind](typename Server::GoalHandle handle) { onGoal<Action>(handle, kind); },
       [this, kind](typename Server::GoalHandle handle) { onCancel<Action>(handle, kind); }, false);
@@ -129,7 +132,8 @@ void PtzActionServer::start()
 
   // The 10 Hz state tick on its own thread; its samples reach the supervisor through the main queue.
   state_publisher_ = std::make_unique<StatePublisher>(
-      node_handle_, kinematics_, backend_, *supervisor_, limits_, config_.publish_tf, [this](const GoalSample& sample) {
+      node_handle_, config_.node_name, kinematics_, backend_, *supervisor_, limits_, config_.publish_tf,
+      [this](const GoalSample& sample) {
         node_handle_.getCallbackQueue()->addCallback(
             boost::make_shared<FunctionCallback>([this, sample] { supervisor_->supervise(sample); }),
             reinterpret_cast<uint64_t>(this));
@@ -138,6 +142,7 @@ void PtzActionServer::start()
   {
     state_publisher_->addFieldOfView(config_.field_of_view);
   }
+  state_publisher_->setTickHook([this] { publishStatuses(); });
   state_publisher_->start();
 
   presets_ = std::make_unique<PresetServices>(node_handle_, config_.presets, limits_, backend_);
@@ -152,6 +157,46 @@ void PtzActionServer::start()
   frame_server_ = makeServer<PtzFrameAction>(ActionKind::FRAME);
   track_frame_server_ = makeServer<PtzFrameAction>(ActionKind::TRACK_FRAME);
   preset_server_ = makeServer<PtzPresetAction>(ActionKind::PRESET);
+  startServers();
+  look_at_clicked_point_ = std::make_unique<LookAtClickedPoint>(
+      node_handle_, config_.look_at_clicked_point, [this](const geometry_msgs::PointStamped& point) { lookAt(point); });
+  ROS_INFO("ptz_action_server ready with backend '%s': pan %s; tilt %s; zoom %s; device extras: %s",
+           backend_->name().c_str(), describeAxis(limits_, PAN).c_str(), describeAxis(limits_, TILT).c_str(),
+           describeAxis(limits_, ZOOM).c_str(), describeExtras(limits_).c_str());
+}
+
+void PtzActionServer::startServers()
+{
+  // actionlib gives each server a ros::Timer for its status list (5 Hz by default). roscpp's timer manager costs
+  // more than linearly in the timers of a process: 64 cameras in one nodelet manager made 448 of them, which took
+  // a core. So the servers start without one (actionlib_status_frequency 0 under each action's namespace while
+  // they start) and the state tick publishes their lists at the rate actionlib would have used.
+  double frequency = 5.0;
+  const ros::NodeHandle first(node_handle_, std::string("move_ptz/") + actionName(ActionKind::POSITION_ABS));
+  std::string key;
+  if (!first.getParam("status_frequency", frequency) && first.searchParam("actionlib_status_frequency", key))
+  {
+    first.getParam(key, frequency);
+  }
+  constexpr double STATE_TICK_RATE = 10.0;  // Hz, StatePublisher's
+  status_period_ticks_ =
+      frequency > 0.0 ? std::max(1, static_cast<int>(std::lround(STATE_TICK_RATE / std::min(frequency, 10.0)))) : 0;
+  struct Restore
+  {
+    ros::NodeHandle handle;
+    bool had = false;
+    double value = 0.0;
+  };
+  std::vector<Restore> restores;
+  for (ActionKind kind :
+       { ActionKind::POSITION_ABS, ActionKind::POSITION_REL, ActionKind::VELOCITY, ActionKind::POSITION_ABS_TF,
+         ActionKind::FRAME, ActionKind::TRACK_FRAME, ActionKind::PRESET })
+  {
+    Restore restore{ ros::NodeHandle(node_handle_, std::string("move_ptz/") + actionName(kind)) };
+    restore.had = restore.handle.getParam("actionlib_status_frequency", restore.value);
+    restore.handle.setParam("actionlib_status_frequency", 0.0);
+    restores.push_back(restore);
+  }
   position_abs_server_->start();
   position_rel_server_->start();
   velocity_server_->start();
@@ -159,11 +204,33 @@ void PtzActionServer::start()
   frame_server_->start();
   track_frame_server_->start();
   preset_server_->start();
-  look_at_clicked_point_ = std::make_unique<LookAtClickedPoint>(
-      node_handle_, config_.look_at_clicked_point, [this](const geometry_msgs::PointStamped& point) { lookAt(point); });
-  ROS_INFO("ptz_action_server ready with backend '%s': pan %s; tilt %s; zoom %s; device extras: %s",
-           backend_->name().c_str(), describeAxis(limits_, PAN).c_str(), describeAxis(limits_, TILT).c_str(),
-           describeAxis(limits_, ZOOM).c_str(), describeExtras(limits_).c_str());
+  for (Restore& restore : restores)
+  {
+    if (restore.had)
+    {
+      restore.handle.setParam("actionlib_status_frequency", restore.value);
+    }
+    else
+    {
+      restore.handle.deleteParam("actionlib_status_frequency");
+    }
+  }
+  servers_started_ = true;
+}
+
+void PtzActionServer::publishStatuses()
+{
+  if (!servers_started_ || status_period_ticks_ == 0 || ++status_ticks_ % status_period_ticks_ != 0)
+  {
+    return;
+  }
+  position_abs_server_->publishStatus();
+  position_rel_server_->publishStatus();
+  velocity_server_->publishStatus();
+  position_abs_tf_server_->publishStatus();
+  frame_server_->publishStatus();
+  track_frame_server_->publishStatus();
+  preset_server_->publishStatus();
 }
 
 void PtzActionServer::postStatus(StatusHold::Change change)

@@ -21,10 +21,12 @@ static_assert(static_cast<int>(GoalMode::IDLE) == PtzState::MODE_IDLE &&
               "GoalMode must keep PtzState's mode values");
 }  // namespace
 
-StatePublisher::StatePublisher(const ros::NodeHandle& node_handle, const PtzKinematics& kinematics,
-                               std::shared_ptr<PtzBackend> backend, const GoalSupervisor& supervisor,
-                               const Capabilities& limits, bool publish_tf, SampleHandler hand_over)
+StatePublisher::StatePublisher(const ros::NodeHandle& node_handle, const std::string& node_name,
+                               const PtzKinematics& kinematics, std::shared_ptr<PtzBackend> backend,
+                               const GoalSupervisor& supervisor, const Capabilities& limits, bool publish_tf,
+                               SampleHandler hand_over)
   : node_handle_(node_handle)
+  , node_name_(node_name)
   , kinematics_(kinematics)
   , backend_(std::move(backend))
   , supervisor_(supervisor)
@@ -78,7 +80,7 @@ void StatePublisher::start()
   }
 
   takeWarnings();  // those of the start-up, before the first tick
-  diagnostics_ = std::make_unique<diagnostic_updater::Updater>(node_handle_, ros::NodeHandle("~"));
+  diagnostics_ = std::make_unique<diagnostic_updater::Updater>(node_handle_, ros::NodeHandle(node_name_), node_name_);
   diagnostics_->setHardwareID(backend_->name());
   diagnostics_->add("Backend", this, &StatePublisher::diagnoseBackend);
   state_rate_min_ = STATE_RATE;
@@ -142,6 +144,10 @@ void StatePublisher::onTick()
   if (supervisor_.goalActive())
   {
     hand_over_(tagged);
+  }
+  if (tick_hook_)
+  {
+    tick_hook_();
   }
 }
 

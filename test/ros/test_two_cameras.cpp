@@ -151,9 +151,11 @@ protected:
 
 TEST_F(TwoCamerasTest, NamesDoNotCollide)
 {
+  // As nodelets, both cameras publish from their manager's process (~publisher_node: /cameras).
+  const std::string manager = ros::NodeHandle("~").param<std::string>("publisher_node", "");
   for (const char* ns : { "left", "right" })
   {
-    const std::string node = std::string("/") + ns + "/ptz_action_server";
+    const std::string node = manager.empty() ? std::string("/") + ns + "/ptz_action_server" : manager;
     for (const char* topic : { "ptz_state", "joint_states", "move_ptz/position_abs/status" })
     {
       const std::string name = std::string("/") + ns + "/" + topic;
@@ -212,7 +214,8 @@ TEST_F(TwoCamerasTest, AGoalToOneNeverMovesTheOther)
   PtzState left_after;
   EXPECT_TRUE(waitUntil(
       [&] {
-        return left_.latest(left_after) && left_after.mode == PtzState::MODE_IDLE && std::abs(left_after.pan - 0.8) < 0.006;
+        return left_.latest(left_after) && left_after.mode == PtzState::MODE_IDLE &&
+               std::abs(left_after.pan - 0.8) < 0.006;
       },
       WAIT))
       << "the left camera shows pan " << left_after.pan << ", mode " << int(left_after.mode);
@@ -245,9 +248,7 @@ TEST_F(TwoCamerasTest, TfIsHeardOnlyAroundFrameGoals)
   PtzState state;
   // The result can come before the next 10 Hz state, so the settled pose is awaited.
   EXPECT_TRUE(waitUntil(
-      [&] {
-        return left_.latest(state) && state.mode == PtzState::MODE_IDLE && std::abs(state.pan - M_PI / 2) < 0.05;
-      },
+      [&] { return left_.latest(state) && state.mode == PtzState::MODE_IDLE && std::abs(state.pan - M_PI / 2) < 0.05; },
       WAIT))
       << "the left camera shows pan " << state.pan << ", mode " << int(state.mode);
   EXPECT_LT(state.tilt, 0.0);  // the base is below the camera's tilt axis

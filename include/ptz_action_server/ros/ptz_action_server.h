@@ -51,6 +51,8 @@ struct NodeConfig
   FieldOfViewSettings field_of_view;
   PresetConfig presets;                            ///< the presets file and home
   LookAtClickedPointConfig look_at_clicked_point;  ///< "look here" from rviz
+  /// The node's private namespace (/left/ptz_action_server): its name in the diagnostics, as a process or a nodelet.
+  std::string node_name;
 
   /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
   /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,
@@ -83,6 +85,18 @@ struct StatusPoster
 };
 
 class StatePublisher;
+
+/**
+ * \brief An actionlib server whose status list the node publishes (PtzActionServer::publishStatuses()) instead of a
+ * ros::Timer of its own: actionlib's publishStatus(), protected in its base, made callable.
+ */
+template <class Action>
+class NodeActionServer : public actionlib::ActionServer<Action>
+{
+public:
+  using actionlib::ActionServer<Action>::ActionServer;
+  using actionlib::ActionServerBase<Action>::publishStatus;
+};
 
 /**
  * \brief The ptz_action_server node around one backend.
@@ -121,14 +135,18 @@ public:
   }
 
 private:
-  using PtzServer = actionlib::ActionServer<PtzAction>;
-  using PtzRelToServer = actionlib::ActionServer<PtzRelToAction>;
-  using PtzFrameServer = actionlib::ActionServer<PtzFrameAction>;
-  using PtzPresetServer = actionlib::ActionServer<PtzPresetAction>;
+  using PtzServer = NodeActionServer<PtzAction>;
+  using PtzRelToServer = NodeActionServer<PtzRelToAction>;
+  using PtzFrameServer = NodeActionServer<PtzFrameAction>;
+  using PtzPresetServer = NodeActionServer<PtzPresetAction>;
 
   /// The action server of \p kind, not started, with the node's queue sizes and status_list_timeout.
   template <class Action>
-  std::unique_ptr<actionlib::ActionServer<Action>> makeServer(ActionKind kind);
+  std::unique_ptr<NodeActionServer<Action>> makeServer(ActionKind kind);
+  /// Starts the action servers without a status timer each: publishStatuses() publishes their status lists.
+  void startServers();
+  /// On the state thread, every tick: publishes the servers' status lists at actionlib_status_frequency.
+  void publishStatuses();
   template <class Action>
   void onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   template <class Action>
@@ -183,6 +201,9 @@ private:
   };
   std::shared_ptr<ListenerTarget> listener_target_;
   std::atomic<bool> verdict_check_queued_{ false };  ///< an early verdict check waits on the main queue
+  std::atomic<bool> servers_started_{ false };       ///< the action servers are started: their status may go out
+  int status_period_ticks_ = 0;                      ///< state ticks between status lists; 0: none (set before start)
+  int status_ticks_ = 0;                             ///< state ticks so far (state thread)
 
   /// A frame goal held back, neither accepted nor rejected, while a listener that just started hears tf.
   struct WaitingFrameGoal

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -43,8 +44,9 @@ public:
   using SampleHandler = std::function<void(const GoalSample&)>;
 
   /// \p supervisor must outlive the publisher; only its thread-safe sample(), mode() and goalActive() are used.
-  /// \p limits are the node's (the device's capabilities within the URDF's limits).
-  StatePublisher(const ros::NodeHandle& node_handle, const PtzKinematics& kinematics,
+  /// \p limits are the node's (the device's capabilities within the URDF's limits). \p node_name is the node's
+  /// private namespace (/left/ptz_action_server): it names the diagnostics, whether the node is a process or a nodelet.
+  StatePublisher(const ros::NodeHandle& node_handle, const std::string& node_name, const PtzKinematics& kinematics,
                  std::shared_ptr<PtzBackend> backend, const GoalSupervisor& supervisor, const Capabilities& limits,
                  bool publish_tf, SampleHandler hand_over);
   /// Stops the timer and its spinner: once it returns, the handler is not called any more.
@@ -55,6 +57,12 @@ public:
 
   /// Publishes field_of_view on each tick (and serves the zoomed camera_info on this thread). Before start().
   void addFieldOfView(const FieldOfViewSettings& settings);
+
+  /// Calls \p hook on the state thread at the end of every tick. Before start().
+  void setTickHook(std::function<void()> hook)
+  {
+    tick_hook_ = std::move(hook);
+  }
 
   /// Advertises the topics, publishes the static transforms once (with tf on), then starts the timer and spinner.
   void start();
@@ -73,6 +81,7 @@ private:
 
   ros::CallbackQueue queue_;     ///< declared first: everything below registers on it
   ros::NodeHandle node_handle_;  ///< the node's namespace, on queue_
+  const std::string node_name_;  ///< the node's private namespace
   PtzKinematics kinematics_;
   std::shared_ptr<PtzBackend> backend_;
   const GoalSupervisor& supervisor_;
@@ -80,6 +89,7 @@ private:
   std::vector<Axis> reported_joints_;  ///< pan and tilt, those the device reports, in joint_states and tf
   const bool publish_tf_;
   const SampleHandler hand_over_;
+  std::function<void()> tick_hook_;
   SystemClock clock_;
 
   // Only the state thread touches these after start().
