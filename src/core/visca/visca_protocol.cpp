@@ -327,6 +327,7 @@ void ViscaProtocol::handleAnswer(const visca::Reply& reply)
     polled_[PAN] = settings_.model.fromSteps(PAN, pan);
     polled_[TILT] = settings_.model.fromSteps(TILT, tilt);
     session_.reportAlive();
+    pan_tilt_answered_ = true;
     if (settings_.model.has_zoom)
     {
       return;  // the zoom answer completes the state
@@ -346,7 +347,11 @@ void ViscaProtocol::handleAnswer(const visca::Reply& reply)
     return;
   }
   session_.ready();
-  session_.reportState(polled_);
+  if (pan_tilt_answered_)  // never a pan and tilt left from before a lost answer (a silence)
+  {
+    session_.reportState(polled_);
+  }
+  pan_tilt_answered_ = false;
 }
 
 void ViscaProtocol::handleError(const visca::Reply& reply)

@@ -140,6 +140,7 @@ private:
   std::uint32_t sequence_ = 0;
   std::array<std::optional<SocketUse>, 16> sockets_;
   AxisValues polled_{ { 0.0, 0.0, 1.0 } };
+  bool pan_tilt_answered_ = false;      ///< polled_'s pan and tilt answer this round's inquiry (the zoom completes it)
   std::vector<visca::Packet> packets_;  ///< reused for every read
 };
 
