@@ -30,41 +30,16 @@
 #include <vector>
 
 #include <actionlib_msgs/GoalStatusArray.h>
-#include <ros/network.h>
 #include <ros/ros.h>
-#include <xmlrpcpp/XmlRpcClient.h>
 
 #include "ptz_action_server/PtzActionGoal.h"
 #include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/ros/node_process.h"
+
+using ptz_action_server::pidOfNode;
 
 namespace
 {
-int pidOf(const std::string& name)
-{
-  XmlRpc::XmlRpcValue request;
-  request[0] = ros::this_node::getName();
-  request[1] = name;
-  XmlRpc::XmlRpcValue response;
-  XmlRpc::XmlRpcValue payload;
-  if (!ros::master::execute("lookupNode", request, response, payload, false))
-  {
-    return 0;
-  }
-  std::string host;
-  uint32_t port = 0;
-  if (!ros::network::splitURI(static_cast<std::string>(payload), host, port))
-  {
-    return 0;
-  }
-  XmlRpc::XmlRpcClient client(host.c_str(), static_cast<int>(port), "/");
-  XmlRpc::XmlRpcValue pid_request(ros::this_node::getName());
-  XmlRpc::XmlRpcValue pid_response;
-  if (!client.execute("getPid", pid_request, pid_response) || pid_response.size() < 3)
-  {
-    return 0;
-  }
-  return static_cast<int>(pid_response[2]);
-}
 
 /// utime + stime of \p pid, in clock ticks.
 long cpuTicks(int pid)
@@ -149,7 +124,7 @@ int main(int argc, char** argv)
   std::vector<int> pids;
   for (int index = 3; index < argc; ++index)
   {
-    const int pid = pidOf(argv[index]);
+    const int pid = pidOfNode(argv[index]);
     if (pid <= 0)
     {
       std::fprintf(stderr, "no pid for %s\n", argv[index]);

@@ -23,13 +23,15 @@
 #include <nodelet/NodeletLoad.h>
 #include <nodelet/NodeletUnload.h>
 #include <ros/ros.h>
-#include <ros/network.h>
 #include <ros/topic.h>
-#include <xmlrpcpp/XmlRpcClient.h>
 
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/ros/node_process.h"
 #include "ptz_action_server/ros/ptz_goal.h"
+
+using ptz_action_server::pidOfNode;
+using ptz_action_server::waitUntilWall;
 
 namespace
 {
@@ -43,48 +45,6 @@ constexpr double WAIT = 30.0;  // s: generous, CI is a busy 2-core machine
 constexpr int RELOADS = 20;
 const char* const MANAGER = "/cameras";
 const char* const SPARE = "/spare/ptz_action_server";
-
-bool waitUntil(const std::function<bool()>& condition, double timeout)
-{
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(timeout);
-  while (!condition())
-  {
-    if (ros::WallTime::now() > deadline)
-    {
-      return false;
-    }
-    ros::WallDuration(0.02).sleep();
-  }
-  return true;
-}
-
-/// The pid of the node \p name, asked of the node itself through its XML-RPC API; 0 if it cannot be reached.
-int pidOf(const std::string& name)
-{
-  XmlRpc::XmlRpcValue request;
-  request[0] = ros::this_node::getName();
-  request[1] = name;
-  XmlRpc::XmlRpcValue response;
-  XmlRpc::XmlRpcValue payload;
-  if (!ros::master::execute("lookupNode", request, response, payload, false))
-  {
-    return 0;
-  }
-  std::string host;
-  uint32_t port = 0;
-  if (!ros::network::splitURI(static_cast<std::string>(payload), host, port))
-  {
-    return 0;
-  }
-  XmlRpc::XmlRpcClient client(host.c_str(), static_cast<int>(port), "/");
-  XmlRpc::XmlRpcValue pid_request(ros::this_node::getName());
-  XmlRpc::XmlRpcValue pid_response;
-  if (!client.execute("getPid", pid_request, pid_response) || pid_response.size() < 3)
-  {
-    return 0;
-  }
-  return static_cast<int>(pid_response[2]);
-}
 
 /// Entries of /proc/PID/\p what (task: threads, fd: open files and sockets), or -1.
 int countEntries(int pid, const char* what)
@@ -186,7 +146,7 @@ protected:
   {
     ASSERT_TRUE(ros::service::waitForService(std::string(MANAGER) + "/load_nodelet", ros::Duration(WAIT)));
     ASSERT_TRUE(left_client_.waitForServer(ros::Duration(WAIT)));
-    ASSERT_TRUE(waitUntil([&] { return left_.received() > 0; }, WAIT)) << "no ptz_state from the left camera";
+    ASSERT_TRUE(waitUntilWall([&] { return left_.received() > 0; }, WAIT)) << "no ptz_state from the left camera";
     const std::vector<std::string> loaded = loadedNodelets();
     if (std::find(loaded.begin(), loaded.end(), SPARE) == loaded.end())
     {
@@ -199,7 +159,7 @@ protected:
   void startSpareGoal(double pan)
   {
     spare_client_.sendGoal(makePtzGoal(pan, 0.0, 1.0));
-    ASSERT_TRUE(waitUntil([&] { return spare_client_.getState() == State::ACTIVE; }, WAIT))
+    ASSERT_TRUE(waitUntilWall([&] { return spare_client_.getState() == State::ACTIVE; }, WAIT))
         << spare_client_.getState().toString();
   }
 
@@ -211,10 +171,10 @@ protected:
 
 TEST_F(NodeletReloadTest, UnloadingOneCameraLeavesTheOtherServing)
 {
-  ASSERT_TRUE(waitUntil([&] { return spare_.received() > 0; }, WAIT)) << "no ptz_state from the spare camera";
+  ASSERT_TRUE(waitUntilWall([&] { return spare_.received() > 0; }, WAIT)) << "no ptz_state from the spare camera";
   startSpareGoal(1.5);
   ASSERT_TRUE(unloadSpare());
-  EXPECT_TRUE(waitUntil([&] { return !spare_client_.isServerConnected(); }, WAIT)) << "the spare still serves";
+  EXPECT_TRUE(waitUntilWall([&] { return !spare_client_.isServerConnected(); }, WAIT)) << "the spare still serves";
   const std::vector<std::string> loaded = loadedNodelets();
   EXPECT_EQ(std::count(loaded.begin(), loaded.end(), SPARE), 0);
 
@@ -223,7 +183,7 @@ TEST_F(NodeletReloadTest, UnloadingOneCameraLeavesTheOtherServing)
   left_client_.sendGoal(makePtzGoal(-0.4, 0.2, 1.0));
   ASSERT_TRUE(left_client_.waitForResult(ros::Duration(WAIT)));
   EXPECT_EQ(left_client_.getState(), State::SUCCEEDED) << left_client_.getState().getText();
-  EXPECT_TRUE(waitUntil([&] { return left_.received() > seen + 5; }, WAIT));
+  EXPECT_TRUE(waitUntilWall([&] { return left_.received() > seen + 5; }, WAIT));
 
   ASSERT_TRUE(loadSpare());  // back for the next test
 }
@@ -232,7 +192,7 @@ TEST_F(NodeletReloadTest, UnloadingOneCameraLeavesTheOtherServing)
 /// its other cameras go on.
 TEST_F(NodeletReloadTest, AMisconfiguredCameraStaysInertAndTheManagerGoesOn)
 {
-  const int manager = pidOf(MANAGER);
+  const int manager = pidOfNode(MANAGER);
   ASSERT_TRUE(load("/broken/ptz_action_server"));
   const std::vector<std::string> loaded = loadedNodelets();
   EXPECT_EQ(std::count(loaded.begin(), loaded.end(), "/broken/ptz_action_server"), 1);
@@ -241,17 +201,17 @@ TEST_F(NodeletReloadTest, AMisconfiguredCameraStaysInertAndTheManagerGoesOn)
   ASSERT_TRUE(left_client_.waitForResult(ros::Duration(WAIT)));
   EXPECT_EQ(left_client_.getState(), State::SUCCEEDED) << left_client_.getState().getText();
   EXPECT_TRUE(unload("/broken/ptz_action_server"));
-  EXPECT_EQ(pidOf(MANAGER), manager);
+  EXPECT_EQ(pidOfNode(MANAGER), manager);
 }
 
 TEST_F(NodeletReloadTest, ReloadingACameraWithGoalsInFlightLeaksNoThreadOrFdAndTheOtherGoesOn)
 {
-  const int manager = pidOf(MANAGER);
+  const int manager = pidOfNode(MANAGER);
   ASSERT_GT(manager, 0) << "cannot find the manager's pid";
   // The baseline: the spare loaded, serving, its goal connections made and one goal done.
   spare_client_.sendGoal(makePtzGoal(0.2, 0.0, 1.0));
   ASSERT_TRUE(spare_client_.waitForResult(ros::Duration(WAIT)));
-  ASSERT_TRUE(waitUntil([&] { return spare_.received() > 0; }, WAIT));
+  ASSERT_TRUE(waitUntilWall([&] { return spare_.received() > 0; }, WAIT));
   const int threads_before = countEntries(manager, "task");
   const int fds_before = countEntries(manager, "fd");
   ASSERT_GT(threads_before, 0);
@@ -266,7 +226,7 @@ TEST_F(NodeletReloadTest, ReloadingACameraWithGoalsInFlightLeaksNoThreadOrFdAndT
     ASSERT_TRUE(loadSpare()) << "round " << round;
     ASSERT_TRUE(spare_client_.waitForServer(ros::Duration(WAIT))) << "round " << round;
   }
-  EXPECT_EQ(pidOf(MANAGER), manager) << "the manager was restarted";
+  EXPECT_EQ(pidOfNode(MANAGER), manager) << "the manager was restarted";
 
   // The spare serves after its last load, and the left camera never stopped.
   spare_client_.sendGoal(makePtzGoal(0.2, 0.0, 1.0));
@@ -281,7 +241,7 @@ TEST_F(NodeletReloadTest, ReloadingACameraWithGoalsInFlightLeaksNoThreadOrFdAndT
   // An unloaded camera's threads are joined and its sockets closed as it goes; the last ones may take a moment.
   int threads_after = 0;
   int fds_after = 0;
-  waitUntil(
+  waitUntilWall(
       [&] {
         threads_after = countEntries(manager, "task");
         fds_after = countEntries(manager, "fd");

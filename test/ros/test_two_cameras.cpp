@@ -22,7 +22,10 @@
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/PtzFrameAction.h"
 #include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/ros/node_process.h"
 #include "ptz_action_server/ros/ptz_goal.h"
+
+using ptz_action_server::waitUntilWall;
 
 namespace
 {
@@ -33,21 +36,6 @@ using ptz_action_server::PtzState;
 using State = actionlib::SimpleClientGoalState;
 
 constexpr double WAIT = 30.0;  // s: generous, CI is a busy 2-core machine
-
-/// Waits until \p condition holds or \p timeout passes, checking every 20 ms.
-bool waitUntil(const std::function<bool()>& condition, double timeout)
-{
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(timeout);
-  while (!condition())
-  {
-    if (ros::WallTime::now() > deadline)
-    {
-      return false;
-    }
-    ros::WallDuration(0.02).sleep();
-  }
-  return true;
-}
 
 /// The nodes the master lists as publishers (index 0) or subscribers (index 1) of \p topic.
 std::set<std::string> nodesOn(const std::string& topic, int index)
@@ -138,7 +126,7 @@ protected:
     ASSERT_TRUE(right_absolute_.waitForServer(ros::Duration(WAIT)));
     ASSERT_TRUE(left_frame_.waitForServer(ros::Duration(WAIT)));
     PtzState state;
-    ASSERT_TRUE(waitUntil([&] { return left_.latest(state) && right_.latest(state); }, WAIT)) << "no ptz_state";
+    ASSERT_TRUE(waitUntilWall([&] { return left_.latest(state) && right_.latest(state); }, WAIT)) << "no ptz_state";
   }
 
   static inline Cameras* cameras_ = nullptr;
@@ -162,7 +150,7 @@ TEST_F(TwoCamerasTest, NamesDoNotCollide)
       EXPECT_EQ(nodesOn(name, 0), std::set<std::string>{ node }) << name << " has other publishers";
     }
   }
-  ASSERT_TRUE(waitUntil([&] { return left_.all().size() > 1 && right_.all().size() > 1; }, WAIT));
+  ASSERT_TRUE(waitUntilWall([&] { return left_.all().size() > 1 && right_.all().size() > 1; }, WAIT));
   {
     std::lock_guard<std::mutex> lock(left_.mutex);
     EXPECT_EQ(left_.joint_names, (std::vector<std::string>{ "left_ptz_pan_joint", "left_ptz_tilt_joint" }));
@@ -193,7 +181,7 @@ TEST_F(TwoCamerasTest, NamesDoNotCollide)
           statuses.insert(status.name.substr(0, status.name.find(':')));
         }
       });
-  EXPECT_TRUE(waitUntil(
+  EXPECT_TRUE(waitUntilWall(
       [&] {
         std::lock_guard<std::mutex> lock(mutex);
         return statuses.count("left/ptz_action_server") > 0 && statuses.count("right/ptz_action_server") > 0;
@@ -209,10 +197,10 @@ TEST_F(TwoCamerasTest, AGoalToOneNeverMovesTheOther)
   left_absolute_.sendGoal(makePtzGoal(0.8, -0.3, 2.0));
   ASSERT_TRUE(left_absolute_.waitForResult(ros::Duration(WAIT)));
   EXPECT_EQ(left_absolute_.getState(), State::SUCCEEDED) << left_absolute_.getState().getText();
-  ASSERT_TRUE(waitUntil([&] { return right_.all().size() > right_seen + 5; }, WAIT));  // the right one went on
+  ASSERT_TRUE(waitUntilWall([&] { return right_.all().size() > right_seen + 5; }, WAIT));  // the right one went on
   // The result can come before the next 10 Hz state, so the left camera's settled pose is awaited, not sampled.
   PtzState left_after;
-  EXPECT_TRUE(waitUntil(
+  EXPECT_TRUE(waitUntilWall(
       [&] {
         return left_.latest(left_after) && left_after.mode == PtzState::MODE_IDLE &&
                std::abs(left_after.pan - 0.8) < 0.006;
@@ -234,7 +222,7 @@ TEST_F(TwoCamerasTest, TfIsHeardOnlyAroundFrameGoals)
 {
   const std::string left_node = "/left/ptz_action_server";
   const std::string right_node = "/right/ptz_action_server";
-  ASSERT_TRUE(waitUntil([&] { return nodesOn("/tf", 1).count(left_node) == 0; }, WAIT)) << "listening while idle";
+  ASSERT_TRUE(waitUntilWall([&] { return nodesOn("/tf", 1).count(left_node) == 0; }, WAIT)) << "listening while idle";
   EXPECT_EQ(nodesOn("/tf", 1).count(right_node), 0u);
   EXPECT_EQ(nodesOn("/tf_static", 1).count(right_node), 0u);
 
@@ -247,7 +235,7 @@ TEST_F(TwoCamerasTest, TfIsHeardOnlyAroundFrameGoals)
   ASSERT_EQ(left_frame_.getState(), State::SUCCEEDED) << left_frame_.getState().getText();
   PtzState state;
   // The result can come before the next 10 Hz state, so the settled pose is awaited.
-  EXPECT_TRUE(waitUntil(
+  EXPECT_TRUE(waitUntilWall(
       [&] { return left_.latest(state) && state.mode == PtzState::MODE_IDLE && std::abs(state.pan - M_PI / 2) < 0.05; },
       WAIT))
       << "the left camera shows pan " << state.pan << ", mode " << int(state.mode);
@@ -255,8 +243,8 @@ TEST_F(TwoCamerasTest, TfIsHeardOnlyAroundFrameGoals)
 
   EXPECT_EQ(nodesOn("/tf", 1).count(left_node), 1u) << "the listener went too soon";
   EXPECT_EQ(nodesOn("/tf", 1).count(right_node), 0u);
-  EXPECT_TRUE(waitUntil([&] { return nodesOn("/tf", 1).count(left_node) == 0; }, WAIT)) << "still listening after "
-                                                                                           "frame_listen_time";
+  EXPECT_TRUE(waitUntilWall([&] { return nodesOn("/tf", 1).count(left_node) == 0; }, WAIT)) << "still listening after "
+                                                                                               "frame_listen_time";
 }
 }  // namespace
 
