@@ -83,13 +83,14 @@ void readHttpLink(const ParamReader& params, LinkConfig& link)
   HttpLinkConfig& http = link.http;
   link.host = params.text("host", link.host);
   http.tls = params.flag("tls", http.tls);
-  // "https://camera" says tls itself; a scheme that contradicts `tls` is an error, never a quiet choice of one.
+  // "https://camera" turns tls on (whatever `tls` says: config/*.yaml set it false); "http://camera" with tls on is
+  // an error, never a quiet downgrade.
   for (const bool secure : { true, false })
   {
     const std::string scheme = secure ? "https://" : "http://";
     if (link.host.rfind(scheme, 0) == 0)
     {
-      if (params.has("tls") && http.tls != secure)
+      if (!secure && http.tls)
       {
         throw ConfigError("parameter " + params.resolve("host") + " = '" + link.host + "' contradicts " +
                           params.resolve("tls") + " = " + (http.tls ? "true" : "false"));
@@ -97,6 +98,11 @@ void readHttpLink(const ParamReader& params, LinkConfig& link)
       http.tls = secure;
       link.host = link.host.substr(scheme.size());
       link.host = link.host.substr(0, link.host.find('/'));
+      if (link.host.find(':') != std::string::npos)
+      {
+        throw ConfigError("parameter " + params.resolve("host") + " = '" + scheme + link.host + "': give the port in " +
+                          params.resolve("port"));
+      }
     }
   }
   const int port = params.integer("port", 0, 0, 65535);
