@@ -1,15 +1,25 @@
 #include "ptz_action_server/emulators/http_camera_server.h"
 
+#include <openssl/bio.h>
+#include <openssl/evp.h>
+#include <openssl/pem.h>
+#include <openssl/x509.h>
+#include <openssl/x509v3.h>
+
+#include <fstream>
 #include <future>
 #include <map>
 #include <random>
+#include <stdexcept>
 
 #include <boost/asio/post.hpp>
+#include <boost/asio/ssl/stream.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core/flat_buffer.hpp>
 #include <boost/beast/http.hpp>
 
 #include "ptz_action_server/core/http/crypto.h"
+#include "ptz_action_server/core/transport/http_link.h"
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
 
@@ -60,6 +70,99 @@ const char* reasonOf(unsigned status)
 {
   return http::obsolete_reason(static_cast<http::status>(status)).data();
 }
+
+/// A key and a self-signed certificate made at start, as PEM, with the certificate's SHA-256.
+struct Credentials
+{
+  std::string certificate_pem;
+  std::string key_pem;
+  std::string fingerprint;  ///< "AB:CD:..."
+};
+
+template <typename T, void (*Free)(T*)>
+struct OpenSslFree
+{
+  void operator()(T* pointer) const
+  {
+    Free(pointer);
+  }
+};
+using KeyPointer = std::unique_ptr<EVP_PKEY, OpenSslFree<EVP_PKEY, EVP_PKEY_free>>;
+using CertificatePointer = std::unique_ptr<X509, OpenSslFree<X509, X509_free>>;
+using BioPointer = std::unique_ptr<BIO, OpenSslFree<BIO, BIO_free_all>>;
+using ExtensionPointer = std::unique_ptr<X509_EXTENSION, OpenSslFree<X509_EXTENSION, X509_EXTENSION_free>>;
+
+void check(bool ok, const char* what)
+{
+  if (!ok)
+  {
+    throw std::runtime_error(std::string("the emulated camera cannot make its TLS certificate: ") + what);
+  }
+}
+
+std::string pemOf(const std::function<int(BIO*)>& write)
+{
+  BioPointer bio(BIO_new(BIO_s_mem()));
+  check(bio != nullptr && write(bio.get()) == 1, "PEM");
+  char* data = nullptr;
+  const long size = BIO_get_mem_data(bio.get(), &data);
+  return std::string(data, static_cast<std::size_t>(size));
+}
+
+/// An EC P-256 key and a self-signed X.509 v3 certificate for 127.0.0.1, localhost and \p host, valid for a year.
+Credentials makeCredentials(const std::string& host)
+{
+  KeyPointer key(EVP_EC_gen("P-256"));
+  check(key != nullptr, "EC key");
+  CertificatePointer certificate(X509_new());
+  check(certificate != nullptr, "X509_new");
+  X509* cert = certificate.get();
+  X509_set_version(cert, 2);
+  std::random_device random;
+  ASN1_INTEGER_set(X509_get_serialNumber(cert), static_cast<long>(random() & 0x7fffffff));
+  X509_gmtime_adj(X509_getm_notBefore(cert), -3600);
+  X509_gmtime_adj(X509_getm_notAfter(cert), 365L * 24 * 3600);
+  check(X509_set_pubkey(cert, key.get()) == 1, "public key");
+  X509_NAME* name = X509_get_subject_name(cert);
+  X509_NAME_add_entry_by_txt(name, "O", MBSTRING_ASC,
+                             reinterpret_cast<const unsigned char*>("ptz_action_server emulated camera"), -1, -1, 0);
+  X509_NAME_add_entry_by_txt(name, "CN", MBSTRING_ASC, reinterpret_cast<const unsigned char*>("127.0.0.1"), -1, -1, 0);
+  X509_set_issuer_name(cert, name);
+  std::string names = "IP:127.0.0.1,DNS:localhost";
+  boost::system::error_code not_an_address;
+  const auto address = boost::asio::ip::make_address(host, not_an_address);
+  if (!not_an_address && !address.is_unspecified() && host != "127.0.0.1")
+  {
+    names += ",IP:" + host;
+  }
+  X509V3_CTX context;
+  X509V3_set_ctx_nodb(&context);
+  X509V3_set_ctx(&context, cert, cert, nullptr, nullptr, 0);
+  for (const auto& extension : { std::make_pair(NID_basic_constraints, std::string("critical,CA:TRUE")),
+                                 std::make_pair(NID_subject_alt_name, names) })
+  {
+    ExtensionPointer made(X509V3_EXT_conf_nid(nullptr, &context, extension.first, extension.second.c_str()));
+    check(made != nullptr && X509_add_ext(cert, made.get(), -1) == 1, "extension");
+  }
+  check(X509_sign(cert, key.get(), EVP_sha256()) > 0, "signature");
+
+  Credentials credentials;
+  credentials.certificate_pem = pemOf([cert](BIO* bio) { return PEM_write_bio_X509(bio, cert); });
+  credentials.key_pem = pemOf(
+      [&key](BIO* bio) { return PEM_write_bio_PrivateKey(bio, key.get(), nullptr, nullptr, 0, nullptr, nullptr); });
+  unsigned char digest[EVP_MAX_MD_SIZE];
+  unsigned int length = 0;
+  check(X509_digest(cert, EVP_sha256(), digest, &length) == 1, "digest");
+  static const char* const HEX = "0123456789abcdef";
+  std::string hex;
+  for (unsigned int i = 0; i < length; ++i)
+  {
+    hex += HEX[digest[i] >> 4];
+    hex += HEX[digest[i] & 0x0f];
+  }
+  credentials.fingerprint = formatCertificateFingerprint(hex);
+  return credentials;
+}
 }  // namespace
 
 std::string httpDigestResponse(const std::string& username, const std::string& realm, const std::string& password,
@@ -76,36 +179,97 @@ class HttpCameraServer::Connection : public std::enable_shared_from_this<Connect
 {
 public:
   Connection(HttpCameraServer& server, tcp::socket socket)
-    : server_(server), socket_(std::move(socket)), delay_timer_(server.context_)
+    : server_(server)
+    , ssl_context_(server.ssl_context_)
+    , stream_(std::move(socket), *ssl_context_)
+    , delay_timer_(server.context_)
   {
+  }
+
+  /// Plain HTTP: reads at once. TLS: looks at the first byte; a TLS record starts the handshake, anything else is
+  /// plain HTTP sent to the TLS port (read, answered 400, counted).
+  void start()
+  {
+    if (!server_.config_.tls)
+    {
+      read();
+      return;
+    }
+    socket().async_wait(tcp::socket::wait_read, [self = shared_from_this()](const boost::system::error_code& error) {
+      std::uint8_t first = 0;
+      boost::system::error_code peek_error;
+      const std::size_t peeked =
+          error ? 0 : self->socket().receive(boost::asio::buffer(&first, 1), tcp::socket::message_peek, peek_error);
+      if (error || peek_error || peeked == 0)
+      {
+        self->close();
+        return;
+      }
+      if (first != 0x16)  // a TLS handshake record
+      {
+        self->plain_on_tls_ = true;
+        self->read();
+        return;
+      }
+      self->stream_.async_handshake(boost::asio::ssl::stream_base::server,
+                                    [self](const boost::system::error_code& handshake_error) {
+                                      if (handshake_error)
+                                      {
+                                        ++self->server_.counters_.tls_failures;
+                                        self->close();
+                                        return;
+                                      }
+                                      ++self->server_.counters_.tls_handshakes;
+                                      self->tls_ = true;
+                                      self->read();
+                                    });
+    });
   }
 
   void read()
   {
     request_ = {};
-    http::async_read(socket_, buffer_, request_,
-                     [self = shared_from_this()](const boost::system::error_code& error, std::size_t) {
-                       if (error)
-                       {
-                         self->close();
-                         return;
-                       }
-                       self->handle();
-                     });
+    auto done = [self = shared_from_this()](const boost::system::error_code& error, std::size_t) {
+      if (error)
+      {
+        self->close();
+        return;
+      }
+      self->handle();
+    };
+    if (tls_)
+    {
+      http::async_read(stream_, buffer_, request_, std::move(done));
+    }
+    else
+    {
+      http::async_read(socket(), buffer_, request_, std::move(done));
+    }
   }
 
   void close()
   {
     boost::system::error_code ignored;
     delay_timer_.cancel();
-    socket_.shutdown(tcp::socket::shutdown_both, ignored);
-    socket_.close(ignored);
+    socket().shutdown(tcp::socket::shutdown_both, ignored);
+    socket().close(ignored);
     server_.connections_.erase(shared_from_this());
   }
 
 private:
+  tcp::socket& socket()
+  {
+    return stream_.next_layer();
+  }
+
   void handle()
   {
+    if (plain_on_tls_)
+    {
+      ++server_.counters_.plain_requests;  // never served, never logged as the camera's traffic
+      respond(HttpAnswer{ 400, "text/plain", "The plain HTTP request was sent to HTTPS port\r\n" }, "", false, 0.0);
+      return;
+    }
     HttpExchange exchange{ SteadyClock::now(), std::string(request_.method_string()), std::string(request_.target()),
                            request_.body(), 0 };
     ++server_.counters_.requests;
@@ -138,6 +302,11 @@ private:
     }
     exchange.status = answer.status;
     server_.received_.add(exchange);
+    respond(answer, challenge, request_.keep_alive(), delay);
+  }
+
+  void respond(const HttpAnswer& answer, const std::string& challenge, bool keep_alive, double delay)
+  {
     response_ = {};
     response_.version(request_.version());
     response_.result(answer.status);
@@ -151,7 +320,7 @@ private:
       response_.set(http::field::content_type, answer.content_type);
       response_.body() = answer.body;
     }
-    response_.keep_alive(request_.keep_alive());
+    response_.keep_alive(keep_alive);
     response_.prepare_payload();
     if (delay > 0.0)
     {
@@ -169,19 +338,29 @@ private:
 
   void write()
   {
-    http::async_write(socket_, response_,
-                      [self = shared_from_this()](const boost::system::error_code& error, std::size_t) {
-                        if (error || !self->response_.keep_alive())
-                        {
-                          self->close();
-                          return;
-                        }
-                        self->read();
-                      });
+    auto done = [self = shared_from_this()](const boost::system::error_code& error, std::size_t) {
+      if (error || !self->response_.keep_alive())
+      {
+        self->close();
+        return;
+      }
+      self->read();
+    };
+    if (tls_)
+    {
+      http::async_write(stream_, response_, std::move(done));
+    }
+    else
+    {
+      http::async_write(socket(), response_, std::move(done));
+    }
   }
 
   HttpCameraServer& server_;
-  tcp::socket socket_;
+  const std::shared_ptr<boost::asio::ssl::context> ssl_context_;  ///< before stream_, which uses it
+  boost::asio::ssl::stream<tcp::socket> stream_;                  ///< its next layer is the socket; TLS only once tls_
+  bool tls_ = false;           ///< the handshake is done: requests go through stream_
+  bool plain_on_tls_ = false;  ///< plain HTTP on the TLS port
   boost::asio::steady_timer delay_timer_;
   boost::beast::flat_buffer buffer_;
   http::request<http::string_body> request_;
@@ -189,8 +368,16 @@ private:
 };
 
 HttpCameraServer::HttpCameraServer(const HttpCameraServerConfig& config, Handler handler, Open open)
-  : config_(config), handler_(std::move(handler)), open_(std::move(open)), acceptor_(context_)
+  : config_(config)
+  , handler_(std::move(handler))
+  , open_(std::move(open))
+  , ssl_context_(std::make_shared<boost::asio::ssl::context>(boost::asio::ssl::context::tls_server))
+  , acceptor_(context_)
 {
+  if (config.tls)
+  {
+    makeCertificate();
+  }
   port_ = config.port;
   listen();
   nonce_ = newNonce();
@@ -236,7 +423,7 @@ void HttpCameraServer::accept()
     socket.set_option(tcp::no_delay(true));
     auto connection = std::make_shared<Connection>(*this, std::move(socket));
     connections_.insert(connection);
-    connection->read();
+    connection->start();
     accept();
   });
 }
@@ -254,6 +441,60 @@ void HttpCameraServer::runOnServerThread(const std::function<void()>& work)
     done.set_value();
   });
   done.get_future().wait();
+}
+
+void HttpCameraServer::makeCertificate()
+{
+  namespace ssl = boost::asio::ssl;
+  const Credentials credentials = makeCredentials(config_.host);
+  auto context = std::make_shared<ssl::context>(ssl::context::tls_server);
+  context->set_options(ssl::context::default_workarounds | ssl::context::no_sslv2 | ssl::context::no_sslv3 |
+                       ssl::context::no_tlsv1 | ssl::context::no_tlsv1_1);
+  context->use_certificate(boost::asio::buffer(credentials.certificate_pem), ssl::context::pem);
+  context->use_private_key(boost::asio::buffer(credentials.key_pem), ssl::context::pem);
+  ssl_context_ = context;
+  std::lock_guard<std::mutex> lock(mutex_);
+  certificate_pem_ = credentials.certificate_pem;
+  fingerprint_ = credentials.fingerprint;
+}
+
+void HttpCameraServer::renewCertificate()
+{
+  runOnServerThread([this] {
+    makeCertificate();
+    while (!connections_.empty())
+    {
+      (*connections_.begin())->close();
+    }
+  });
+}
+
+std::string HttpCameraServer::fingerprint() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return fingerprint_;
+}
+
+std::string HttpCameraServer::certificatePem() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return certificate_pem_;
+}
+
+std::string HttpCameraServer::url() const
+{
+  return (config_.tls ? "https://" : "http://") + config_.host + ":" + std::to_string(port_);
+}
+
+void HttpCameraServer::writeCertificate(const std::string& path) const
+{
+  std::ofstream file(path);
+  file << certificatePem();
+  file.close();
+  if (!file)
+  {
+    throw std::runtime_error("cannot write the certificate to " + path);
+  }
 }
 
 void HttpCameraServer::setSilent(bool silent)

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <string>
 
+#include "ptz_action_server/core/transport/http_link.h"
+
 namespace ptz_action_server
 {
 namespace
@@ -81,9 +83,65 @@ void readHttpLink(const ParamReader& params, LinkConfig& link)
   HttpLinkConfig& http = link.http;
   link.host = params.text("host", link.host);
   http.tls = params.flag("tls", http.tls);
+  // "https://camera" turns tls on (whatever `tls` says: config/*.yaml set it false); "http://camera" with tls on is
+  // an error, never a quiet downgrade.
+  for (const bool secure : { true, false })
+  {
+    const std::string scheme = secure ? "https://" : "http://";
+    if (link.host.rfind(scheme, 0) == 0)
+    {
+      if (!secure && http.tls)
+      {
+        throw ConfigError("parameter " + params.resolve("host") + " = '" + link.host + "' contradicts " +
+                          params.resolve("tls") + " = " + (http.tls ? "true" : "false"));
+      }
+      http.tls = secure;
+      link.host = link.host.substr(scheme.size());
+      link.host = link.host.substr(0, link.host.find('/'));
+      if (link.host.find(':') != std::string::npos)
+      {
+        throw ConfigError("parameter " + params.resolve("host") + " = '" + scheme + link.host + "': give the port in " +
+                          params.resolve("port"));
+      }
+    }
+  }
   const int port = params.integer("port", 0, 0, 65535);
   link.port = static_cast<std::uint16_t>(port != 0 ? port : (http.tls ? 443 : 80));
-  http.verify_peer = params.flag("verify_peer", http.verify_peer);
+  // tls_verify (verify_peer is its old name)
+  http.verify_peer = params.flag("tls_verify", params.flag("verify_peer", http.verify_peer));
+  http.ca_file = params.text("ca_file", "");
+  const std::string fingerprint = params.text("tls_fingerprint", "");
+  if (!fingerprint.empty())
+  {
+    http.fingerprint = parseCertificateFingerprint(fingerprint);
+    if (http.fingerprint.empty())
+    {
+      throw ConfigError("parameter " + params.resolve("tls_fingerprint") + " = '" + fingerprint +
+                        "' is not a SHA-256 fingerprint (64 hex digits, AB:CD:... or abcd...)");
+    }
+  }
+  const std::string tls_words = params.resolve("tls") + " (or an https:// host)";
+  if (!http.tls && (!http.ca_file.empty() || !http.fingerprint.empty()))
+  {
+    throw ConfigError("parameter " + params.resolve(http.ca_file.empty() ? "tls_fingerprint" : "ca_file") +
+                      " asks for a checked certificate, but " + tls_words +
+                      " is off: the camera would be asked over plain http");
+  }
+  if (!http.ca_file.empty() && !http.fingerprint.empty())
+  {
+    throw ConfigError("parameters " + params.resolve("ca_file") + " and " + params.resolve("tls_fingerprint") +
+                      " are both set: set one (the CA that signed the camera's certificate, or the certificate's "
+                      "own SHA-256)");
+  }
+  if (!http.verify_peer && (!http.ca_file.empty() || !http.fingerprint.empty()))
+  {
+    throw ConfigError("parameter " + params.resolve("tls_verify") + " = false turns off the check that " +
+                      params.resolve(http.ca_file.empty() ? "tls_fingerprint" : "ca_file") + " asks for: set one");
+  }
+  if (!http.ca_file.empty() && !std::ifstream(http.ca_file))
+  {
+    throw ConfigError("parameter " + params.resolve("ca_file") + ": cannot read " + http.ca_file);
+  }
   const std::string auth = params.choice("auth", "digest", { "digest", "basic", "auto", "none" });
   http.auth = auth == "digest" ? HttpAuth::DIGEST :
               auth == "basic"  ? HttpAuth::BASIC :

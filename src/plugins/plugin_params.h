@@ -13,8 +13,9 @@ namespace ptz_action_server
 /// reconnect_min, reconnect_max (s) into \p link.
 void readReconnect(const ParamReader& params, LinkConfig& link);
 
-/// An IP camera's HTTP link: host, port (0: 80, or 443 with tls), tls, verify_peer, auth, username, password (never
-/// printed), request_timeout, connect_timeout, reconnect timing.
+/// An IP camera's HTTP link: host (an http:// or https:// prefix sets tls), port (0: 80, or 443 with tls), tls,
+/// tls_verify (old name verify_peer), ca_file, tls_fingerprint, auth, username, password (never printed),
+/// request_timeout, connect_timeout, reconnect timing.
 void readHttpLink(const ParamReader& params, LinkConfig& link);
 
 /// A serial port: the device path in \p path_name ("port"), baud (standard rates only), reconnect timing.

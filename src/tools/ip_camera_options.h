@@ -20,6 +20,9 @@ constexpr const char* HTTP_OPTIONS_HELP = R"(HTTP options:
   --password TEXT        its password (default pass)
   --auth MODE            digest (default), basic or none
   --nonce-uses N         a digest nonce goes stale after N requests (default 0: never)
+  --tls                  serve https with a self-signed certificate made at start (EC P-256, for 127.0.0.1 and
+                         localhost); prints its SHA-256 fingerprint (the backend's tls_fingerprint)
+  --cert-file PATH       with --tls: write the certificate there, PEM (the backend's ca_file)
 )";
 
 /// The fault options and signals every emulated IP camera takes (after its own options in its usage).
@@ -40,6 +43,7 @@ struct HttpCameraOptions
   bool silent = false;
   double delay = 0.0;
   unsigned error_status = 0;
+  std::string certificate_file;  ///< tls: where to write the certificate ("" = nowhere)
 };
 
 /// The usage of an IP camera program: its own text, then the HTTP options with its default port.
@@ -77,6 +81,14 @@ inline bool parseHttpCameraOption(const std::string& arg, const Value& value, co
   {
     options.http.nonce_uses = static_cast<unsigned>(numberIn(program, value(), arg, 0, 1e9, usage));
   }
+  else if (arg == "--tls")
+  {
+    options.http.tls = true;
+  }
+  else if (arg == "--cert-file")
+  {
+    options.certificate_file = value();
+  }
   else if (arg == "--delay")
   {
     options.delay = number(program, value(), arg, usage);
@@ -96,12 +108,26 @@ inline bool parseHttpCameraOption(const std::string& arg, const Value& value, co
 inline int runHttpCamera(const char* program, const sigset_t& signals, ptz_action_server::HttpCameraServer& server,
                          const HttpCameraOptions& options, const std::string& start_line)
 {
+  if (!options.certificate_file.empty() && !options.http.tls)
+  {
+    std::fprintf(stderr, "%s: --cert-file needs --tls\n", program);
+    return 2;
+  }
   server.setSilent(options.silent);
   server.setDelay(options.delay);
   server.setErrorStatus(options.error_status);
-  std::printf("%s: listening on http://%s:%u (%s, user %s)%s%s\n", program, options.http.host.c_str(), server.port(),
-              start_line.c_str(), options.http.username.c_str(), options.silent ? ", silent" : "",
+  std::printf("%s: listening on %s (%s, user %s)%s%s\n", program, server.url().c_str(), start_line.c_str(),
+              options.http.username.c_str(), options.silent ? ", silent" : "",
               options.error_status != 0 ? ", answering every request with an error status" : "");
+  if (options.http.tls)
+  {
+    std::printf("%s: TLS certificate SHA-256 fingerprint %s\n", program, server.fingerprint().c_str());
+    if (!options.certificate_file.empty())
+    {
+      server.writeCertificate(options.certificate_file);
+      std::printf("%s: certificate written to %s\n", program, options.certificate_file.c_str());
+    }
+  }
   std::fflush(stdout);
   Hooks hooks;
   hooks.set_silent = [&server](bool silent) { server.setSilent(silent); };

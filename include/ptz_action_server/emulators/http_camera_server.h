@@ -1,7 +1,8 @@
 /**
  * \file
  * \brief The HTTP end of the emulated IP cameras: a Boost.Beast server on 127.0.0.1 with keep-alive connections,
- * HTTP Digest (RFC 7616, MD5, qop=auth, nonces that go stale) or Basic authentication, and faults to switch on.
+ * HTTP Digest (RFC 7616, MD5, qop=auth, nonces that go stale) or Basic authentication, faults to switch on, and TLS
+ * (Asio over OpenSSL) with a certificate of its own.
  */
 #pragma once
 
@@ -13,6 +14,7 @@
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/ssl/context.hpp>
 
 #include "ptz_action_server/core/counter.h"
 #include "ptz_action_server/core/transport/link.h"
@@ -31,6 +33,9 @@ struct HttpCameraServerConfig
   std::string username = "root";
   std::string password = "pass";
   unsigned nonce_uses = 0;  ///< a nonce goes stale after this many requests (0: never), as some firmware does
+  /// https: TLS with a self-signed certificate generated at start (an EC P-256 key; names 127.0.0.1, localhost
+  /// and host). A plain-HTTP request on the port is answered 400 and counted, never served.
+  bool tls = false;
 };
 
 /// A request as the server read it.
@@ -58,6 +63,9 @@ struct HttpServerCounters
   Counter requests;             ///< requests read
   Counter challenges;           ///< 401 answers (a request without valid credentials, or a stale nonce)
   Counter refused_credentials;  ///< a wrong user or password (or digest response)
+  Counter tls_handshakes;       ///< tls: handshakes completed
+  Counter tls_failures;         ///< tls: handshakes that failed (the client refused the certificate, or spoke no TLS)
+  Counter plain_requests;       ///< tls: plain-HTTP requests sent to the TLS port (answered 400, never served)
 };
 
 /// RFC 7616 (qop=auth, MD5): the `response` of a Digest Authorization.
@@ -87,6 +95,17 @@ public:
   {
     return port_;
   }
+  /// "https://127.0.0.1:PORT" or "http://...".
+  std::string url() const;
+  /// tls: the SHA-256 of the certificate, "AB:CD:..." (what a client pins); "" without tls.
+  std::string fingerprint() const;
+  /// tls: the certificate, PEM (what a client may trust as its CA file); "" without tls.
+  std::string certificatePem() const;
+  /// Writes certificatePem() to \p path. Throws std::runtime_error if it cannot.
+  void writeCertificate(const std::string& path) const;
+  /// tls: makes a new key and certificate (a camera reset to factory, or someone else on its address) and drops every
+  /// connection: the next ones meet the new certificate.
+  void renewCertificate();
   /// Reads requests and never answers them.
   void setSilent(bool silent);
   /// Waits \p seconds before each answer.
@@ -126,6 +145,11 @@ private:
   const HttpCameraServerConfig config_;
   const Handler handler_;
   const Open open_;
+  void makeCertificate();
+
+  std::string certificate_pem_;                             ///< tls only; guarded by mutex_
+  std::string fingerprint_;                                 ///< tls only; guarded by mutex_
+  std::shared_ptr<boost::asio::ssl::context> ssl_context_;  ///< that of new connections (each keeps its own)
   boost::asio::io_context context_;
   boost::asio::ip::tcp::acceptor acceptor_;
   std::uint16_t port_ = 0;
@@ -133,7 +157,7 @@ private:
   ReceivedLog<HttpExchange> received_;
   HttpServerCounters counters_;
 
-  mutable std::mutex mutex_;  ///< guards the fault switches
+  mutable std::mutex mutex_;  ///< guards the fault switches and the certificate's texts
   bool silent_ = false;
   double delay_ = 0.0;
   unsigned error_status_ = 0;

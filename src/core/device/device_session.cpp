@@ -20,6 +20,11 @@ DeviceSession::DeviceSession(const LinkConfig& link, const DeviceSessionConfig& 
   , grace_timer_(context_)
   , motion_(config.settle_window)
 {
+  const std::string link_warning = HttpLink::configWarning(link);  // TLS without verification, once
+  if (!link_warning.empty())
+  {
+    warn(link_warning);
+  }
 }
 
 DeviceSession::~DeviceSession()

@@ -6,7 +6,13 @@
 #include "ptz_action_server/core/transport/http_link.h"
 
 #include <curl/curl.h>
+#include <openssl/evp.h>
+#include <openssl/ssl.h>
+#include <openssl/x509.h>
+#include <openssl/x509_vfy.h>
 
+#include <cctype>
+#include <fstream>
 #include <mutex>
 #include <stdexcept>
 
@@ -40,7 +46,87 @@ long curlAuth(HttpAuth auth)
   }
   return CURLAUTH_NONE;
 }
+
+/// OpenSSL's whole certificate check while a pin is set (SSL_CTX_set_cert_verify_callback): the chain need not be
+/// trusted, the camera's own certificate must have the pinned SHA-256.
+int checkPinnedCertificate(X509_STORE_CTX* store, void* pin_pointer)
+{
+  auto& pin = *static_cast<CertificatePin*>(pin_pointer);
+  X509* certificate = X509_STORE_CTX_get0_cert(store);
+  unsigned char digest[EVP_MAX_MD_SIZE];
+  unsigned int length = 0;
+  if (certificate == nullptr || X509_digest(certificate, EVP_sha256(), digest, &length) != 1)
+  {
+    X509_STORE_CTX_set_error(store, X509_V_ERR_UNSPECIFIED);
+    return 0;
+  }
+  static const char* const HEX = "0123456789abcdef";
+  std::string presented;
+  for (unsigned int i = 0; i < length; ++i)
+  {
+    presented += HEX[digest[i] >> 4];
+    presented += HEX[digest[i] & 0x0f];
+  }
+  if (presented == pin.expected)
+  {
+    pin.presented.clear();
+    X509_STORE_CTX_set_error(store, X509_V_OK);
+    return 1;
+  }
+  pin.presented = presented;
+  X509_STORE_CTX_set_error(store, X509_V_ERR_CERT_REJECTED);
+  return 0;
+}
+
+/// CURLOPT_SSL_CTX_FUNCTION: installs the pin check on the connection's OpenSSL context (before its handshake).
+CURLcode onSslContext(CURL*, void* ssl_context, void* pin)
+{
+  SSL_CTX_set_cert_verify_callback(static_cast<SSL_CTX*>(ssl_context), checkPinnedCertificate, pin);
+  return CURLE_OK;
+}
 }  // namespace
+
+std::string parseCertificateFingerprint(const std::string& text)
+{
+  std::string hex;
+  for (char c : text)
+  {
+    if (std::isxdigit(static_cast<unsigned char>(c)) != 0)
+    {
+      hex += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    else if (c != ':' && c != ' ' && c != '\t')
+    {
+      return "";
+    }
+  }
+  return hex.size() == 64 ? hex : "";
+}
+
+std::string formatCertificateFingerprint(const std::string& hex)
+{
+  std::string text;
+  for (std::size_t i = 0; i < hex.size(); i += 2)
+  {
+    text += (i == 0 ? "" : ":") + hex.substr(i, 2);
+  }
+  for (char& c : text)
+  {
+    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  }
+  return text;
+}
+
+std::string HttpLink::configWarning(const LinkConfig& config)
+{
+  if (config.kind != LinkKind::HTTP || !config.http.tls || config.http.verify_peer)
+  {
+    return "";
+  }
+  return "TLS certificate verification is off (tls_verify: false) for " + config.describe() +
+         ": anyone on the network path can pose as the camera and read what is sent to it; pin its certificate "
+         "instead (tls_fingerprint, the SHA-256 its web page or `openssl s_client` shows)";
+}
 
 HttpLink::HttpLink(boost::asio::io_context& context, const LinkConfig& config, Listener& listener)
   : Link(context, config, listener)
@@ -77,14 +163,91 @@ void HttpLink::configureHandle()
   curl_easy_setopt(curl_, CURLOPT_TCP_NODELAY, 1L);
   curl_easy_setopt(curl_, CURLOPT_TCP_KEEPALIVE, 1L);
   curl_easy_setopt(curl_, CURLOPT_MAXCONNECTS, 1L);  // one camera, one connection
-  curl_easy_setopt(curl_, CURLOPT_SSL_VERIFYPEER, http.verify_peer ? 1L : 0L);
-  curl_easy_setopt(curl_, CURLOPT_SSL_VERIFYHOST, http.verify_peer ? 2L : 0L);
+  configureTls();
   if (http.auth != HttpAuth::NONE)
   {
     curl_easy_setopt(curl_, CURLOPT_HTTPAUTH, curlAuth(http.auth));
     curl_easy_setopt(curl_, CURLOPT_USERNAME, http.username.c_str());
     curl_easy_setopt(curl_, CURLOPT_PASSWORD, http.password.c_str());
   }
+}
+
+void HttpLink::configureTls()
+{
+  const HttpLinkConfig& http = config_.http;
+  // The scheme is the only one this handle speaks: an https camera is never asked over http, whatever happens.
+  if (curl_easy_setopt(curl_, CURLOPT_PROTOCOLS_STR, http.tls ? "https" : "http") != CURLE_OK)
+  {
+    throw ConfigError("this libcurl cannot restrict " + base_url_ + " to its scheme (CURLOPT_PROTOCOLS_STR)");
+  }
+  if (!http.tls)
+  {
+    return;
+  }
+  if (!http.verify_peer && (!http.fingerprint.empty() || !http.ca_file.empty()))
+  {
+    throw ConfigError("TLS verification is off for " + base_url_ + " but a certificate to check is given");
+  }
+  if (!http.fingerprint.empty() && !http.ca_file.empty())
+  {
+    throw ConfigError("both a pinned fingerprint and a ca_file for " + base_url_ + ": give one");
+  }
+  if (!http.verify_peer)
+  {
+    curl_easy_setopt(curl_, CURLOPT_SSL_VERIFYPEER, 0L);
+    curl_easy_setopt(curl_, CURLOPT_SSL_VERIFYHOST, 0L);
+    return;
+  }
+  curl_easy_setopt(curl_, CURLOPT_SSL_VERIFYPEER, 1L);
+  if (!http.fingerprint.empty())
+  {
+    // The pin is the identity: the certificate (self-signed, any name) must be that one, chain and name aside.
+    pin_.expected = parseCertificateFingerprint(http.fingerprint);
+    if (pin_.expected.empty())
+    {
+      throw ConfigError("the pinned fingerprint for " + base_url_ + " is not a SHA-256 (64 hex digits, AB:CD:...)");
+    }
+    curl_easy_setopt(curl_, CURLOPT_SSL_VERIFYHOST, 0L);
+    if (curl_easy_setopt(curl_, CURLOPT_SSL_CTX_FUNCTION, onSslContext) != CURLE_OK ||
+        curl_easy_setopt(curl_, CURLOPT_SSL_CTX_DATA, &pin_) != CURLE_OK)
+    {
+      throw ConfigError("this libcurl cannot check a pinned certificate (it is not built on OpenSSL): " + base_url_);
+    }
+    return;
+  }
+  curl_easy_setopt(curl_, CURLOPT_SSL_VERIFYHOST, 2L);
+  if (!http.ca_file.empty())
+  {
+    if (!std::ifstream(http.ca_file))
+    {
+      throw ConfigError("cannot read the ca_file " + http.ca_file + " for " + base_url_);
+    }
+    curl_easy_setopt(curl_, CURLOPT_CAINFO, http.ca_file.c_str());
+  }
+}
+
+std::string HttpLink::tlsFailure(int code) const
+{
+  const auto result = static_cast<CURLcode>(code);
+  const std::string curl_text = error_buffer_[0] != '\0' ? error_buffer_ : curl_easy_strerror(result);
+  if (!pin_.expected.empty() && !pin_.presented.empty())
+  {
+    return "TLS refused: the camera's certificate has SHA-256 " + formatCertificateFingerprint(pin_.presented) +
+           ", not the pinned tls_fingerprint " + formatCertificateFingerprint(pin_.expected) +
+           " (another camera, a new certificate, or someone in between)";
+  }
+  if (result == CURLE_PEER_FAILED_VERIFICATION)
+  {
+    const std::string& ca_file = config_.http.ca_file;
+    return "TLS refused: the camera's certificate is not trusted" +
+           (ca_file.empty() ? std::string(" by the system's CAs") : " by ca_file " + ca_file) + " (" + curl_text + ")" +
+           (ca_file.empty() ? "; give its CA in ca_file, or pin its SHA-256 in tls_fingerprint" : "");
+  }
+  if (result == CURLE_SSL_CACERT_BADFILE)
+  {
+    return "TLS: cannot use ca_file " + config_.http.ca_file + " (" + curl_text + ")";
+  }
+  return "TLS handshake failed (" + curl_text + ")";
 }
 
 int HttpLink::performOnce(const HttpRequest& request)
@@ -142,6 +305,7 @@ const HttpReply& HttpLink::perform(const HttpRequest& request)
   reply_.delivered = false;
   reply_.status = 0;
   error_buffer_[0] = '\0';
+  pin_.presented.clear();
   if (!isOpen())
   {
     ++counters_.writes_dropped;
@@ -185,10 +349,18 @@ const HttpReply& HttpLink::perform(const HttpRequest& request)
   if (result != CURLE_OK)
   {
     const bool timed_out = result == CURLE_OPERATION_TIMEDOUT;
+    const bool tls_failed =
+        config_.http.tls && (result == CURLE_SSL_CONNECT_ERROR || result == CURLE_PEER_FAILED_VERIFICATION ||
+                             result == CURLE_SSL_CACERT_BADFILE || !pin_.presented.empty());
     ++(timed_out ? http_counters_.timeouts : http_counters_.transport_errors);
-    const std::string detail = timed_out ?
-                                   formatText("no answer within %.2f s", config_.http.request_timeout) :
-                                   std::string(error_buffer_[0] != '\0' ? error_buffer_ : curl_easy_strerror(result));
+    if (tls_failed && (result == CURLE_PEER_FAILED_VERIFICATION || !pin_.presented.empty()))
+    {
+      ++http_counters_.tls_refusals;
+    }
+    const std::string detail =
+        timed_out  ? formatText("no answer within %.2f s", config_.http.request_timeout) :
+        tls_failed ? tlsFailure(result) :
+                     std::string(error_buffer_[0] != '\0' ? error_buffer_ : curl_easy_strerror(result));
     lost(base_url_ + ": " + describe(request) + ": " + detail);
     return reply_;
   }
@@ -219,7 +391,8 @@ void HttpLink::diagnostics(std::vector<DiagnosticValue>& values) const
                       { "http connections opened", http_counters_.connections },
                       { "http error answers (>= 400)", http_counters_.error_statuses },
                       { "http timeouts", http_counters_.timeouts },
-                      { "http transport errors", http_counters_.transport_errors } });
+                      { "http transport errors", http_counters_.transport_errors },
+                      { "tls refused certificates", http_counters_.tls_refusals } });
 }
 
 std::unique_ptr<Link> makeHttpLink(boost::asio::io_context& context, const LinkConfig& config, Link::Listener& listener)

@@ -8,6 +8,7 @@
 #include "device_fixtures_internal.h"
 #include "ptz_action_server/core/axis/axis_protocol.h"
 #include "ptz_action_server/core/onvif/onvif_protocol.h"
+#include "ptz_action_server/core/transport/http_link.h"
 #include "ptz_action_server/core/units.h"
 #include "ptz_action_server/emulators/axis_camera_emulator.h"
 #include "ptz_action_server/emulators/onvif_camera_emulator.h"
@@ -44,7 +45,7 @@ public:
   }
   std::string linkLossWords() const override
   {
-    return "http://127.0.0.1";
+    return server().url().substr(0, server().url().rfind(':'));  // "http://127.0.0.1" or "https://127.0.0.1"
   }
   void clearCommands() override
   {
@@ -57,6 +58,13 @@ public:
 
 protected:
   virtual HttpCameraServer& server() const = 0;
+
+  /// A camera serving TLS is reached over TLS, its certificate pinned (as a self-signed camera is configured).
+  static void pinIfTls(const HttpCameraServer& server, LinkConfig& link)
+  {
+    link.http.tls = !server.fingerprint().empty();
+    link.http.fingerprint = parseCertificateFingerprint(server.fingerprint());
+  }
 };
 
 // ---------------------------------------------------------------- Axis (VAPIX)
@@ -75,6 +83,7 @@ public:
     config_.link.http.username = "root";
     config_.link.http.password = "pass";
     config_.link.http.request_timeout = 2.0;  // longer than the state timeout: silence is seen as silence
+    pinIfTls(emulator_->server(), config_.link);
     config_.session.state_timeout = TEST_STATE_TIMEOUT;
   }
 
@@ -160,6 +169,14 @@ private:
 /// `Error:` / `query: unknown value: attributes`), MinZoom=1 and MaxZoom=9999 in the limits, zoom, iris, focus,
 /// brightness, autofocus and autoiris in the position; a Q6155-E with a 30X lens, whose family the backend guesses
 /// 30X for: the guess and the lens agree, so zoom goals reach their X.
+/// The emulator's own Axis camera over https (its certificate pinned).
+AxisCameraEmulatorConfig axisTlsCamera()
+{
+  AxisCameraEmulatorConfig camera;
+  camera.http.tls = true;
+  return camera;
+}
+
 AxisCameraEmulatorConfig axisFieldCamera()
 {
   AxisCameraEmulatorConfig camera;
@@ -204,10 +221,11 @@ void skipIfUnsupported(const Unsupported& unsupported)
 class OnvifFixture : public HttpCameraFixture
 {
 public:
-  explicit OnvifFixture(const std::vector<std::string>& modes, Unsupported unsupported = {})
+  explicit OnvifFixture(const std::vector<std::string>& modes, Unsupported unsupported = {}, bool tls = false)
     : unsupported_(std::move(unsupported))
   {
     OnvifCameraEmulatorConfig camera;
+    camera.http.tls = tls;
     for (const std::string& mode : modes)
     {
       EXPECT_TRUE(camera.applyMode(mode)) << mode;
@@ -222,6 +240,7 @@ public:
     config_.link.http.username = camera.username;
     config_.link.http.password = camera.password;
     config_.link.http.request_timeout = 2.0;
+    pinIfTls(emulator_->server(), config_.link);
     config_.onvif.username = camera.username;
     config_.onvif.password = camera.password;
     config_.session.state_timeout = TEST_STATE_TIMEOUT;
@@ -325,9 +344,11 @@ std::vector<FixtureMaker> ipCameraFixtures()
   using Modes = std::vector<std::string>;
   return {
     { "AxisHttpDigest", [] { return std::make_unique<AxisFixture>(); } },
+    { "AxisHttpsPinned", [] { return std::make_unique<AxisFixture>(axisTlsCamera()); } },
     { "AxisFieldNoZoomAttributes",
       [] { return std::make_unique<AxisFixture>(axisFieldCamera(), vapix::ZoomTable::linear(30.0)); } },
     { "OnvifDegreeSpace", [] { return std::make_unique<OnvifFixture>(Modes{ "standard" }); } },
+    { "OnvifHttpsPinned", [] { return std::make_unique<OnvifFixture>(Modes{ "standard" }, Unsupported{}, true); } },
     { "OnvifGenericSpace", [] { return std::make_unique<OnvifFixture>(Modes{ "generic-only" }); } },
     // The field's cameras (README, ONVIF): each mode as the emulator plays it.
     { "OnvifDegreesListedGenericStatus", [] { return std::make_unique<OnvifFixture>(Modes{ "generic-status" }); } },

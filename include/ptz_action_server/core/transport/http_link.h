@@ -44,6 +44,20 @@ struct HttpCounters
   Counter error_statuses;    ///< answers with a status >= 400
   Counter timeouts;          ///< requests that hit request_timeout
   Counter transport_errors;  ///< refused, reset, unresolvable, TLS failures
+  Counter tls_refusals;      ///< TLS connections refused: the camera's certificate was untrusted or not the pinned one
+};
+
+/// "AB:CD:..." (any case, with or without colons, spaces allowed around) as 64 lower-case hex digits; "" if \p text is
+/// not a SHA-256 fingerprint.
+std::string parseCertificateFingerprint(const std::string& text);
+/// 64 hex digits as "AB:CD:...", the form browsers and `openssl x509 -fingerprint -sha256` print.
+std::string formatCertificateFingerprint(const std::string& hex);
+
+/// A pinned certificate: what the check wants and what the camera last presented.
+struct CertificatePin
+{
+  std::string expected;   ///< 64 lower-case hex digits ("" = no pin)
+  std::string presented;  ///< the SHA-256 of the certificate the last handshake saw, if it did not match
 };
 
 /**
@@ -72,6 +86,9 @@ public:
   }
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 
+  /// The warning a session gives once for \p config: TLS with verification off; "" for none.
+  static std::string configWarning(const LinkConfig& config);
+
 protected:
   void startOpen() override;
   void closeHandle() override;
@@ -83,6 +100,9 @@ protected:
 
 private:
   void configureHandle();
+  void configureTls();
+  /// Why curl's TLS failure \p result happened, in the user's terms (which certificate, which parameter).
+  std::string tlsFailure(int result) const;
   /// curl_easy_perform with the authentication this request may carry (a CURLcode).
   int performOnce(const HttpRequest& request);
 
@@ -94,6 +114,7 @@ private:
   char error_buffer_[256] = {};
   long auth_;                ///< CURLAUTH_* bits to offer (AUTO narrows them to what the camera asked for)
   bool challenged_ = false;  ///< the camera has answered 401 once: it wants HTTP authentication
+  CertificatePin pin_;       ///< the pin and what the camera presented (OpenSSL's verify callback fills it, I/O thread)
   HttpCounters http_counters_;
 };
 

@@ -44,8 +44,12 @@ enum class HttpAuth
 /// The HTTP side of a LinkConfig (kind HTTP). The password is never printed.
 struct HttpLinkConfig
 {
-  bool tls = false;         ///< https instead of http
-  bool verify_peer = true;  ///< tls: check the camera's certificate (self-signed cameras need false)
+  bool tls = false;  ///< https instead of http (never falls back to http)
+  /// tls: check the camera's certificate (against the system's CAs, ca_file, or the pinned fingerprint); false
+  /// takes an explicit tls_verify: false, and the session warns once.
+  bool verify_peer = true;
+  std::string ca_file;      ///< tls: PEM file of the CA(s) (or the self-signed certificate) to trust instead
+  std::string fingerprint;  ///< tls: the pinned SHA-256 of the camera's certificate, 64 lower-case hex digits
   HttpAuth auth = HttpAuth::DIGEST;
   std::string username;
   std::string password;          ///< never in logs, messages or diagnostics
