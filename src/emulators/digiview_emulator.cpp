@@ -90,6 +90,11 @@ void DigiViewEmulator::setSilent(bool silent)
   silent_ = silent;
 }
 
+void DigiViewEmulator::setEndless(bool endless)
+{
+  endless_ = endless;
+}
+
 void DigiViewEmulator::setRefuse(bool refuse)
 {
   refuse_ = refuse;
@@ -233,6 +238,10 @@ void DigiViewEmulator::reply(const SessionPtr& session, const Message& message)
   if (!config_.fill_checksum)
   {
     bytes[layoutOf(stamped.format).checksum_offset] = 0;
+  }
+  if (endless_)
+  {
+    bytes.assign(bytes.size() - 1, 'A');
   }
   if (session->is_udp)
   {

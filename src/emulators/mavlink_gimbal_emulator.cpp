@@ -203,6 +203,15 @@ void MavlinkGimbalEmulator::setSilent(bool silent)
   }
 }
 
+void MavlinkGimbalEmulator::setEndless(bool endless)
+{
+  endless_ = endless;
+  if (line_)
+  {
+    line_->setEndless(endless);
+  }
+}
+
 void MavlinkGimbalEmulator::setRefuse(bool refuse)
 {
   refuse_ = refuse;
@@ -325,6 +334,11 @@ void MavlinkGimbalEmulator::send(std::uint8_t component, const Message& message)
   if (line_)
   {
     line_->send(frame.data(), frame.size);
+  }
+  else if (has_peer_ && endless_)
+  {
+    const std::vector<std::uint8_t> filler(frame.size, 'A');
+    udp_.sendTo(peer_, filler.data(), filler.size());
   }
   else if (has_peer_)
   {

@@ -95,6 +95,9 @@ public:
   void replug();
 
   void setSilent(bool silent);
+  /// Endless: every reply's bytes are replaced by the filler 'A' (no frame starts or ends in it): a reply that never
+  /// ends, at the rate of the real ones. Off again, the device answers as before.
+  void setEndless(bool endless);
   void setDropRatio(double ratio);
   void setReplyDelay(double seconds);
 
@@ -139,6 +142,7 @@ private:
 
   std::atomic<bool> running_{ true };
   std::atomic<bool> silent_{ false };
+  std::atomic<bool> endless_{ false };
   std::atomic<double> drop_ratio_{ 0.0 };
   std::atomic<double> reply_delay_{ 0.0 };
 

@@ -21,7 +21,12 @@ namespace
 {
 std::size_t appendBody(char* data, std::size_t size, std::size_t count, void* body)
 {
-  static_cast<std::string*>(body)->append(data, size * count);
+  std::string& kept = *static_cast<std::string*>(body);
+  if (kept.size() + size * count > HttpLink::MAX_ANSWER)
+  {
+    return 0;  // an answer that never ends: curl aborts it (CURLE_WRITE_ERROR)
+  }
+  kept.append(data, size * count);
   return size * count;
 }
 
@@ -185,10 +190,21 @@ const HttpReply& HttpLink::perform(const HttpRequest& request)
   if (result != CURLE_OK)
   {
     const bool timed_out = result == CURLE_OPERATION_TIMEDOUT;
-    ++(timed_out ? http_counters_.timeouts : http_counters_.transport_errors);
-    const std::string detail = timed_out ?
-                                   formatText("no answer within %.2f s", config_.http.request_timeout) :
-                                   std::string(error_buffer_[0] != '\0' ? error_buffer_ : curl_easy_strerror(result));
+    const bool oversized = result == CURLE_WRITE_ERROR;  // only appendBody() fails a write
+    if (oversized)
+    {
+      ++http_counters_.oversized_answers;
+      http_counters_.dropped_bytes += reply_.body.size();
+      reply_.body.clear();
+    }
+    else
+    {
+      ++(timed_out ? http_counters_.timeouts : http_counters_.transport_errors);
+    }
+    const std::string detail =
+        oversized ? formatText("an answer longer than %zu bytes: dropped", MAX_ANSWER) :
+        timed_out ? formatText("no answer within %.2f s", config_.http.request_timeout) :
+                    std::string(error_buffer_[0] != '\0' ? error_buffer_ : curl_easy_strerror(result));
     lost(base_url_ + ": " + describe(request) + ": " + detail);
     return reply_;
   }
@@ -219,7 +235,9 @@ void HttpLink::diagnostics(std::vector<DiagnosticValue>& values) const
                       { "http connections opened", http_counters_.connections },
                       { "http error answers (>= 400)", http_counters_.error_statuses },
                       { "http timeouts", http_counters_.timeouts },
-                      { "http transport errors", http_counters_.transport_errors } });
+                      { "http transport errors", http_counters_.transport_errors },
+                      { "http answers too long (dropped)", http_counters_.oversized_answers },
+                      { "http answer bytes dropped", http_counters_.dropped_bytes } });
 }
 
 std::unique_ptr<Link> makeHttpLink(boost::asio::io_context& context, const LinkConfig& config, Link::Listener& listener)

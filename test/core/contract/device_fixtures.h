@@ -78,6 +78,13 @@ public:
     (void)faults;
     return false;
   }
+  /// Makes every reply of the device one that never ends (bytes without a terminator or a frame: see
+  /// DevicePort::setEndless()), or ends them again; false when this emulator cannot (the case skips).
+  virtual bool setEndlessReplies(bool endless)
+  {
+    (void)endless;
+    return false;
+  }
   /// Makes the emulated device accept every command and silently ignore \p axis from now on (it stays where it is),
   /// or obey it again (setFaults()).
   bool ignoreAxis(Axis axis, bool ignore);

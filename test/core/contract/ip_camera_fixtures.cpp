@@ -26,6 +26,11 @@ public:
   {
     server().setSilent(silent);
   }
+  bool setEndlessReplies(bool endless) override
+  {
+    server().setEndless(endless);
+    return true;
+  }
   /// The camera vanishes: its connections close and nothing listens (a closed keep-alive connection alone is no
   /// loss on HTTP: the next request opens another).
   void breakLink() override

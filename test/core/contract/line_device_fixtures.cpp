@@ -54,6 +54,11 @@ protected:
   {
     emulator_->port().setSilent(silent);
   }
+  bool setEndlessReplies(bool endless) override
+  {
+    emulator_->port().setEndless(endless);
+    return true;
+  }
   bool setFaults(const SimFaults& faults) override
   {
     emulator_->setFaults(faults);

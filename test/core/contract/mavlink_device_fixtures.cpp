@@ -107,6 +107,11 @@ public:
   {
     emulator_->setSilent(silent);
   }
+  bool setEndlessReplies(bool endless) override
+  {
+    emulator_->setEndless(endless);
+    return true;
+  }
   bool setFaults(const SimFaults& faults) override
   {
     emulator_->setFaults(faults);

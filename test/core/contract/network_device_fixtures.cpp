@@ -101,6 +101,11 @@ public:
   {
     emulator_->setSilent(silent);
   }
+  bool setEndlessReplies(bool endless) override
+  {
+    emulator_->setEndless(endless);
+    return true;
+  }
   bool setFaults(const SimFaults& faults) override
   {
     emulator_->panTilt().setFaults(faults);
@@ -241,6 +246,11 @@ public:
   void setSilent(bool silent) override
   {
     emulator_->setSilent(silent);
+  }
+  bool setEndlessReplies(bool endless) override
+  {
+    emulator_->setEndless(endless);
+    return true;
   }
   bool setFaults(const SimFaults& faults) override
   {

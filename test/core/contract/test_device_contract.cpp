@@ -319,6 +319,38 @@ TEST_P(DeviceContract, AnImpossiblePositionIsNeverBelievedAndAGoalOnItEndsAsLink
   EXPECT_TRUE(waitForRest(target));
 }
 
+TEST_P(DeviceContract, AReplyThatNeverEndsIsDroppedAndCountedAndTheLinkRecovers)
+{
+  const DeviceSession& session = backend_->session();
+  // Bytes thrown away: by the protocol's framing, or (HTTP) with an answer cut at its limit.
+  const auto dropped = [&session] {
+    const HttpCounters* http = session.httpCounters();
+    return session.counters().dropped_bytes.value() + (http != nullptr ? http->dropped_bytes.value() : 0u);
+  };
+  const std::uint64_t before = dropped();
+  const std::uint64_t losses = backend_->sample().link_losses;
+  if (!device_->setEndlessReplies(true))
+  {
+    GTEST_SKIP() << "this emulator cannot send a reply that never ends";
+  }
+  // Nothing the device sends is a reply any more: dropped and counted, and without a state the link is lost.
+  ASSERT_TRUE(waitUntil([&] { return dropped() > before && !backend_->sample().link_up; }, WAIT))
+      << "dropped " << dropped() - before << " bytes, link " << (backend_->sample().link_up ? "up" : "down");
+  EXPECT_GT(backend_->sample().link_losses, losses);
+
+  // Its replies end again: the framing finds them (or the link reopens), and a goal works.
+  ASSERT_TRUE(device_->setEndlessReplies(false));
+  ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT)) << backend_->lastLinkLoss();
+  if (!backend_->capabilities().axes[PAN].feedback)
+  {
+    return;  // a camera without a position cannot show a goal reached: the link up again is what it shows
+  }
+  const AxisValues target = device_->goal(-0.4, 0.1);
+  backend_->goTo(target);
+  EXPECT_TRUE(waitForRest(target)) << "at " << backend_->sample().position[PAN] << "; last loss "
+                                   << backend_->lastLinkLoss();
+}
+
 /// A position goal the node's supervisor runs on the backend, to its end.
 std::string runGoalToItsEnd(PtzBackend& backend, const AxisValues& target, double stall_timeout)
 {

@@ -84,6 +84,11 @@ public:
   {
     emulator_->port().setSilent(silent);
   }
+  bool setEndlessReplies(bool endless) override
+  {
+    emulator_->port().setEndless(endless);
+    return true;
+  }
   bool setFaults(const SimFaults& faults) override
   {
     emulator_->setFaults(faults);

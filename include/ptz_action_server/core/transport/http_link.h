@@ -39,11 +39,13 @@ struct HttpReply
 /// What an HTTP link counts beyond LinkCounters.
 struct HttpCounters
 {
-  Counter requests;          ///< requests made
-  Counter connections;       ///< TCP (or TLS) connections curl had to open: 1 while the camera keeps its connection
-  Counter error_statuses;    ///< answers with a status >= 400
-  Counter timeouts;          ///< requests that hit request_timeout
-  Counter transport_errors;  ///< refused, reset, unresolvable, TLS failures
+  Counter requests;           ///< requests made
+  Counter connections;        ///< TCP (or TLS) connections curl had to open: 1 while the camera keeps its connection
+  Counter error_statuses;     ///< answers with a status >= 400
+  Counter timeouts;           ///< requests that hit request_timeout
+  Counter transport_errors;   ///< refused, reset, unresolvable, TLS failures
+  Counter oversized_answers;  ///< answers past HttpLink::MAX_ANSWER (a body or envelope without end): dropped
+  Counter dropped_bytes;      ///< bytes of those answers received before they were cut
 };
 
 /**
@@ -56,6 +58,10 @@ struct HttpCounters
 class HttpLink : public Link
 {
 public:
+  /// Bytes an answer's body (a VAPIX reply, a SOAP envelope) may have. Past it the answer is cut and dropped, counted
+  /// (HttpCounters::oversized_answers, dropped_bytes), and the link is lost: it reopens on a fresh connection.
+  static constexpr std::size_t MAX_ANSWER = 256 * 1024;
+
   HttpLink(boost::asio::io_context& context, const LinkConfig& config, Listener& listener);
   ~HttpLink() override;
 
