@@ -85,6 +85,12 @@ public:
     (void)endless;
     return false;
   }
+  /// How long the device may take to answer a request before the backend gives up on it (its reply deadline, wire
+  /// time aside), for SimFaults::reply_delay; 0 for devices that push their state unasked (the case skips).
+  virtual double replyDeadline() const
+  {
+    return 0.0;
+  }
   /// Makes the emulated device accept every command and silently ignore \p axis from now on (it stays where it is),
   /// or obey it again (setFaults()).
   bool ignoreAxis(Axis axis, bool ignore);

@@ -54,6 +54,10 @@ protected:
   {
     emulator_->port().setSilent(silent);
   }
+  double replyDeadline() const override
+  {
+    return 0.1;  // the reply timeout's allowance beyond the exchange's wire time (reply_timeout 0)
+  }
   bool setEndlessReplies(bool endless) override
   {
     emulator_->port().setEndless(endless);

@@ -361,6 +361,38 @@ std::string runGoalToItsEnd(PtzBackend& backend, const AxisValues& target, doubl
       goal_supervisor_test::positionGoal(target[PAN], target[TILT], target[ZOOM]), config, WAIT);
 }
 
+TEST_P(DeviceContract, ASlowDeviceWorksWithinItsDeadlineAndPastItEndsTheGoalAsLinkLost)
+{
+  const double deadline = device_->replyDeadline();
+  if (deadline <= 0.0)
+  {
+    GTEST_SKIP() << "no reply deadline to test: the device pushes its state unasked (a slow one is a late report, "
+                    "which the silence cases cover), or see the fixture's replyDeadline() (HTTP cameras)";
+  }
+  // Every answer at 90 % of the deadline: slow, but in time. A goal succeeds.
+  SimFaults slow;
+  slow.reply_delay = 0.9 * deadline;
+  ASSERT_TRUE(device_->setFaults(slow));
+  const AxisValues near = device_->goal(0.3, 0.1);
+  const std::string end = runGoalToItsEnd(*backend_, near, stateTimeout());
+  EXPECT_EQ(end.rfind("SUCCEEDED", 0), 0u) << end << "; last loss " << backend_->lastLinkLoss();
+
+  // Every answer just past the deadline: nothing answers in time, and a goal under way ends as link lost, never as a
+  // stall or a success.
+  ASSERT_TRUE(device_->setFaults(SimFaults()));
+  ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT));
+  const AxisValues far = startLongGoal();
+  GoalMonitorConfig config;
+  config.stall_timeout = stateTimeout();
+  GoalMonitor monitor = monitorFor(far, config);
+  slow.reply_delay = 1.2 * deadline;
+  ASSERT_TRUE(device_->setFaults(slow));
+  const GoalVerdict verdict = superviseUntilFinal(monitor);
+  EXPECT_EQ(verdict.phase, GoalPhase::ABORTED) << verdict.reason;
+  EXPECT_TRUE(verdict.link_lost) << verdict.reason;
+  ASSERT_TRUE(device_->setFaults(SimFaults()));
+}
+
 TEST_P(DeviceContract, ADeviceThatIgnoresAnAxisNeverGetsASucceededForIt)
 {
   const Capabilities capabilities = backend_->capabilities();
