@@ -311,7 +311,10 @@ void DigiViewEmulator::waitSubscription(const SessionPtr& session, const Session
     Message message;
     if (current(subscription.request.param, subscription.request.camera, message))
     {
-      reply(alive, message);
+      for (unsigned copy = 0; copy < flood_; ++copy)
+      {
+        reply(alive, message);
+      }
     }
     subscription.timer->expires_at(subscription.timer->expiry() +
                                    std::chrono::milliseconds(subscription.request.interval_ms));

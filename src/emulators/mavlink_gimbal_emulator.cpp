@@ -430,7 +430,10 @@ void MavlinkGimbalEmulator::sendAttitude(Gimbal& gimbal, TimePoint now)
   attitude.delta_yaw = static_cast<float>(config_.vehicle_yaw);
   // 1..6 when the manager's component sends it for a gimbal inside it; 0 from a gimbal device's own component.
   attitude.gimbal_device_id = gimbal.separate() ? 0 : gimbal.device_id;
-  send(gimbal.attitudeComponent(), attitude);
+  for (unsigned copy = 0; copy < flood_; ++copy)
+  {
+    send(gimbal.attitudeComponent(), attitude);
+  }
 }
 
 // ---------------------------------------------------------------- what the components receive

@@ -274,10 +274,16 @@ void PanTiltEmulator::sendState(const UdpEndpoint& to)
     std::lock_guard<std::mutex> lock(mutex_);
     ++counters_.replies_sent;
   }
-  else if (socket_.sendTo(to, frame, static_cast<std::size_t>(size)))
+  else
   {
-    std::lock_guard<std::mutex> lock(mutex_);
-    ++counters_.replies_sent;
+    for (unsigned copy = 0; copy < flood_; ++copy)
+    {
+      if (socket_.sendTo(to, frame, static_cast<std::size_t>(size)))
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        ++counters_.replies_sent;
+      }
+    }
   }
 }
 

@@ -91,6 +91,13 @@ public:
   {
     return 0.0;
   }
+  /// Makes the device send every state \p copies times (1: normally), a flood; false where it cannot (a device that
+  /// only answers requests, or a serial line, whose baud rate bounds what it carries).
+  virtual bool setFlood(unsigned copies)
+  {
+    (void)copies;
+    return false;
+  }
   /// Makes the emulated device accept every command and silently ignore \p axis from now on (it stays where it is),
   /// or obey it again (setFaults()).
   bool ignoreAxis(Axis axis, bool ignore);

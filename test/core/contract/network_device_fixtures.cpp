@@ -101,6 +101,15 @@ public:
   {
     emulator_->setSilent(silent);
   }
+  bool setFlood(unsigned copies) override
+  {
+    if (emulator_config_.serial)
+    {
+      return false;  // a serial line carries what its baud rate allows: no flood
+    }
+    emulator_->setFlood(copies);
+    return true;
+  }
   bool setEndlessReplies(bool endless) override
   {
     emulator_->setEndless(endless);
@@ -246,6 +255,11 @@ public:
   void setSilent(bool silent) override
   {
     emulator_->setSilent(silent);
+  }
+  bool setFlood(unsigned copies) override
+  {
+    emulator_->setFlood(copies);
+    return true;
   }
   bool setEndlessReplies(bool endless) override
   {

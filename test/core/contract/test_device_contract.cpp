@@ -393,6 +393,29 @@ TEST_P(DeviceContract, ASlowDeviceWorksWithinItsDeadlineAndPastItEndsTheGoalAsLi
   ASSERT_TRUE(device_->setFaults(SimFaults()));
 }
 
+TEST_P(DeviceContract, AFloodOfStatesIsTakenInAsItComesAndAGoalStillSucceeds)
+{
+  constexpr unsigned FLOOD = 100;  ///< every state sent 100 times
+  if (!device_->setFlood(FLOOD))
+  {
+    GTEST_SKIP() << "no flood here: the device answers requests (it sends no more than it is asked), or a serial line "
+                    "carries no more than its baud rate";
+  }
+  const DeviceSession& session = backend_->session();
+  const std::uint64_t reports = session.counters().state_reports.value();
+  const PtzSample before = backend_->sample();
+  const AxisValues target = device_->goal(0.8, 0.1);
+  backend_->goTo(target);
+  EXPECT_TRUE(waitForRest(target)) << "at " << backend_->sample().position[PAN] << "; last loss "
+                                   << backend_->lastLinkLoss();
+  // Every report was read and judged as it came (the session keeps one snapshot: nothing queues), none was taken
+  // for impossible, and the link never fell.
+  EXPECT_GT(session.counters().state_reports.value() - reports, 10u * FLOOD);
+  EXPECT_EQ(backend_->sample().link_losses, before.link_losses) << backend_->lastLinkLoss();
+  EXPECT_EQ(session.counters().impossible_states.value(), 0u);
+  ASSERT_TRUE(device_->setFlood(1));
+}
+
 TEST_P(DeviceContract, ADeviceThatIgnoresAnAxisNeverGetsASucceededForIt)
 {
   const Capabilities capabilities = backend_->capabilities();
