@@ -145,8 +145,11 @@ void AxisCameraEmulator::setRefuse(bool refuse)
 
 void AxisCameraEmulator::setFaults(const SimFaults& faults)
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  model_.setFaults(faults, clock_->now());
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    model_.setFaults(faults, clock_->now());
+  }
+  server_->setDelay(faults.reply_delay);  // a slow camera: every answer waits
 }
 
 HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::string& target, const std::string& body)

@@ -28,6 +28,11 @@ void DevicePort::setGarbleRatio(double ratio)
 
 void DevicePort::garble(std::uint8_t* bytes, std::size_t size)
 {
+  if (endless_)
+  {
+    std::fill(bytes, bytes + size, endless_filler_.load());
+    return;
+  }
   const double ratio = garble_ratio_;
   if (ratio <= 0.0)
   {

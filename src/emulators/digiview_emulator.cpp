@@ -90,6 +90,11 @@ void DigiViewEmulator::setSilent(bool silent)
   silent_ = silent;
 }
 
+void DigiViewEmulator::setEndless(bool endless)
+{
+  endless_ = endless;
+}
+
 void DigiViewEmulator::setRefuse(bool refuse)
 {
   refuse_ = refuse;
@@ -234,6 +239,10 @@ void DigiViewEmulator::reply(const SessionPtr& session, const Message& message)
   {
     bytes[layoutOf(stamped.format).checksum_offset] = 0;
   }
+  if (endless_)
+  {
+    bytes.assign(bytes.size() - 1, 'A');
+  }
   if (session->is_udp)
   {
     auto datagram = std::make_shared<Bytes>(std::move(bytes));
@@ -302,7 +311,10 @@ void DigiViewEmulator::waitSubscription(const SessionPtr& session, const Session
     Message message;
     if (current(subscription.request.param, subscription.request.camera, message))
     {
-      reply(alive, message);
+      for (unsigned copy = 0; copy < flood_; ++copy)
+      {
+        reply(alive, message);
+      }
     }
     subscription.timer->expires_at(subscription.timer->expiry() +
                                    std::chrono::milliseconds(subscription.request.interval_ms));

@@ -274,11 +274,13 @@ private:
                            request_.body(), 0 };
     ++server_.counters_.requests;
     bool silent = false;
+    bool endless = false;
     double delay = 0.0;
     unsigned error_status = 0;
     {
       std::lock_guard<std::mutex> lock(server_.mutex_);
       silent = server_.silent_;
+      endless = server_.endless_;
       delay = server_.delay_;
       error_status = server_.error_status_;
     }
@@ -319,6 +321,11 @@ private:
     {
       response_.set(http::field::content_type, answer.content_type);
       response_.body() = answer.body;
+      if (endless)
+      {
+        response_.body().resize(answer.body.size() / 2);
+        response_.body().append(ENDLESS_BODY, 'A');
+      }
     }
     response_.keep_alive(keep_alive);
     response_.prepare_payload();
@@ -501,6 +508,12 @@ void HttpCameraServer::setSilent(bool silent)
 {
   std::lock_guard<std::mutex> lock(mutex_);
   silent_ = silent;
+}
+
+void HttpCameraServer::setEndless(bool endless)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  endless_ = endless;
 }
 
 void HttpCameraServer::setDelay(double seconds)

@@ -203,6 +203,15 @@ void MavlinkGimbalEmulator::setSilent(bool silent)
   }
 }
 
+void MavlinkGimbalEmulator::setEndless(bool endless)
+{
+  endless_ = endless;
+  if (line_)
+  {
+    line_->setEndless(endless);
+  }
+}
+
 void MavlinkGimbalEmulator::setRefuse(bool refuse)
 {
   refuse_ = refuse;
@@ -326,6 +335,11 @@ void MavlinkGimbalEmulator::send(std::uint8_t component, const Message& message)
   {
     line_->send(frame.data(), frame.size);
   }
+  else if (has_peer_ && endless_)
+  {
+    const std::vector<std::uint8_t> filler(frame.size, 'A');
+    udp_.sendTo(peer_, filler.data(), filler.size());
+  }
   else if (has_peer_)
   {
     udp_.sendTo(peer_, frame.data(), frame.size);
@@ -416,7 +430,10 @@ void MavlinkGimbalEmulator::sendAttitude(Gimbal& gimbal, TimePoint now)
   attitude.delta_yaw = static_cast<float>(config_.vehicle_yaw);
   // 1..6 when the manager's component sends it for a gimbal inside it; 0 from a gimbal device's own component.
   attitude.gimbal_device_id = gimbal.separate() ? 0 : gimbal.device_id;
-  send(gimbal.attitudeComponent(), attitude);
+  for (unsigned copy = 0; copy < flood_; ++copy)
+  {
+    send(gimbal.attitudeComponent(), attitude);
+  }
 }
 
 // ---------------------------------------------------------------- what the components receive

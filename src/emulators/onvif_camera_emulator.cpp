@@ -238,8 +238,11 @@ void OnvifCameraEmulator::setRefuse(bool refuse)
 
 void OnvifCameraEmulator::setFaults(const SimFaults& faults)
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  model_.setFaults(faults, clock_->now());
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    model_.setFaults(faults, clock_->now());
+  }
+  server_->setDelay(faults.reply_delay);  // a slow camera: every answer waits
 }
 
 std::uint64_t OnvifCameraEmulator::refusedTokens() const

@@ -84,6 +84,15 @@ void PanTiltEmulator::setSilent(bool silent)
   silent_ = silent;
 }
 
+void PanTiltEmulator::setEndless(bool endless)
+{
+  endless_ = endless;
+  if (line_)
+  {
+    line_->setEndless(endless);
+  }
+}
+
 void PanTiltEmulator::setDropRatio(double ratio)
 {
   drop_ratio_ = std::clamp(ratio, 0.0, 1.0);
@@ -253,6 +262,10 @@ void PanTiltEmulator::sendState(const UdpEndpoint& to)
   std::uint8_t frame[MAX_PARAMS_FRAME_SIZE];
   int size = 0;
   params.encode(frame, sizeof(frame), size, nullptr, config_.format);
+  if (!line_ && endless_)
+  {
+    std::fill(frame, frame + size, 'A');  // a datagram of noise (on the line, the port fills)
+  }
   if (line_)
   {
     framed_.clear();
@@ -261,10 +274,16 @@ void PanTiltEmulator::sendState(const UdpEndpoint& to)
     std::lock_guard<std::mutex> lock(mutex_);
     ++counters_.replies_sent;
   }
-  else if (socket_.sendTo(to, frame, static_cast<std::size_t>(size)))
+  else
   {
-    std::lock_guard<std::mutex> lock(mutex_);
-    ++counters_.replies_sent;
+    for (unsigned copy = 0; copy < flood_; ++copy)
+    {
+      if (socket_.sendTo(to, frame, static_cast<std::size_t>(size)))
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        ++counters_.replies_sent;
+      }
+    }
   }
 }
 

@@ -193,6 +193,26 @@ TEST(FlirReplies, BinaryJunkAndOverlongLinesNeverBreakTheParser)
   EXPECT_DOUBLE_EQ(replies.back().value, 5.0);
 }
 
+TEST(FlirReplies, AReplyThatNeverEndsIsDroppedAndCountedAndTheNextLineRead)
+{
+  flir::ReplyParser parser;
+  std::vector<flir::Reply> replies;
+  const std::string endless(100, 'A');
+  for (int chunk = 0; chunk < 100; ++chunk)  // 10000 bytes without a line end
+  {
+    parser.feed(reinterpret_cast<const std::uint8_t*>(endless.data()), endless.size(), replies);
+  }
+  ASSERT_EQ(replies.size(), 1u) << "the overlong line is reported once";
+  EXPECT_EQ(replies.front().kind, Kind::TEXT);
+  EXPECT_EQ(parser.droppedBytes(), 10000u);
+  const std::string next = "\r\n* 7\r\n";
+  parser.feed(reinterpret_cast<const std::uint8_t*>(next.data()), next.size(), replies);
+  ASSERT_EQ(replies.size(), 2u);
+  EXPECT_EQ(replies.back().kind, Kind::VALUE);
+  EXPECT_DOUBLE_EQ(replies.back().value, 7.0);
+  EXPECT_EQ(parser.droppedBytes(), 10000u);
+}
+
 TEST(FlirCommands, Text)
 {
   EXPECT_EQ(flir::command("PP", -557), "PP-557 ");

@@ -78,6 +78,16 @@ TEST(Slip, AnOverlongFrameIsDroppedAndTheNextOneSurvives)
   ASSERT_EQ(frames.size(), 1u);
   EXPECT_EQ(frames[0], (Bytes{ 9, 9, 9, 9 }));
   EXPECT_EQ(decoder.counts().overlong, 1u);
+  EXPECT_EQ(decoder.counts().dropped_bytes, 5u);
+}
+
+TEST(Slip, AFrameThatNeverEndsCostsNoMemoryAndIsCounted)
+{
+  slip::Decoder decoder(16);
+  const Bytes endless(10000, 'A');
+  EXPECT_TRUE(decodeAll(decoder, endless).empty());
+  EXPECT_EQ(decoder.counts().overlong, 1u);
+  EXPECT_EQ(decoder.counts().dropped_bytes, 10000u);  // every byte: the 16 held when it was cut, and the rest
 }
 
 TEST(Slip, ResetForgetsAPartialFrame)

@@ -44,6 +44,9 @@ struct SimFaults
   double lag = 0.0;                        ///< seconds between a command and the moment the device acts on it
   /// Added to the position the device reports, not to where it is: a jump, or a place outside its limits.
   AxisValues report_offset{};
+  /// s a device that answers requests takes before each answer (a slow device). Applied by the emulators of
+  /// request/reply protocols (FLIR, Pelco-D, VISCA, Axis, ONVIF); devices that push their state ignore it.
+  double reply_delay = 0.0;
 };
 
 /**

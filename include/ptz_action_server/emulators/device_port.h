@@ -99,6 +99,13 @@ public:
   {
     return bytes_garbled_;
   }
+  /// While \p on, every byte sent is replaced by \p filler (a byte that neither ends nor starts anything in the
+  /// protocol): the device's replies become one reply that never ends, at the rate and size of the real ones.
+  void setEndless(bool on, std::uint8_t filler = 'A')
+  {
+    endless_filler_ = filler;
+    endless_ = on;
+  }
   /// pty: bytes sent while no client had the port open (or leaving after it closed it).
   virtual std::uint64_t bytesLost() const
   {
@@ -112,6 +119,8 @@ protected:
 private:
   std::atomic<bool> silent_{ false };
   std::atomic<double> garble_ratio_{ 0.0 };
+  std::atomic<bool> endless_{ false };
+  std::atomic<std::uint8_t> endless_filler_{ 'A' };
   std::atomic<std::uint64_t> bytes_garbled_{ 0 };
   std::mt19937 random_{ 4242 };
 };

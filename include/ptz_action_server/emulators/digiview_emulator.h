@@ -80,6 +80,15 @@ public:
 
   /// Silent: reads and ignores everything, sends nothing (subscriptions pause).
   void setSilent(bool silent);
+  /// Endless: every reply is replaced by one byte fewer of the filler 'A': on a stream, a message that never ends and
+  /// leaves the stream out of step; in a datagram, noise. Off again, the device answers as before.
+  void setEndless(bool endless);
+  /// Flood: every state the device sends goes out \p copies times (1: normally), as a device that reports far faster
+  /// than it should.
+  void setFlood(unsigned copies)
+  {
+    flood_ = copies < 1 ? 1 : copies;
+  }
   /// Refuse: every SET is answered FORBIDDEN.
   void setRefuse(bool refuse);
   /// Fault hooks of every view's motion model: a stalled axis accepts every command and silently stays where it is.
@@ -128,6 +137,8 @@ private:
   boost::asio::ip::udp::endpoint udp_peer_;
 
   std::atomic<bool> silent_{ false };
+  std::atomic<bool> endless_{ false };
+  std::atomic<unsigned> flood_{ 1 };
   std::atomic<bool> refuse_{ false };
 
   mutable std::mutex mutex_;  ///< guards the models and the session list

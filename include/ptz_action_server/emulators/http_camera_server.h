@@ -108,6 +108,10 @@ public:
   void renewCertificate();
   /// Reads requests and never answers them.
   void setSilent(bool silent);
+  /// Endless: every answer's body is cut half-way and followed by ENDLESS_BODY filler bytes ('A'), more than any
+  /// client should keep: a body or SOAP envelope that never ends. Off again, the answers are whole.
+  void setEndless(bool endless);
+  static constexpr std::size_t ENDLESS_BODY = 512 * 1024;
   /// Waits \p seconds before each answer.
   void setDelay(double seconds);
   /// Answers every request with \p status (e.g. 500) and a short body; 0 = normally.
@@ -159,6 +163,7 @@ private:
 
   mutable std::mutex mutex_;  ///< guards the fault switches and the certificate's texts
   bool silent_ = false;
+  bool endless_ = false;
   double delay_ = 0.0;
   unsigned error_status_ = 0;
 

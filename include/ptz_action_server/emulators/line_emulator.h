@@ -5,9 +5,12 @@
  */
 #pragma once
 
+#include <atomic>
+#include <chrono>
 #include <memory>
 #include <mutex>
 #include <string>
+#include <thread>
 
 #include "ptz_action_server/core/sim_device_model.h"
 #include "ptz_action_server/emulators/device_port.h"
@@ -57,6 +60,7 @@ public:
   {
     std::lock_guard<std::mutex> lock(mutex_);
     model_.setFaults(faults, SteadyClock::now());
+    reply_delay_ = faults.reply_delay;
   }
   /// The port closes, as pulling the cable does (a pseudo-terminal's link disappears; a TCP server stops listening).
   void unplug()
@@ -90,12 +94,32 @@ protected:
   /// Creates the port and starts its thread: the last thing the derived constructor does.
   void openPort(const DevicePortConfig& config, DevicePort::Handlers handlers)
   {
+    // A slow unit (SimFaults::reply_delay) thinks before it reads what came: every answer waits, and so does the
+    // next request, as on a device that handles one request at a time.
+    handlers.on_bytes = [this, on_bytes = std::move(handlers.on_bytes)](const std::uint8_t* data, std::size_t size,
+                                                                        TimePoint arrived_at) {
+      const auto until = SteadyClock::now() + std::chrono::duration_cast<SteadyClock::duration>(
+                                                  std::chrono::duration<double>(reply_delay_.load()));
+      while (SteadyClock::now() < until && !closing_)
+      {
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      }
+      std::lock_guard<std::mutex> lock(handler_mutex_);
+      if (!closing_)  // closePort() may be under way: port_ is going
+      {
+        on_bytes(data, size, arrived_at);
+      }
+    };
     port_ = DevicePort::create(config, std::move(handlers));
     port_->start();
   }
   /// Stops the port's thread: the first thing the derived destructor does.
   void closePort()
   {
+    {
+      std::lock_guard<std::mutex> lock(handler_mutex_);  // waits for a handler under way; none runs after
+      closing_ = true;
+    }
     port_.reset();
   }
 
@@ -103,6 +127,9 @@ protected:
   mutable SimDeviceModel model_;  ///< mutable: sampling applies lagged commands
   ReceivedLog<Item> received_;
   std::unique_ptr<DevicePort> port_;
+  std::atomic<double> reply_delay_{ 0.0 };  ///< s, SimFaults::reply_delay
+  std::atomic<bool> closing_{ false };      ///< closePort() began: no handler runs any more
+  std::mutex handler_mutex_;                ///< held while a received-bytes handler runs
 };
 
 }  // namespace ptz_action_server

@@ -119,6 +119,15 @@ public:
 
   /// Silent: reads and ignores everything, sends nothing.
   void setSilent(bool silent);
+  /// Endless: every reply's bytes are replaced by the filler 'A' (no frame starts or ends in it): a reply that never
+  /// ends, at the rate of the real ones. Off again, the device answers as before.
+  void setEndless(bool endless);
+  /// Flood: every state the device sends goes out \p copies times (1: normally), as a device that reports far faster
+  /// than it should.
+  void setFlood(unsigned copies)
+  {
+    flood_ = copies < 1 ? 1 : copies;
+  }
   /// Refuse: DO_GIMBAL_MANAGER_CONFIGURE and DO_GIMBAL_MANAGER_PITCHYAW are DENIED.
   void setRefuse(bool refuse);
   /// Fault hooks of a gimbal's motion model: a stalled axis accepts every command and silently stays where it is.
@@ -179,6 +188,8 @@ private:
   const std::shared_ptr<const Clock> clock_;
 
   std::atomic<bool> silent_{ false };
+  std::atomic<bool> endless_{ false };
+  std::atomic<unsigned> flood_{ 1 };
   std::atomic<bool> refuse_{ false };
 
   mutable std::mutex mutex_;  ///< guards everything below up to the transports

@@ -95,6 +95,15 @@ public:
   void replug();
 
   void setSilent(bool silent);
+  /// Endless: every reply's bytes are replaced by the filler 'A' (no frame starts or ends in it): a reply that never
+  /// ends, at the rate of the real ones. Off again, the device answers as before.
+  void setEndless(bool endless);
+  /// Flood: every state the device sends goes out \p copies times (1: normally), as a device that reports far faster
+  /// than it should.
+  void setFlood(unsigned copies)
+  {
+    flood_ = copies < 1 ? 1 : copies;
+  }
   void setDropRatio(double ratio);
   void setReplyDelay(double seconds);
 
@@ -139,6 +148,8 @@ private:
 
   std::atomic<bool> running_{ true };
   std::atomic<bool> silent_{ false };
+  std::atomic<bool> endless_{ false };
+  std::atomic<unsigned> flood_{ 1 };
   std::atomic<double> drop_ratio_{ 0.0 };
   std::atomic<double> reply_delay_{ 0.0 };
 

@@ -42,6 +42,12 @@ HttpLink& DeviceSession::http()
   return *http;
 }
 
+const HttpCounters* DeviceSession::httpCounters() const
+{
+  const auto* http = dynamic_cast<const HttpLink*>(link_.get());
+  return http == nullptr ? nullptr : &http->httpCounters();
+}
+
 void DeviceSession::attach(DeviceProtocol& protocol)
 {
   protocol_ = &protocol;
@@ -198,7 +204,8 @@ void DeviceSession::diagnostics(std::vector<DiagnosticValue>& values) const
                       { "link losses", counters_.link_losses },
                       { "recoveries (device held after a loss)", counters_.recoveries },
                       { "faults of replaced commands (ignored)", counters_.stale_faults },
-                      { "impossible states dropped", counters_.impossible_states } });
+                      { "impossible states dropped", counters_.impossible_states },
+                      { "received bytes dropped (unframed, too long)", counters_.dropped_bytes } });
   values.emplace_back("last link loss", lastLinkLoss());
 }
 

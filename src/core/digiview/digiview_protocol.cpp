@@ -16,7 +16,8 @@ using namespace digiview;
 constexpr double NARROWEST_FOV = 0.1;  ///< rad, DigiView's smallest field of view
 constexpr std::uint32_t STATE_INTERVAL_MS = MIN_INTERVAL_MS;
 constexpr std::size_t MAX_PENDING_SETS = 64;
-constexpr double ZOOM_RATE = 2.0;  ///< X/s of velocity goals on zoom
+constexpr std::size_t MAX_BAD_IN_A_ROW = 3;  ///< stream: bad messages in a row that reopen the connection
+constexpr double ZOOM_RATE = 2.0;            ///< X/s of velocity goals on zoom
 /// Three missed states: DigiView may have restarted (over UDP nothing else tells): subscribe again.
 constexpr double RESUBSCRIBE_AFTER = 3 * STATE_INTERVAL_MS / 1000.0;
 
@@ -79,6 +80,7 @@ void DigiViewProtocol::onConnected()
   targeted_ = false;
   understood_ = false;
   buffered_ = 0;
+  bad_in_a_row_ = 0;
   opening_size_ = 0;
   pending_sets_.clear();
   subscribe();
@@ -138,6 +140,10 @@ void DigiViewProtocol::onReceived(const std::uint8_t* data, std::size_t size)
     {
       buffered_ = 0;
       handle(stream_buffer_.data(), message_size_);
+      if (!session_.connected())
+      {
+        return;  // out of step (or QUIT): the rest belongs to no connection
+      }
     }
   }
 }
@@ -151,6 +157,15 @@ void DigiViewProtocol::handle(const std::uint8_t* bytes, std::size_t size)
   if (error != UnpackError::NONE)
   {
     ++counters_.bad[static_cast<std::size_t>(error)];
+    session_.reportDropped(size);
+    // A stream of fixed-size messages has no mark to find the next one by: once bytes that were no message came (a
+    // reply that never ended, noise), every later cut may be out of step. A run of bad messages reopens the
+    // connection, whose first byte starts a message again.
+    if (!session_.carriesDatagrams() && understood_ && ++bad_in_a_row_ >= MAX_BAD_IN_A_ROW)
+    {
+      session_.disconnect(formatText("DigiView stream out of step: %zu messages in a row did not unpack (last: %s)",
+                                     bad_in_a_row_, toString(error)));
+    }
     if (!understood_ && (error == UnpackError::BAD_SIZE || error == UnpackError::BAD_CHECKSUM))
     {
       checkOtherFormat(bytes, size);
@@ -158,6 +173,7 @@ void DigiViewProtocol::handle(const std::uint8_t* bytes, std::size_t size)
     return;
   }
   understood_ = true;
+  bad_in_a_row_ = 0;
   if (unverified)
   {
     ++counters_.unverified;

@@ -171,8 +171,17 @@ void ReplyParser::feed(const std::uint8_t* data, std::size_t size, std::vector<R
     const char character = static_cast<char>(data[index]);
     if (character == '\r' || character == '\n')
     {
-      classifyLine(line_, replies);
+      if (!overlong_)
+      {
+        classifyLine(line_, replies);
+      }
+      overlong_ = false;
       line_.clear();
+      continue;
+    }
+    if (overlong_)
+    {
+      ++dropped_bytes_;  // the rest of a line past MAX_LINE, up to its line end
       continue;
     }
     if (!std::isprint(static_cast<unsigned char>(character)))
@@ -185,7 +194,9 @@ void ReplyParser::feed(const std::uint8_t* data, std::size_t size, std::vector<R
       Reply overlong;
       overlong.text = line_;
       replies.push_back(overlong);
+      dropped_bytes_ += line_.size();
       line_.clear();
+      overlong_ = true;
     }
   }
 }
@@ -193,11 +204,14 @@ void ReplyParser::feed(const std::uint8_t* data, std::size_t size, std::vector<R
 void ReplyParser::reset()
 {
   line_.clear();
+  overlong_ = false;
 }
 
 void ReplyParser::dropPartialReply()
 {
-  line_.resize(leadingLimitReports(line_));
+  const std::size_t kept = leadingLimitReports(line_);
+  dropped_bytes_ += line_.size() - kept;
+  line_.resize(kept);
 }
 
 std::string command(const char* letters)

@@ -208,7 +208,9 @@ void FlirProtocol::onReceived(const std::uint8_t* data, std::size_t size)
 {
   last_bytes_at_ = session_.now();
   std::vector<flir::Reply> replies;
+  const std::uint64_t dropped_before = parser_.droppedBytes();
   parser_.feed(data, size, replies);
+  session_.reportDropped(parser_.droppedBytes() - dropped_before);
   for (const flir::Reply& reply : replies)
   {
     if (!session_.connected())
@@ -370,7 +372,9 @@ void FlirProtocol::unusable(Tag tag)
 
 void FlirProtocol::onTimeout(const TransactionChannel::Request& lost)
 {
+  const std::uint64_t dropped_before = parser_.droppedBytes();
   parser_.dropPartialReply();  // the limit reports of a calibration still under way stay
+  session_.reportDropped(parser_.droppedBytes() - dropped_before);
   if (!ready_ && lost.tag != COMMAND)
   {
     // A set-up answer went missing (a slow unit, a busy machine): ask again, and go on from there.

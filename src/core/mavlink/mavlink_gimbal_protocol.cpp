@@ -140,6 +140,8 @@ void MavlinkGimbalProtocol::onReceived(const std::uint8_t* data, std::size_t siz
   {
     counters_.bad[index].set(counts.errors[index]);
   }
+  session_.reportDropped(counts.noise_bytes - dropped_reported_);
+  dropped_reported_ = counts.noise_bytes;
 }
 
 void MavlinkGimbalProtocol::poll()

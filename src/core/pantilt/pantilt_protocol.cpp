@@ -52,6 +52,8 @@ void PanTiltProtocol::onReceived(const std::uint8_t* data, std::size_t size)
   }
   slip_.feed(data, size, [this](const std::uint8_t* frame, std::size_t length) { handleFrame(frame, length); });
   counters_.bad_framing.set(slip_.counts().bad_escapes + slip_.counts().overlong);
+  session_.reportDropped(slip_.counts().dropped_bytes - dropped_reported_);
+  dropped_reported_ = slip_.counts().dropped_bytes;
 }
 
 void PanTiltProtocol::handleFrame(const std::uint8_t* data, std::size_t size)
@@ -62,6 +64,7 @@ void PanTiltProtocol::handleFrame(const std::uint8_t* data, std::size_t size)
   const bool oversized = size > static_cast<std::size_t>(cr::pantilt::MAX_PARAMS_FRAME_SIZE);
   if (oversized || !params.decode(data, static_cast<int>(size), settings_.format, &error))
   {
+    session_.reportDropped(size);
     switch (oversized ? DecodeError::BAD_SIZE : error)
     {
       case DecodeError::BAD_HEADER:

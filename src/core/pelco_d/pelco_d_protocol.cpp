@@ -186,6 +186,9 @@ void PelcoProtocol::updateParserCounters()
   counters_.bad_checksum.set(parsed.bad_checksum);
   counters_.skipped_bytes.set(parsed.skipped_bytes);
   counters_.wrong_address.set(parsed.wrong_address);
+  const std::uint64_t dropped = parsed.skipped_bytes + parsed.bad_checksum;  // a bad checksum costs its 0xFF
+  session_.reportDropped(dropped - dropped_reported_);
+  dropped_reported_ = dropped;
 }
 
 void PelcoProtocol::handle(const pelco::FrameParser::Event& event)

@@ -27,7 +27,12 @@ namespace
 {
 std::size_t appendBody(char* data, std::size_t size, std::size_t count, void* body)
 {
-  static_cast<std::string*>(body)->append(data, size * count);
+  std::string& kept = *static_cast<std::string*>(body);
+  if (kept.size() + size * count > HttpLink::MAX_ANSWER)
+  {
+    return 0;  // an answer that never ends: curl aborts it (CURLE_WRITE_ERROR)
+  }
+  kept.append(data, size * count);
   return size * count;
 }
 
@@ -349,15 +354,26 @@ const HttpReply& HttpLink::perform(const HttpRequest& request)
   if (result != CURLE_OK)
   {
     const bool timed_out = result == CURLE_OPERATION_TIMEDOUT;
+    const bool oversized = result == CURLE_WRITE_ERROR;  // only appendBody() fails a write
     const bool tls_failed =
         config_.http.tls && (result == CURLE_SSL_CONNECT_ERROR || result == CURLE_PEER_FAILED_VERIFICATION ||
                              result == CURLE_SSL_CACERT_BADFILE || !pin_.presented.empty());
-    ++(timed_out ? http_counters_.timeouts : http_counters_.transport_errors);
+    if (oversized)
+    {
+      ++http_counters_.oversized_answers;
+      http_counters_.dropped_bytes += reply_.body.size();
+      reply_.body.clear();
+    }
+    else
+    {
+      ++(timed_out ? http_counters_.timeouts : http_counters_.transport_errors);
+    }
     if (tls_failed && (result == CURLE_PEER_FAILED_VERIFICATION || !pin_.presented.empty()))
     {
       ++http_counters_.tls_refusals;
     }
     const std::string detail =
+        oversized  ? formatText("an answer longer than %zu bytes: dropped", MAX_ANSWER) :
         timed_out  ? formatText("no answer within %.2f s", config_.http.request_timeout) :
         tls_failed ? tlsFailure(result) :
                      std::string(error_buffer_[0] != '\0' ? error_buffer_ : curl_easy_strerror(result));
@@ -392,7 +408,9 @@ void HttpLink::diagnostics(std::vector<DiagnosticValue>& values) const
                       { "http error answers (>= 400)", http_counters_.error_statuses },
                       { "http timeouts", http_counters_.timeouts },
                       { "http transport errors", http_counters_.transport_errors },
-                      { "tls refused certificates", http_counters_.tls_refusals } });
+                      { "tls refused certificates", http_counters_.tls_refusals },
+                      { "http answers too long (dropped)", http_counters_.oversized_answers },
+                      { "http answer bytes dropped", http_counters_.dropped_bytes } });
 }
 
 std::unique_ptr<Link> makeHttpLink(boost::asio::io_context& context, const LinkConfig& config, Link::Listener& listener)

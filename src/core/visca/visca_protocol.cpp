@@ -207,6 +207,7 @@ void ViscaProtocol::onReceived(const std::uint8_t* data, std::size_t size)
     if (visca::decodeIp(data, size, message) != visca::IpError::NONE)
     {
       ++counters_.bad_datagrams;
+      session_.reportDropped(size);
       return;
     }
     if (message.type == visca::IP_CONTROL_REPLY)
@@ -247,6 +248,9 @@ void ViscaProtocol::updateSplitterCounters()
   counters_.packets.set(split.packets);
   counters_.skipped_bytes.set(split.skipped_bytes);
   counters_.broken_packets.set(split.broken_packets);
+  const std::uint64_t dropped = split.skipped_bytes + split.broken_bytes;
+  session_.reportDropped(dropped - dropped_reported_);
+  dropped_reported_ = dropped;
 }
 
 void ViscaProtocol::handle(const visca::Packet& packet)

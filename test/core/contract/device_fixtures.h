@@ -78,6 +78,26 @@ public:
     (void)faults;
     return false;
   }
+  /// Makes every reply of the device one that never ends (bytes without a terminator or a frame: see
+  /// DevicePort::setEndless()), or ends them again; false when this emulator cannot (the case skips).
+  virtual bool setEndlessReplies(bool endless)
+  {
+    (void)endless;
+    return false;
+  }
+  /// How long the device may take to answer a request before the backend gives up on it (its reply deadline, wire
+  /// time aside), for SimFaults::reply_delay; 0 for devices that push their state unasked (the case skips).
+  virtual double replyDeadline() const
+  {
+    return 0.0;
+  }
+  /// Makes the device send every state \p copies times (1: normally), a flood; false where it cannot (a device that
+  /// only answers requests, or a serial line, whose baud rate bounds what it carries).
+  virtual bool setFlood(unsigned copies)
+  {
+    (void)copies;
+    return false;
+  }
   /// Makes the emulated device accept every command and silently ignore \p axis from now on (it stays where it is),
   /// or obey it again (setFaults()).
   bool ignoreAxis(Axis axis, bool ignore);

@@ -54,6 +54,15 @@ protected:
   {
     emulator_->port().setSilent(silent);
   }
+  double replyDeadline() const override
+  {
+    return 0.1;  // the reply timeout's allowance beyond the exchange's wire time (reply_timeout 0)
+  }
+  bool setEndlessReplies(bool endless) override
+  {
+    emulator_->port().setEndless(endless);
+    return true;
+  }
   bool setFaults(const SimFaults& faults) override
   {
     emulator_->setFaults(faults);

@@ -107,6 +107,20 @@ public:
   {
     emulator_->setSilent(silent);
   }
+  bool setFlood(unsigned copies) override
+  {
+    if (emulator_config_.transport == LinkKind::SERIAL)
+    {
+      return false;  // a serial line carries what its baud rate allows: no flood
+    }
+    emulator_->setFlood(copies);
+    return true;
+  }
+  bool setEndlessReplies(bool endless) override
+  {
+    emulator_->setEndless(endless);
+    return true;
+  }
   bool setFaults(const SimFaults& faults) override
   {
     emulator_->setFaults(faults);

@@ -101,6 +101,20 @@ public:
   {
     emulator_->setSilent(silent);
   }
+  bool setFlood(unsigned copies) override
+  {
+    if (emulator_config_.serial)
+    {
+      return false;  // a serial line carries what its baud rate allows: no flood
+    }
+    emulator_->setFlood(copies);
+    return true;
+  }
+  bool setEndlessReplies(bool endless) override
+  {
+    emulator_->setEndless(endless);
+    return true;
+  }
   bool setFaults(const SimFaults& faults) override
   {
     emulator_->panTilt().setFaults(faults);
@@ -241,6 +255,16 @@ public:
   void setSilent(bool silent) override
   {
     emulator_->setSilent(silent);
+  }
+  bool setFlood(unsigned copies) override
+  {
+    emulator_->setFlood(copies);
+    return true;
+  }
+  bool setEndlessReplies(bool endless) override
+  {
+    emulator_->setEndless(endless);
+    return true;
   }
   bool setFaults(const SimFaults& faults) override
   {

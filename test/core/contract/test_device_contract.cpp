@@ -319,6 +319,38 @@ TEST_P(DeviceContract, AnImpossiblePositionIsNeverBelievedAndAGoalOnItEndsAsLink
   EXPECT_TRUE(waitForRest(target));
 }
 
+TEST_P(DeviceContract, AReplyThatNeverEndsIsDroppedAndCountedAndTheLinkRecovers)
+{
+  const DeviceSession& session = backend_->session();
+  // Bytes thrown away: by the protocol's framing, or (HTTP) with an answer cut at its limit.
+  const auto dropped = [&session] {
+    const HttpCounters* http = session.httpCounters();
+    return session.counters().dropped_bytes.value() + (http != nullptr ? http->dropped_bytes.value() : 0u);
+  };
+  const std::uint64_t before = dropped();
+  const std::uint64_t losses = backend_->sample().link_losses;
+  if (!device_->setEndlessReplies(true))
+  {
+    GTEST_SKIP() << "this emulator cannot send a reply that never ends";
+  }
+  // Nothing the device sends is a reply any more: dropped and counted, and without a state the link is lost.
+  ASSERT_TRUE(waitUntil([&] { return dropped() > before && !backend_->sample().link_up; }, WAIT))
+      << "dropped " << dropped() - before << " bytes, link " << (backend_->sample().link_up ? "up" : "down");
+  EXPECT_GT(backend_->sample().link_losses, losses);
+
+  // Its replies end again: the framing finds them (or the link reopens), and a goal works.
+  ASSERT_TRUE(device_->setEndlessReplies(false));
+  ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT)) << backend_->lastLinkLoss();
+  if (!backend_->capabilities().axes[PAN].feedback)
+  {
+    return;  // a camera without a position cannot show a goal reached: the link up again is what it shows
+  }
+  const AxisValues target = device_->goal(-0.4, 0.1);
+  backend_->goTo(target);
+  EXPECT_TRUE(waitForRest(target)) << "at " << backend_->sample().position[PAN] << "; last loss "
+                                   << backend_->lastLinkLoss();
+}
+
 /// A position goal the node's supervisor runs on the backend, to its end.
 std::string runGoalToItsEnd(PtzBackend& backend, const AxisValues& target, double stall_timeout)
 {
@@ -327,6 +359,61 @@ std::string runGoalToItsEnd(PtzBackend& backend, const AxisValues& target, doubl
   return goal_supervisor_test::runGoalToItsEnd(
       std::shared_ptr<PtzBackend>(&backend, [](PtzBackend*) {}),
       goal_supervisor_test::positionGoal(target[PAN], target[TILT], target[ZOOM]), config, WAIT);
+}
+
+TEST_P(DeviceContract, ASlowDeviceWorksWithinItsDeadlineAndPastItEndsTheGoalAsLinkLost)
+{
+  const double deadline = device_->replyDeadline();
+  if (deadline <= 0.0)
+  {
+    GTEST_SKIP() << "no reply deadline to test: the device pushes its state unasked (a slow one is a late report, "
+                    "which the silence cases cover), or see the fixture's replyDeadline() (HTTP cameras)";
+  }
+  // Every answer at 90 % of the deadline: slow, but in time. A goal succeeds.
+  SimFaults slow;
+  slow.reply_delay = 0.9 * deadline;
+  ASSERT_TRUE(device_->setFaults(slow));
+  const AxisValues near = device_->goal(0.3, 0.1);
+  const std::string end = runGoalToItsEnd(*backend_, near, stateTimeout());
+  EXPECT_EQ(end.rfind("SUCCEEDED", 0), 0u) << end << "; last loss " << backend_->lastLinkLoss();
+
+  // Every answer just past the deadline: nothing answers in time, and a goal under way ends as link lost, never as a
+  // stall or a success.
+  ASSERT_TRUE(device_->setFaults(SimFaults()));
+  ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT));
+  const AxisValues far = startLongGoal();
+  GoalMonitorConfig config;
+  config.stall_timeout = stateTimeout();
+  GoalMonitor monitor = monitorFor(far, config);
+  slow.reply_delay = 1.2 * deadline;
+  ASSERT_TRUE(device_->setFaults(slow));
+  const GoalVerdict verdict = superviseUntilFinal(monitor);
+  EXPECT_EQ(verdict.phase, GoalPhase::ABORTED) << verdict.reason;
+  EXPECT_TRUE(verdict.link_lost) << verdict.reason;
+  ASSERT_TRUE(device_->setFaults(SimFaults()));
+}
+
+TEST_P(DeviceContract, AFloodOfStatesIsTakenInAsItComesAndAGoalStillSucceeds)
+{
+  constexpr unsigned FLOOD = 100;  ///< every state sent 100 times
+  if (!device_->setFlood(FLOOD))
+  {
+    GTEST_SKIP() << "no flood here: the device answers requests (it sends no more than it is asked), or a serial line "
+                    "carries no more than its baud rate";
+  }
+  const DeviceSession& session = backend_->session();
+  const std::uint64_t reports = session.counters().state_reports.value();
+  const PtzSample before = backend_->sample();
+  const AxisValues target = device_->goal(0.8, 0.1);
+  backend_->goTo(target);
+  EXPECT_TRUE(waitForRest(target)) << "at " << backend_->sample().position[PAN] << "; last loss "
+                                   << backend_->lastLinkLoss();
+  // Every report was read and judged as it came (the session keeps one snapshot: nothing queues), none was taken
+  // for impossible, and the link never fell.
+  EXPECT_GT(session.counters().state_reports.value() - reports, 10u * FLOOD);
+  EXPECT_EQ(backend_->sample().link_losses, before.link_losses) << backend_->lastLinkLoss();
+  EXPECT_EQ(session.counters().impossible_states.value(), 0u);
+  ASSERT_TRUE(device_->setFlood(1));
 }
 
 TEST_P(DeviceContract, ADeviceThatIgnoresAnAxisNeverGetsASucceededForIt)

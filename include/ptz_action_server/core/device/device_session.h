@@ -45,6 +45,10 @@ struct DeviceSessionCounters
   Counter recoveries;         ///< the device answered again after a loss and was held where it was
   Counter stale_faults;       ///< refusals of a command the node had already replaced: counted, not reported
   Counter impossible_states;  ///< reports dropped as impossible (NaN, outside the limits, a jump): never believed
+  /// Received bytes the protocol's framing threw away: a reply past its protocol's limit (a line without end), noise
+  /// between frames, a frame that never completed. Every receive buffer is bounded (README, "Bounded receive
+  /// buffers"): memory stays flat whatever the device sends.
+  Counter dropped_bytes;
 };
 
 /**
@@ -112,6 +116,8 @@ public:
   {
     return link_->config();
   }
+  /// The HTTP link's counters, or nullptr on another link.
+  const HttpCounters* httpCounters() const;
 
   // ---------------------------------------------------------------- for the protocol: I/O thread only
 
@@ -157,6 +163,11 @@ public:
   void reportState(const AxisValues& position);
   /// A valid answer that carries no state: keeps the link alive.
   void reportAlive();
+  /// The protocol's framing threw \p bytes received bytes away (too long, unframed, incomplete): counted.
+  void reportDropped(std::uint64_t bytes)
+  {
+    counters_.dropped_bytes += bytes;
+  }
   /// The device refused or failed a request sent for command \p command (see currentCommand()). Counts as a fault
   /// only if no newer command has been given since.
   void reportFault(const std::string& text, std::uint64_t command);

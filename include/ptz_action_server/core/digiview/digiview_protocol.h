@@ -151,6 +151,7 @@ private:
   const std::size_t message_size_;
   std::array<std::uint8_t, digiview::MAX_MESSAGE_SIZE> stream_buffer_{};
   std::size_t buffered_ = 0;
+  std::size_t bad_in_a_row_ = 0;  ///< stream: messages that did not unpack since the last that did
   std::array<std::uint8_t, 2 * digiview::MAX_MESSAGE_SIZE> opening_{};  ///< TCP: the first bytes of the connection
   std::size_t opening_size_ = 0;
   std::deque<PendingSet> pending_sets_;  ///< oldest first

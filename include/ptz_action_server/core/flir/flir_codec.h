@@ -61,7 +61,10 @@ void classifyLine(const std::string& line, std::vector<Reply>& replies);
 /**
  * \brief Splits a byte stream into reply lines (CR and/or LF end a line) and classifies them.
  *
- * Lines longer than MAX_LINE are cut there and reported as TEXT; NUL and other control bytes are dropped.
+ * NUL and other control bytes are dropped. The buffer is bounded: a line that reaches MAX_LINE bytes without its line
+ * end is reported once as TEXT (its first MAX_LINE bytes), and everything up to the next line end is dropped and
+ * counted (droppedBytes(), the overlong line included): the parser resynchronises on the next line end, and a reply
+ * that never ends costs no memory.
  */
 class ReplyParser
 {
@@ -75,9 +78,16 @@ public:
   /// Forgets a partial reply (after a timeout), but keeps the limit reports it starts with: they have no line end of
   /// their own, and a reset's calibration sends them one by one, seconds apart (`!T`, `!T`, `!P`, `!P*`).
   void dropPartialReply();
+  /// Bytes dropped so far (never reset): of overlong lines, and of partial replies dropped after a timeout.
+  std::uint64_t droppedBytes() const
+  {
+    return dropped_bytes_;
+  }
 
 private:
   std::string line_;
+  bool overlong_ = false;  ///< the current line passed MAX_LINE: drop up to its line end
+  std::uint64_t dropped_bytes_ = 0;
 };
 
 /// `<letters> ` (a query or a command without argument).

@@ -25,15 +25,18 @@ void encode(const std::uint8_t* data, std::size_t size, std::vector<std::uint8_t
 /// What the decoder dropped, by reason.
 struct DecoderCounts
 {
-  std::uint64_t frames = 0;       ///< frames handed out
-  std::uint64_t bad_escapes = 0;  ///< frames with ESC followed by neither ESC_END nor ESC_ESC: dropped whole
-  std::uint64_t overlong = 0;     ///< frames longer than the decoder's limit: dropped whole
+  std::uint64_t frames = 0;         ///< frames handed out
+  std::uint64_t bad_escapes = 0;    ///< frames with ESC followed by neither ESC_END nor ESC_ESC: dropped whole
+  std::uint64_t overlong = 0;       ///< frames longer than the decoder's limit: dropped whole
+  std::uint64_t dropped_bytes = 0;  ///< received bytes of dropped frames (up to the next END)
 };
 
 /**
  * \brief Cuts SLIP frames out of a byte stream. Empty frames (two ENDs in a row, the leading END) are no frames.
  *
- * A damaged frame is dropped whole and counted; the next END starts afresh, so one bad byte costs one frame.
+ * A damaged frame is dropped whole and counted; the next END starts afresh, so one bad byte costs one frame. The
+ * buffer is the decoder's limit, allocated once: a frame that never ends is dropped past it, byte by byte, and costs
+ * no memory.
  */
 class Decoder
 {
@@ -64,6 +67,7 @@ public:
       }
       if (damaged_)
       {
+        ++counts_.dropped_bytes;
         continue;  // the rest of a dropped frame, up to the next END
       }
       if (escaped_)
@@ -110,6 +114,7 @@ private:
   void drop(std::uint64_t& counter)
   {
     ++counter;
+    counts_.dropped_bytes += length_ + 1;  // the frame so far (decoded length: near enough) and this byte
     damaged_ = true;
     length_ = 0;
   }

@@ -243,6 +243,7 @@ private:
   DeviceSession& session_;
   MavlinkGimbalCounters counters_;
   mavlink::FrameParser parser_;
+  std::uint64_t dropped_reported_ = 0;  ///< of parser_'s noise bytes, those reported to the session
 
   // Written on the I/O thread under names_mutex_, which deviceName(), gimbal() and diagnostics() take; the I/O thread
   // reads them without it.

@@ -121,7 +121,8 @@ private:
   PanTiltCounters counters_;
 
   // I/O thread only.
-  slip::Decoder slip_{ 256 };
+  slip::Decoder slip_{ 256 };           ///< serial: frames past 256 bytes are dropped up to the next END
+  std::uint64_t dropped_reported_ = 0;  ///< of slip_'s dropped bytes, those reported to the session
   std::vector<std::uint8_t> framed_;
   bool heard_ = false;  ///< a valid frame arrived since the socket opened
   TimePoint last_frame_at_{};

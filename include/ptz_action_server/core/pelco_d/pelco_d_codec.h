@@ -115,7 +115,8 @@ struct ParserCounters
  * \brief Turns a byte stream into frames (and 4-byte general replies, when the device sends them).
  *
  * Bytes before a 0xFF are skipped; a 0xFF whose frame does not check is dropped and the search for the next 0xFF
- * goes on, so one broken frame never hides the next. Incomplete frames wait for more bytes.
+ * goes on, so one broken frame never hides the next. Incomplete frames wait for more bytes: between two feeds the
+ * buffer holds at most one frame less a byte (6 bytes), so bytes that never make a frame cost no memory.
  */
 class FrameParser
 {

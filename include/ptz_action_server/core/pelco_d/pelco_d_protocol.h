@@ -109,6 +109,7 @@ private:
   DeviceSession& session_;
   TransactionChannel channel_;
   pelco::FrameParser parser_;
+  std::uint64_t dropped_reported_ = 0;  ///< of parser_'s dropped bytes, those reported to the session
   PelcoCounters counters_;
 
   // I/O thread only.

@@ -45,6 +45,8 @@ struct HttpCounters
   Counter timeouts;          ///< requests that hit request_timeout
   Counter transport_errors;  ///< refused, reset, unresolvable, TLS failures
   Counter tls_refusals;      ///< TLS connections refused: the camera's certificate was untrusted or not the pinned one
+  Counter oversized_answers;  ///< answers past HttpLink::MAX_ANSWER (a body or envelope without end): dropped
+  Counter dropped_bytes;      ///< bytes of those answers received before they were cut
 };
 
 /// "AB:CD:..." (any case, with or without colons, spaces allowed around) as 64 lower-case hex digits; "" if \p text is
@@ -70,6 +72,10 @@ struct CertificatePin
 class HttpLink : public Link
 {
 public:
+  /// Bytes an answer's body (a VAPIX reply, a SOAP envelope) may have. Past it the answer is cut and dropped, counted
+  /// (HttpCounters::oversized_answers, dropped_bytes), and the link is lost: it reopens on a fresh connection.
+  static constexpr std::size_t MAX_ANSWER = 256 * 1024;
+
   HttpLink(boost::asio::io_context& context, const LinkConfig& config, Listener& listener);
   ~HttpLink() override;
 

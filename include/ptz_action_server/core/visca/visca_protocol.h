@@ -133,6 +133,7 @@ private:
   DeviceSession& session_;
   TransactionChannel channel_;
   visca::PacketSplitter splitter_;
+  std::uint64_t dropped_reported_ = 0;  ///< of splitter_'s dropped bytes, those reported to the session
   ViscaCounters counters_;
 
   // I/O thread only.
