@@ -267,7 +267,8 @@ private:
     if (plain_on_tls_)
     {
       ++server_.counters_.plain_requests;  // never served, never logged as the camera's traffic
-      respond(HttpAnswer{ 400, "text/plain", "The plain HTTP request was sent to HTTPS port\r\n" }, "", false, 0.0);
+      respond(HttpAnswer{ 400, "text/plain", "The plain HTTP request was sent to HTTPS port\r\n" }, "", false, 0.0,
+              false);
       return;
     }
     HttpExchange exchange{ SteadyClock::now(), std::string(request_.method_string()), std::string(request_.target()),
@@ -304,10 +305,11 @@ private:
     }
     exchange.status = answer.status;
     server_.received_.add(exchange);
-    respond(answer, challenge, request_.keep_alive(), delay);
+    respond(answer, challenge, request_.keep_alive(), delay, endless);
   }
 
-  void respond(const HttpAnswer& answer, const std::string& challenge, bool keep_alive, double delay)
+  /// Sends \p answer after \p delay s; an \p endless one is cut at half its body and followed by filler.
+  void respond(const HttpAnswer& answer, const std::string& challenge, bool keep_alive, double delay, bool endless)
   {
     response_ = {};
     response_.version(request_.version());

@@ -39,12 +39,12 @@ struct HttpReply
 /// What an HTTP link counts beyond LinkCounters.
 struct HttpCounters
 {
-  Counter requests;          ///< requests made
-  Counter connections;       ///< TCP (or TLS) connections curl had to open: 1 while the camera keeps its connection
-  Counter error_statuses;    ///< answers with a status >= 400
-  Counter timeouts;          ///< requests that hit request_timeout
-  Counter transport_errors;  ///< refused, reset, unresolvable, TLS failures
-  Counter tls_refusals;      ///< TLS connections refused: the camera's certificate was untrusted or not the pinned one
+  Counter requests;           ///< requests made
+  Counter connections;        ///< TCP (or TLS) connections curl had to open: 1 while the camera keeps its connection
+  Counter error_statuses;     ///< answers with a status >= 400
+  Counter timeouts;           ///< requests that hit request_timeout
+  Counter transport_errors;   ///< refused, reset, unresolvable, TLS failures
+  Counter tls_refusals;       ///< TLS connections refused: the camera's certificate was untrusted or not the pinned one
   Counter oversized_answers;  ///< answers past HttpLink::MAX_ANSWER (a body or envelope without end): dropped
   Counter dropped_bytes;      ///< bytes of those answers received before they were cut
 };
