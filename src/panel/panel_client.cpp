@@ -351,32 +351,29 @@ void PanelClient::refreshPresets()
   }
 }
 
-void PanelClient::savePreset(const std::string& name)
+template <class Service>
+void PanelClient::changePreset(const std::string& service_name, const std::string& name)
 {
   std::lock_guard<std::mutex> lock(mutex_);
   const std::string ns = ns_;
   const std::uint64_t generation = generation_;
-  post([this, ns, generation, name] {
-    SavePreset save;
-    save.request.name = name;
-    const std::string service = inNamespace(ns, "move_ptz/save_preset");
-    setMessage(generation, ros::service::call(service, save) ? save.response.message : service + " did not answer");
+  post([this, ns, generation, service_name, name] {
+    Service call;
+    call.request.name = name;
+    const std::string service = inNamespace(ns, "move_ptz/" + service_name);
+    setMessage(generation, ros::service::call(service, call) ? call.response.message : service + " did not answer");
     listPresets(ns, generation);
   });
 }
 
+void PanelClient::savePreset(const std::string& name)
+{
+  changePreset<SavePreset>("save_preset", name);
+}
+
 void PanelClient::deletePreset(const std::string& name)
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  const std::string ns = ns_;
-  const std::uint64_t generation = generation_;
-  post([this, ns, generation, name] {
-    DeletePreset remove;
-    remove.request.name = name;
-    const std::string service = inNamespace(ns, "move_ptz/delete_preset");
-    setMessage(generation, ros::service::call(service, remove) ? remove.response.message : service + " did not answer");
-    listPresets(ns, generation);
-  });
+  changePreset<DeletePreset>("delete_preset", name);
 }
 
 void PanelClient::setLookAt(bool enabled)

@@ -19,6 +19,7 @@
 #include <boost/asio/streambuf.hpp>
 #include <boost/asio/write.hpp>
 
+#include "startup_error.h"
 #include "goal_supervisor_fixture.h"
 #include "ptz_action_server/core/axis/axis_protocol.h"
 #include "ptz_action_server/core/units.h"
@@ -40,20 +41,6 @@ AxisConfig configFor(std::uint16_t port, const std::string& password = "pass")
   config.session.startup_timeout = 5.0;
   config.session.state_timeout = 1.0;
   return config;
-}
-
-/// The start-up error of a backend for \p config ("" if it started).
-std::string startupError(const AxisConfig& config)
-{
-  try
-  {
-    makeAxisBackend(config)->start();
-  }
-  catch (const BackendError& error)
-  {
-    return error.what();
-  }
-  return {};
 }
 
 /// A server answering every request with \p answer (behind Digest).
@@ -477,7 +464,7 @@ TEST(AxisBackendStartup, UnreadableZoomAttributesAreNamed)
       cannedCamera({ { "query=limits", CANNED_LIMITS },
                      { "query=attributes", { 200, "text/plain", "zoomSteps=value=1 | zoom=2,value=2 | zoom=1\r\n" } },
                      { "query=position", { 200, "text/plain", "pan=0\r\ntilt=0\r\nzoom=1\r\n" } } });
-  EXPECT_EQ(startupError(configFor(camera->port())),
+  EXPECT_EQ(startupError(*makeAxisBackend(configFor(camera->port()))),
             "an Axis camera on http://127.0.0.1:" + std::to_string(camera->port()) +
                 ": query=attributes&group=zoom: point 2 '2:1': values and X must increase (set axis/zoom_table or "
                 "axis/zoom_max_factor to override it)");
@@ -531,7 +518,7 @@ TEST(AxisBackend, AnHttpErrorDuringAGoalIsItsFault)
 TEST(AxisBackendStartup, AWrongPasswordIsNamedWithoutThePassword)
 {
   AxisCameraEmulator camera{ AxisCameraEmulatorConfig() };
-  const std::string error = startupError(configFor(camera.port(), "hunter2"));
+  const std::string error = startupError(*makeAxisBackend(configFor(camera.port(), "hunter2")));
   EXPECT_EQ(error, "an Axis camera on http://127.0.0.1:" + std::to_string(camera.port()) +
                        ": HTTP 401 Unauthorized: the camera refused the credentials of user 'root' for 'query=limits'");
   EXPECT_EQ(error.find("hunter2"), std::string::npos);
@@ -556,7 +543,7 @@ TEST(AxisBackendStartup, ForbiddenMissingErrorAndNonsenseAreNamed)
   for (const Case& tried : cases)
   {
     auto server = serverAnswering(tried.answer);
-    const std::string error = startupError(configFor(server->port()));
+    const std::string error = startupError(*makeAxisBackend(configFor(server->port())));
     EXPECT_EQ(error, "an Axis camera on http://127.0.0.1:" + std::to_string(server->port()) + ": " + tried.expected);
   }
 }
@@ -570,7 +557,7 @@ TEST(AxisBackendStartup, NobodyThereEndsInTheStartupTimeoutWithTheLinksError)
   }
   AxisConfig config = configFor(port);
   config.session.startup_timeout = 0.5;
-  const std::string error = startupError(config);
+  const std::string error = startupError(*makeAxisBackend(config));
   EXPECT_EQ(error.rfind("no answer from an Axis camera on http://127.0.0.1:" + std::to_string(port) +
                             " within 0.5 s: http://127.0.0.1:" + std::to_string(port) +
                             ": GET /axis-cgi/com/ptz.cgi?camera=1&query=limits: ",

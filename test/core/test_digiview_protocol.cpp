@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "startup_error.h"
 #include "wait_until.h"
 
 #include <boost/asio/ip/tcp.hpp>
@@ -148,19 +149,6 @@ private:
   Bytes request_;
   std::thread thread_;
 };
-
-std::string startupError(DeviceBackend& backend)
-{
-  try
-  {
-    backend.start();
-  }
-  catch (const BackendError& error)
-  {
-    return error.what();
-  }
-  return "";
-}
 
 class DigiViewBackend : public ::testing::TestWithParam<Format>
 {

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "startup_error.h"
 #include "ptz_action_server/core/axis/axis_protocol.h"
 #include "ptz_action_server/core/onvif/onvif_protocol.h"
 #include "ptz_action_server/core/transport/http_link.h"
@@ -49,19 +50,6 @@ AxisConfig axisConfig(std::uint16_t port)
   config.link.reconnect_min = 0.05;
   config.link.reconnect_max = 0.2;
   return config;
-}
-
-std::string startupError(const AxisConfig& config)
-{
-  try
-  {
-    makeAxisBackend(config)->start();
-  }
-  catch (const BackendError& error)
-  {
-    return error.what();
-  }
-  return {};
 }
 
 /// Goes to a position and waits until the backend reports it.
@@ -116,7 +104,7 @@ TEST(HttpTls, TheEmulatorMakesACertificateAndCountsPlainHttpSentToIt)
   // to see that no request went out over plain http.
   AxisConfig config = axisConfig(camera.port());
   config.link.http.tls = false;
-  const std::string error = startupError(config);
+  const std::string error = startupError(*makeAxisBackend(config));
   EXPECT_NE(error.find("HTTP 400"), std::string::npos) << error;
   EXPECT_GE(camera.server().counters().plain_requests.value(), 1u);
   EXPECT_EQ(camera.server().counters().requests.value(), 0u);
@@ -168,7 +156,7 @@ TEST(HttpTls, AWrongPinIsRefusedNamingBothFingerprintsAndNothingGoesOutInPlain)
   AxisCameraEmulator camera(tlsAxisCamera());
   AxisConfig config = axisConfig(camera.port());
   config.link.http.fingerprint = parseCertificateFingerprint(OTHER_PIN);
-  const std::string error = startupError(config);
+  const std::string error = startupError(*makeAxisBackend(config));
   EXPECT_NE(error.find("https://127.0.0.1:" + std::to_string(camera.port()) + ": GET /axis-cgi/"), std::string::npos)
       << error;
   EXPECT_NE(error.find("TLS refused: the camera's certificate has SHA-256 " + camera.server().fingerprint() +
@@ -185,7 +173,8 @@ TEST(HttpTls, AWrongPinIsRefusedNamingBothFingerprintsAndNothingGoesOutInPlain)
 TEST(HttpTls, AnUntrustedCertificateIsRefusedWithWhatToDo)
 {
   AxisCameraEmulator camera(tlsAxisCamera());
-  const std::string error = startupError(axisConfig(camera.port()));  // no pin, no ca_file: the system's CAs
+  const std::string error =
+      startupError(*makeAxisBackend(axisConfig(camera.port())));  // no pin, no ca_file: the system's CAs
   EXPECT_NE(error.find("TLS refused: the camera's certificate is not trusted by the system's CAs ("), std::string::npos)
       << error;
   EXPECT_NE(error.find("give its CA in ca_file, or pin its SHA-256 in tls_fingerprint"), std::string::npos) << error;
@@ -199,7 +188,7 @@ TEST(HttpTls, AnUntrustedCertificateIsRefusedWithWhatToDo)
   other.server().writeCertificate(ca_file.path);
   AxisConfig config = axisConfig(camera.port());
   config.link.http.ca_file = ca_file.path;
-  const std::string with_ca = startupError(config);
+  const std::string with_ca = startupError(*makeAxisBackend(config));
   EXPECT_NE(with_ca.find("not trusted by ca_file " + ca_file.path), std::string::npos) << with_ca;
   EXPECT_EQ(camera.server().counters().requests.value(), 0u);
 }

@@ -123,6 +123,9 @@ private:
   /// The worker's preset list call for the camera in `ns`.
   void listPresets(const std::string& ns, std::uint64_t generation);
   void setMessage(std::uint64_t generation, const std::string& message);
+  /// Calls the preset service `move_ptz/<service>` with \p name on the worker, shows its answer, lists the presets.
+  template <class Service>
+  void changePreset(const std::string& service, const std::string& name);
   double now() const;
 
   ros::CallbackQueue queue_;  ///< the client's callbacks, off rviz's queue
