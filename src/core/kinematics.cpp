@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 
 #include <urdf_model/model.h>
 #include <urdf_parser/urdf_parser.h>
@@ -78,28 +80,55 @@ Eigen::Isometry3d JointModel::transform(double q) const
   return origin * Eigen::AngleAxisd(q, axis);
 }
 
+struct PtzKinematics::ParsedUrdf
+{
+  urdf::ModelInterfaceSharedPtr model;
+  std::vector<JointModel> fixed_joints;
+};
+
 PtzKinematics PtzKinematics::fromUrdf(const std::string& urdf_xml, const KinematicsNames& names)
 {
   if (urdf_xml.empty())
   {
     throw ConfigError("the URDF is empty");
   }
-  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
-  if (!model)
+  // Keyed by the text itself: a robot's description is parsed once for every camera in the process that it names.
+  static std::mutex cache_mutex;
+  static std::map<std::string, std::weak_ptr<const ParsedUrdf>> cache;
+  std::shared_ptr<const ParsedUrdf> parsed;
   {
-    throw ConfigError("the URDF could not be parsed (see the urdfdom message above)");
+    std::lock_guard<std::mutex> lock(cache_mutex);
+    for (auto entry = cache.begin(); entry != cache.end();)  // forget the texts no camera uses any more
+    {
+      entry = entry->second.expired() ? cache.erase(entry) : std::next(entry);
+    }
+    parsed = cache[urdf_xml].lock();
+    if (!parsed)
+    {
+      auto fresh = std::make_shared<ParsedUrdf>();
+      fresh->model = urdf::parseURDF(urdf_xml);
+      if (!fresh->model)
+      {
+        cache.erase(urdf_xml);
+        throw ConfigError("the URDF could not be parsed (see the urdfdom message above)");
+      }
+      for (const auto& entry : fresh->model->joints_)
+      {
+        if (entry.second->type == urdf::Joint::FIXED)
+        {
+          fresh->fixed_joints.push_back(toJointModel(*entry.second));
+        }
+      }
+      parsed = fresh;
+      cache[urdf_xml] = parsed;
+    }
   }
+  const urdf::ModelInterface* model = parsed->model.get();
   PtzKinematics kinematics;
+  kinematics.urdf_ = parsed;
   kinematics.pan_ = requireRevolute(*model, names.pan_joint, "pan");
   kinematics.tilt_ = requireRevolute(*model, names.tilt_joint, "tilt");
   kinematics.camera_link_ = names.camera_link;
-  for (const auto& entry : model->joints_)
-  {
-    if (entry.second->type == urdf::Joint::FIXED)
-    {
-      kinematics.fixed_joints_.push_back(toJointModel(*entry.second));
-    }
-  }
 
   // Walk up from the camera link to the pan joint's parent; pan and tilt must be on the way, the rest fixed.
   urdf::LinkConstSharedPtr link = model->getLink(names.camera_link);
@@ -135,6 +164,12 @@ PtzKinematics PtzKinematics::fromUrdf(const std::string& urdf_xml, const Kinemat
                       "' must start at the pan joint and pass the tilt joint");
   }
   return kinematics;
+}
+
+const std::vector<JointModel>& PtzKinematics::fixedJoints() const
+{
+  static const std::vector<JointModel> none;
+  return urdf_ ? urdf_->fixed_joints : none;
 }
 
 Eigen::Isometry3d PtzKinematics::cameraInBase(double pan, double tilt) const

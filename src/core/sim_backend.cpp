@@ -16,14 +16,9 @@ Capabilities SimBackend::capabilities() const
 
 SimBackend::~SimBackend()
 {
+  if (timer_)
   {
-    std::lock_guard<std::mutex> lock(mutex_);
-    stopping_ = true;
-  }
-  plan_changed_.notify_all();
-  if (notifier_.joinable())
-  {
-    notifier_.join();
+    timer_->cancel(event_timer_);  // once it returns, no event is being reported or will be
   }
 }
 
@@ -35,35 +30,44 @@ bool SimBackend::setSampleListener(SampleListener listener)
 
 void SimBackend::start()
 {
-  if (listener_ && !notifier_.joinable())
+  if (listener_ && !timer_)
   {
-    notifier_ = std::thread([this] { notifyEvents(); });
+    timer_ = TimerThread::shared();
+    event_timer_ = timer_->at(TimerThread::Clock::time_point::max(), [this] { reportEvent(); });
+    std::lock_guard<std::mutex> lock(mutex_);
+    planChanged();
   }
 }
 
-void SimBackend::notifyEvents()
+void SimBackend::planChanged()
 {
+  if (!timer_)
+  {
+    return;  // no listener: nobody to tell of events
+  }
   // Wakes a microsecond after the event, so the sample the listener leads to already shows it.
   constexpr std::chrono::microseconds AFTER_EVENT(1);
-  std::unique_lock<std::mutex> lock(mutex_);
-  while (!stopping_)
+  const TimePoint now = clock_->now();
+  model_.sample(now);  // applies the lagged commands now due, so they are not found due again
+  next_event_ = dropout_ ? TimePoint::max() : model_.nextEvent(now);
+  timer_->move(event_timer_, next_event_ == TimePoint::max() ?
+                                 TimerThread::Clock::time_point::max() :
+                                 TimerThread::Clock::now() + (next_event_ - now) + AFTER_EVENT);
+}
+
+void SimBackend::reportEvent()
+{
   {
-    const TimePoint now = clock_->now();
-    model_.sample(now);  // applies the lagged commands now due, so they are not found due again
-    const TimePoint event = dropout_ ? TimePoint::max() : model_.nextEvent(now);
-    if (event == TimePoint::max())
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (dropout_ || clock_->now() < next_event_)
     {
-      plan_changed_.wait(lock);
-      continue;
-    }
-    plan_changed_.wait_for(lock, event - now + AFTER_EVENT);
-    if (!stopping_ && !dropout_ && clock_->now() >= event)
-    {
-      lock.unlock();
-      listener_();
-      lock.lock();
+      planChanged();  // the plan moved since this wake-up was set
+      return;
     }
   }
+  listener_();
+  std::lock_guard<std::mutex> lock(mutex_);
+  planChanged();
 }
 
 void SimBackend::goTo(const AxisValues& position)
@@ -72,7 +76,7 @@ void SimBackend::goTo(const AxisValues& position)
   if (!dropCommand())
   {
     model_.goTo(position, clock_->now());
-    plan_changed_.notify_all();
+    planChanged();
   }
 }
 
@@ -82,7 +86,7 @@ void SimBackend::moveAtVelocity(const AxisValues& velocity)
   if (!dropCommand())
   {
     model_.moveAtVelocity(velocity, clock_->now());
-    plan_changed_.notify_all();
+    planChanged();
   }
 }
 
@@ -92,7 +96,7 @@ void SimBackend::stop()
   if (!dropCommand())
   {
     model_.stop(clock_->now());
-    plan_changed_.notify_all();
+    planChanged();
   }
 }
 
@@ -151,7 +155,7 @@ void SimBackend::setFaults(const SimFaults& faults, bool dropout)
     frozen_sample_.link_losses = link_losses_;
   }
   dropout_ = dropout;
-  plan_changed_.notify_all();
+  planChanged();
 }
 
 bool SimBackend::dropCommand()

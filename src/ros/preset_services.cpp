@@ -61,12 +61,13 @@ PresetConfig PresetConfig::load(const ParamReader& params)
 
 PresetServices::PresetServices(const ros::NodeHandle& node_handle, const PresetConfig& config,
                                const Capabilities& limits, std::shared_ptr<PtzBackend> backend)
-  : node_handle_(node_handle)
+  : queue_(SharedCallbackQueue::shared())
+  , node_handle_(node_handle)
   , backend_(std::move(backend))
   , has_zoom_(limits.axes[ZOOM].present && limits.axes[ZOOM].absolute && limits.axes[ZOOM].feedback)
   , unpositioned_zoom_(limits.axes[ZOOM].present ? 0.0 : 1.0)
 {
-  node_handle_.setCallbackQueue(&queue_);
+  node_handle_.setCallbackQueue(queue_->queue());
   AxisValues home = config.home;
   if (!config.home_zoom_set)
   {
@@ -97,20 +98,17 @@ PresetServices::PresetServices(const ros::NodeHandle& node_handle, const PresetC
   save_service_ = node_handle_.advertiseService("move_ptz/save_preset", &PresetServices::save, this);
   delete_service_ = node_handle_.advertiseService("move_ptz/delete_preset", &PresetServices::remove, this);
   list_service_ = node_handle_.advertiseService("move_ptz/list_presets", &PresetServices::list, this);
-  spinner_ = std::make_unique<ros::AsyncSpinner>(1, &queue_);
-  spinner_->start();
 }
 
 PresetServices::~PresetServices()
 {
-  spinner_->stop();
   save_service_.shutdown();
   delete_service_.shutdown();
   list_service_.shutdown();
 }
 
 // Saves and deletes write and fsync a small file before answering, so that a success means the preset survives a
-// power loss. That blocks only this queue's own thread, never the goals or the state tick.
+// power loss. That blocks only the shared service queue's thread, never the goals or the state tick.
 bool PresetServices::save(SavePreset::Request& request, SavePreset::Response& response)
 {
   const PtzSample sample = backend_->sample();

@@ -34,15 +34,17 @@ StatePublisher::StatePublisher(const ros::NodeHandle& node_handle, const std::st
   , publish_tf_(publish_tf)
   , hand_over_(std::move(hand_over))
 {
-  node_handle_.setCallbackQueue(&queue_);
 }
 
 StatePublisher::~StatePublisher()
 {
-  timer_.stop();
-  if (spinner_)
+  if (timer_)
   {
-    spinner_->stop();
+    timer_->cancel(tick_);
+  }
+  if (transforms_)
+  {
+    transforms_->removeStatic(this);
   }
 }
 
@@ -68,8 +70,7 @@ void StatePublisher::start()
   joint_state_message_.velocity.assign(reported_joints_.size(), 0.0);
   if (publish_tf_)
   {
-    transform_broadcaster_ = std::make_unique<tf2_ros::TransformBroadcaster>();
-    static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
+    transforms_ = SharedTransforms::shared();
     joint_transforms_.resize(reported_joints_.size());
     for (std::size_t index = 0; index < reported_joints_.size(); ++index)
     {
@@ -91,10 +92,10 @@ void StatePublisher::start()
       "ptz_state rate");
   diagnostics_->add(*state_rate_);
 
-  timer_ = node_handle_.createSteadyTimer(ros::WallDuration(1.0 / STATE_RATE),
-                                          [this](const ros::SteadyTimerEvent&) { onTick(); });
-  spinner_ = std::make_unique<ros::AsyncSpinner>(1, &queue_);
-  spinner_->start();
+  const auto period =
+      std::chrono::duration_cast<TimerThread::Clock::duration>(std::chrono::duration<double>(1.0 / STATE_RATE));
+  timer_ = TimerThread::shared();
+  tick_ = timer_->every(period, TimerThread::Clock::now() + period, [this] { onTick(); });
 }
 
 void StatePublisher::addFieldOfView(const FieldOfViewSettings& settings)
@@ -127,7 +128,7 @@ void StatePublisher::onTick()
   }
 
   // A state the device has not renewed (its link is down) is not sent again: tf takes no repeated stamps.
-  if (transform_broadcaster_ && !joint_transforms_.empty() && sample.stamp > last_transform_stamp_)
+  if (transforms_ && !joint_transforms_.empty() && sample.stamp > last_transform_stamp_)
   {
     last_transform_stamp_ = sample.stamp;
     for (std::size_t index = 0; index < reported_joints_.size(); ++index)
@@ -137,7 +138,7 @@ void StatePublisher::onTick()
       joint_transforms_[index].transform =
           tf2::eigenToTransform(joint(axis).transform(sample.position[axis])).transform;
     }
-    transform_broadcaster_->sendTransform(joint_transforms_);
+    transforms_->send(joint_transforms_);
   }
   diagnostics_->update();
 
@@ -178,7 +179,7 @@ void StatePublisher::publishStaticTransforms()
   }
   if (!transforms.empty())
   {
-    static_broadcaster_->sendTransform(transforms);
+    transforms_->setStatic(this, transforms);
   }
 }
 

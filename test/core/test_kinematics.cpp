@@ -84,6 +84,21 @@ TEST(Kinematics, ShippedUrdfLimitsAndFixedJoints)
   EXPECT_TRUE((optical.linear() * Eigen::Vector3d::UnitY()).isApprox(-Eigen::Vector3d::UnitZ(), 1e-6));
 }
 
+TEST(Kinematics, CamerasOfOneUrdfShareOneParsedCopyAndOthersGetTheirOwn)
+{
+  // Two cameras named by one robot description (as nodelets in one manager) share the parse and its fixed joints.
+  const PtzKinematics first = PtzKinematics::fromUrdf(minimalUrdf("continuous"), minimalNames());
+  const PtzKinematics second = PtzKinematics::fromUrdf(minimalUrdf("continuous"), minimalNames());
+  EXPECT_TRUE(first.sharesUrdfWith(second));
+  EXPECT_EQ(&first.fixedJoints(), &second.fixedJoints());
+  EXPECT_EQ(first.fixedJoints().size(), 1u);
+  const PtzKinematics other = PtzKinematics::fromUrdf(readShippedUrdf());
+  EXPECT_FALSE(other.sharesUrdfWith(first));
+  EXPECT_EQ(other.fixedJoints().size(), 2u);  // its own joints, not the first text's
+  EXPECT_NEAR(other.tiltJoint().limits.min, -M_PI / 2, 1e-8);
+  EXPECT_NEAR(first.tiltJoint().limits.max, 0.5, 1e-9);
+}
+
 TEST(Kinematics, AimAlongInvertsTheForwardKinematics)
 {
   const PtzKinematics kinematics = PtzKinematics::fromUrdf(readShippedUrdf());

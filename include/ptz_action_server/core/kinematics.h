@@ -7,6 +7,7 @@
  */
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -56,8 +57,14 @@ struct KinematicsNames
 class PtzKinematics
 {
 public:
-  /// Parses \p urdf_xml. Throws ConfigError naming what is missing or malformed.
+  /// Parses \p urdf_xml. Throws ConfigError naming what is missing or malformed. Cameras whose robot_description
+  /// is the same text share one parsed copy of it (its model and fixed joints) for as long as one of them lives.
   static PtzKinematics fromUrdf(const std::string& urdf_xml, const KinematicsNames& names = KinematicsNames());
+  /// True when this and \p other were made from the same parsed URDF.
+  bool sharesUrdfWith(const PtzKinematics& other) const
+  {
+    return urdf_ == other.urdf_;
+  }
 
   const JointModel& panJoint() const
   {
@@ -68,10 +75,7 @@ public:
     return tilt_;
   }
   /// Every fixed joint of the URDF (the node publishes them once as static transforms).
-  const std::vector<JointModel>& fixedJoints() const
-  {
-    return fixed_joints_;
-  }
+  const std::vector<JointModel>& fixedJoints() const;
   /// The parent link of the pan joint: the frame pan and tilt are measured in.
   const std::string& baseFrame() const
   {
@@ -105,7 +109,9 @@ private:
 
   JointModel pan_;
   JointModel tilt_;
-  std::vector<JointModel> fixed_joints_;
+  struct ParsedUrdf;
+  /// One URDF, parsed once per process however many cameras it names: its fixed joints, for the static transforms.
+  std::shared_ptr<const ParsedUrdf> urdf_;
   std::vector<ChainJoint> chain_;  ///< from the base to the camera link
   std::string camera_link_;
 };

@@ -4,15 +4,14 @@
  */
 #pragma once
 
-#include <condition_variable>
 #include <memory>
 #include <mutex>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/timer_thread.h"
 
 namespace ptz_action_server
 {
@@ -21,15 +20,15 @@ namespace ptz_action_server
  *
  * The model is evaluated in closed form at the clock's current time, so there is no I/O: every call takes the mutex
  * for a few microseconds and returns. Faults (stalls, lag, dropout) can be switched at any time. Only when the node
- * asks for a sample listener does it start one thread, which sleeps until the model's next event (a motion ending,
- * a lagged command falling due) and then calls the listener, as a device would report that it has arrived.
+ * asks for a sample listener does it set a deadline on the process's TimerThread at the model's next event (a motion
+ * ending, a lagged command falling due), which then calls the listener, as a device would report that it has arrived.
  */
 class SimBackend : public PtzBackend
 {
 public:
   explicit SimBackend(const SimDeviceConfig& config,
                       std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
-  /// Stops and joins the listener's thread, if there is one.
+  /// Cancels the event deadline: once it returns, the listener is not running and will not be called.
   ~SimBackend() override;
 
   std::string name() const override
@@ -45,7 +44,7 @@ public:
   std::string lastFault() const override;
   std::string lastLinkLoss() const override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
-  /// Takes the listener; start() then starts the thread that calls it at each event of the model.
+  /// Takes the listener; from start() on it is called (on the TimerThread) at each event of the model.
   bool setSampleListener(SampleListener listener) override;
 
   /// Replaces the fault set. With \p dropout the device falls silent: state freezes, commands are lost.
@@ -54,21 +53,23 @@ public:
 private:
   /// True (and counts the command as lost) while the device is dropped out. Call with mutex_ held.
   bool dropCommand();
-  /// The listener's thread: waits for the model's next event (or a command that changes it), then calls the listener.
-  void notifyEvents();
+  /// Sets the event deadline at the model's next event after a command or fault changed it. Call with mutex_ held.
+  void planChanged();
+  /// The event deadline's work: calls the listener if the event is still due.
+  void reportEvent();
 
   SampleListener listener_;  ///< set before start()
-  std::thread notifier_;
-  std::condition_variable plan_changed_;  ///< a command or fault changed the model's plan (with mutex_)
-  bool stopping_ = false;                 ///< guarded by mutex_
+  std::shared_ptr<TimerThread> timer_;
+  TimerThread::Id event_timer_ = 0;
 
   const std::shared_ptr<const Clock> clock_;
   const Capabilities capabilities_;
   mutable std::mutex mutex_;      ///< guards everything below
   mutable SimDeviceModel model_;  ///< mutable: sampling applies commands whose lag has passed
   bool dropout_ = false;
-  std::uint64_t link_losses_ = 0;  ///< dropouts so far
-  PtzSample frozen_sample_;        ///< what the device last said before it dropped out
+  TimePoint next_event_ = TimePoint::max();  ///< the model's next event, as last planned
+  std::uint64_t link_losses_ = 0;            ///< dropouts so far
+  PtzSample frozen_sample_;                  ///< what the device last said before it dropped out
   std::uint64_t commands_received_ = 0;
   std::uint64_t commands_lost_ = 0;
 };

@@ -8,7 +8,6 @@
 #include <optional>
 #include <string>
 
-#include <ros/callback_queue.h>
 #include <ros/ros.h>
 
 #include "ptz_action_server/DeletePreset.h"
@@ -17,6 +16,7 @@
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/preset_store.h"
 #include "ptz_action_server/ros/param_reader.h"
+#include "ptz_action_server/ros/shared_callback_queue.h"
 
 namespace ptz_action_server
 {
@@ -36,8 +36,8 @@ struct PresetConfig
  * \brief The presets of the node: move_ptz/save_preset, move_ptz/delete_preset and move_ptz/list_presets, and the
  * lookup the preset action converts its goals with.
  *
- * The services run on their own queue and spinner thread, so the file write and fsync of a save never hold up goals
- * or the state tick; the store is thread-safe for the lookups from the goal queue.
+ * The services run on the process's SharedCallbackQueue (one thread for every camera), so the file write and fsync
+ * of a save never hold up goals or the state tick; the store is thread-safe for the lookups from the goal queue.
  */
 class PresetServices
 {
@@ -46,7 +46,7 @@ public:
   /// in \p node_handle's namespace. \p limits tell home's default zoom and whether the device has a zoom at all.
   PresetServices(const ros::NodeHandle& node_handle, const PresetConfig& config, const Capabilities& limits,
                  std::shared_ptr<PtzBackend> backend);
-  /// Stops the services' thread: once it returns, no service callback runs any more.
+  /// Shuts the services down: once it returns, no service callback of this node runs any more.
   ~PresetServices();
 
   PresetServices(const PresetServices&) = delete;
@@ -63,8 +63,8 @@ private:
   bool remove(DeletePreset::Request& request, DeletePreset::Response& response);
   bool list(ListPresets::Request& request, ListPresets::Response& response);
 
-  ros::CallbackQueue queue_;     ///< declared first: everything below registers on it
-  ros::NodeHandle node_handle_;  ///< the node's namespace, on queue_
+  std::shared_ptr<SharedCallbackQueue> queue_;  ///< declared first: everything below registers on it
+  ros::NodeHandle node_handle_;                 ///< the node's namespace, on queue_
   std::shared_ptr<PtzBackend> backend_;
   bool has_zoom_;
   /// The zoom a preset holds on a device whose zoom takes no position goals: 1 without zoom (what it reports), 0 (left
@@ -74,7 +74,6 @@ private:
   ros::ServiceServer save_service_;
   ros::ServiceServer delete_service_;
   ros::ServiceServer list_service_;
-  std::unique_ptr<ros::AsyncSpinner> spinner_;
 };
 
 }  // namespace ptz_action_server

@@ -12,24 +12,24 @@
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <diagnostic_updater/update_functions.h>
 #include <geometry_msgs/TransformStamped.h>
-#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
-#include <tf2_ros/static_transform_broadcaster.h>
-#include <tf2_ros/transform_broadcaster.h>
 
 #include "ptz_action_server/PtzState.h"
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/goal_supervisor.h"
 #include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/core/timer_thread.h"
 #include "ptz_action_server/ros/field_of_view_publisher.h"
+#include "ptz_action_server/ros/shared_transforms.h"
 
 namespace ptz_action_server
 {
 /**
- * \brief Publishes the device's state from a 10 Hz steady timer, whatever the backend does, and hands the samples on.
+ * \brief Publishes the device's state at 10 Hz, whatever the backend does, and hands the samples on.
  *
- * Each tick runs on the publisher's own callback queue and spinner thread: it takes one backend sample, publishes
+ * Each tick runs on the process's TimerThread, which ticks every camera of a nodelet manager, each at its own phase
+ * (one thread instead of a timer and a spinner thread per camera): it takes one backend sample, publishes
  * PtzState (with the supervisor's mode), joint_states and the pan and tilt transforms, updates the diagnostics
  * (backend status, measured ptz_state rate), and while a goal is active passes the sample to the handler. The
  * messages are built once in start() and reused, so a tick allocates nothing of its own.
@@ -40,7 +40,7 @@ namespace ptz_action_server
 class StatePublisher
 {
 public:
-  /// Called on the state thread with each sample taken while a goal is active.
+  /// Called on the state thread (the TimerThread) with each sample taken while a goal is active.
   using SampleHandler = std::function<void(const GoalSample&)>;
 
   /// \p supervisor must outlive the publisher; only its thread-safe sample(), mode() and goalActive() are used.
@@ -49,13 +49,14 @@ public:
   StatePublisher(const ros::NodeHandle& node_handle, const std::string& node_name, const PtzKinematics& kinematics,
                  std::shared_ptr<PtzBackend> backend, const GoalSupervisor& supervisor, const Capabilities& limits,
                  bool publish_tf, SampleHandler hand_over);
-  /// Stops the timer and its spinner: once it returns, the handler is not called any more.
+  /// Stops the tick: once it returns, the handler and the tick hook are not called any more.
   ~StatePublisher();
 
   StatePublisher(const StatePublisher&) = delete;
   StatePublisher& operator=(const StatePublisher&) = delete;
 
-  /// Publishes field_of_view on each tick (and serves the zoomed camera_info on this thread). Before start().
+  /// Publishes field_of_view on each tick (the zoomed camera_info is served on the node handle's queue). Before
+  /// start().
   void addFieldOfView(const FieldOfViewSettings& settings);
 
   /// Calls \p hook on the state thread at the end of every tick. Before start().
@@ -64,7 +65,7 @@ public:
     tick_hook_ = std::move(hook);
   }
 
-  /// Advertises the topics, publishes the static transforms once (with tf on), then starts the timer and spinner.
+  /// Advertises the topics, publishes the static transforms once (with tf on), then starts the tick.
   void start();
 
 private:
@@ -79,8 +80,7 @@ private:
   void takeWarnings();
   ros::Time toRosTime(TimePoint stamp) const;
 
-  ros::CallbackQueue queue_;     ///< declared first: everything below registers on it
-  ros::NodeHandle node_handle_;  ///< the node's namespace, on queue_
+  ros::NodeHandle node_handle_;  ///< the node's namespace, on the node's queue
   const std::string node_name_;  ///< the node's private namespace
   PtzKinematics kinematics_;
   std::shared_ptr<PtzBackend> backend_;
@@ -99,16 +99,15 @@ private:
   sensor_msgs::JointState joint_state_message_;
   std::vector<geometry_msgs::TransformStamped> joint_transforms_;  ///< of reported_joints_, reused every tick
   TimePoint last_transform_stamp_{};                               ///< of the state the joint tf was last sent for
-  std::unique_ptr<tf2_ros::TransformBroadcaster> transform_broadcaster_;
-  std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
+  std::shared_ptr<SharedTransforms> transforms_;                   ///< null with tf off
   std::unique_ptr<diagnostic_updater::Updater> diagnostics_;
   double state_rate_min_ = 0.0;
   double state_rate_max_ = 0.0;
   std::unique_ptr<diagnostic_updater::FrequencyStatus> state_rate_;
   std::unique_ptr<FieldOfViewPublisher> field_of_view_;  ///< null without a configured field of view
   std::vector<std::string> warnings_;                    ///< every warning of the backend so far
-  ros::SteadyTimer timer_;
-  std::unique_ptr<ros::AsyncSpinner> spinner_;
+  std::shared_ptr<TimerThread> timer_;
+  TimerThread::Id tick_ = 0;
 };
 
 }  // namespace ptz_action_server

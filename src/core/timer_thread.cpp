@@ -1,0 +1,173 @@
+#include "ptz_action_server/core/timer_thread.h"
+
+namespace ptz_action_server
+{
+std::shared_ptr<TimerThread> TimerThread::shared()
+{
+  static std::mutex mutex;
+  static std::weak_ptr<TimerThread> instance;
+  std::lock_guard<std::mutex> lock(mutex);
+  std::shared_ptr<TimerThread> timer = instance.lock();
+  if (!timer)
+  {
+    timer = std::make_shared<TimerThread>();
+    instance = timer;
+  }
+  return timer;
+}
+
+TimerThread::TimerThread() : thread_([this] { run(); })
+{
+}
+
+TimerThread::~TimerThread()
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  changed_.notify_all();
+  if (thread_.get_id() == std::this_thread::get_id())
+  {
+    thread_.detach();  // the last holder let go inside a work: the thread ends on its own once that returns
+  }
+  else
+  {
+    thread_.join();
+  }
+}
+
+TimerThread::Id TimerThread::every(Clock::duration period, Clock::time_point first, std::function<void()> work)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const Id id = next_id_++;
+  Entry& entry = entries_[id];
+  entry.work = std::move(work);
+  entry.period = period;
+  entry.due = first;
+  entry.slot = due_.end();
+  arm(id, entry);
+  return id;
+}
+
+TimerThread::Id TimerThread::at(Clock::time_point when, std::function<void()> work)
+{
+  return every(Clock::duration::zero(), when, std::move(work));
+}
+
+void TimerThread::move(Id id, Clock::time_point when)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto found = entries_.find(id);
+  if (found == entries_.end())
+  {
+    return;
+  }
+  disarm(found->second);
+  found->second.due = when;
+  if (running_ != id)  // a running one is armed again when its run ends
+  {
+    arm(id, found->second);
+  }
+}
+
+void TimerThread::cancel(Id id)
+{
+  std::unique_lock<std::mutex> lock(mutex_);
+  const auto found = entries_.find(id);
+  if (found != entries_.end())
+  {
+    disarm(found->second);
+    entries_.erase(found);  // run() holds its own copy of the work while it runs
+  }
+  if (std::this_thread::get_id() != thread_.get_id())
+  {
+    ran_.wait(lock, [this, id] { return running_ != id; });
+  }
+}
+
+std::size_t TimerThread::size() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return entries_.size();
+}
+
+void TimerThread::arm(Id id, Entry& entry)
+{
+  if (entry.due == Clock::time_point::max())
+  {
+    return;
+  }
+  const bool earliest = due_.empty() || entry.due < due_.begin()->first;
+  entry.slot = due_.emplace(entry.due, id);
+  if (earliest)
+  {
+    changed_.notify_one();
+  }
+}
+
+void TimerThread::disarm(Entry& entry)
+{
+  if (entry.slot != due_.end())
+  {
+    due_.erase(entry.slot);
+    entry.slot = due_.end();
+  }
+}
+
+void TimerThread::run()
+{
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (!stopping_)
+  {
+    if (due_.empty())
+    {
+      changed_.wait(lock);
+      continue;
+    }
+    const Clock::time_point next = due_.begin()->first;
+    if (Clock::now() < next)
+    {
+      changed_.wait_until(lock, next);
+      continue;
+    }
+    const Id id = due_.begin()->second;
+    due_.erase(due_.begin());
+    Entry& entry = entries_.at(id);
+    entry.slot = due_.end();
+    const Clock::time_point was_due = entry.due;
+    std::function<void()> work = entry.work;  // a cancel during the run erases the entry, not this copy
+    running_ = id;
+    lock.unlock();
+    work();
+    lock.lock();
+    running_ = 0;
+    ran_.notify_all();
+    const auto found = entries_.find(id);
+    if (found == entries_.end())
+    {
+      continue;  // cancelled while it ran
+    }
+    Entry& after = found->second;
+    if (after.period > Clock::duration::zero())
+    {
+      after.due = was_due + after.period;
+      const Clock::time_point now = Clock::now();
+      if (after.due <= now)  // fell a whole period behind: skip to the next due time of the same phase
+      {
+        after.due += ((now - after.due) / after.period + 1) * after.period;
+      }
+      arm(id, after);
+    }
+    else if (after.due != was_due)  // moved while it ran
+    {
+      arm(id, after);
+    }
+    else
+    {
+      after.due = Clock::time_point::max();
+    }
+  }
+}
+
+}  // namespace ptz_action_server

@@ -1,0 +1,66 @@
+#include "ptz_action_server/ros/shared_transforms.h"
+
+#include <set>
+#include <string>
+
+namespace ptz_action_server
+{
+std::shared_ptr<SharedTransforms> SharedTransforms::shared()
+{
+  static std::mutex mutex;
+  static std::weak_ptr<SharedTransforms> instance;
+  std::lock_guard<std::mutex> lock(mutex);
+  std::shared_ptr<SharedTransforms> transforms = instance.lock();
+  if (!transforms)
+  {
+    transforms = std::make_shared<SharedTransforms>();
+    instance = transforms;
+  }
+  return transforms;
+}
+
+SharedTransforms::SharedTransforms()
+  : static_publisher_(ros::NodeHandle().advertise<tf2_msgs::TFMessage>("/tf_static", 100, true))
+{
+}
+
+void SharedTransforms::send(const std::vector<geometry_msgs::TransformStamped>& transforms)
+{
+  broadcaster_.sendTransform(transforms);
+}
+
+void SharedTransforms::setStatic(const void* owner, const std::vector<geometry_msgs::TransformStamped>& transforms)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  statics_[owner] = transforms;
+  publishStaticLocked();
+}
+
+void SharedTransforms::removeStatic(const void* owner)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (statics_.erase(owner) > 0)
+  {
+    publishStaticLocked();
+  }
+}
+
+void SharedTransforms::publishStaticLocked()
+{
+  // Cameras on one robot description each name all of its fixed joints: each child frame goes in once.
+  static_message_.transforms.clear();
+  std::set<std::string> children;
+  for (const auto& entry : statics_)
+  {
+    for (const geometry_msgs::TransformStamped& transform : entry.second)
+    {
+      if (children.insert(transform.child_frame_id).second)
+      {
+        static_message_.transforms.push_back(transform);
+      }
+    }
+  }
+  static_publisher_.publish(static_message_);
+}
+
+}  // namespace ptz_action_server
