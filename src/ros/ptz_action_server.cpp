@@ -7,11 +7,8 @@
 #include <vector>
 
 #include <boost/make_shared.hpp>
-#include <tf2/exceptions.h>
-#include <tf2_eigen/tf2_eigen.h>
 
 #include "ptz_action_server/core/capabilities.h"
-#include "ptz_action_server/core/goal_validation.h"
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/ros/capabilities_message.h"
 #include "ptz_action_server/ros/function_callback.h"
@@ -22,13 +19,6 @@ namespace ptz_action_server
 {
 namespace
 {
-constexpr double FRAME_WAIT_CHECK_PERIOD = 0.02;  ///< s between checks of tf while a frame goal waits
-
-Eigen::Isometry3d identity()
-{
-  return Eigen::Isometry3d::Identity();
-}
-
 /// The tf frame a goal is expressed in; "" for goals without one.
 std::string frameOf(const PtzGoal&)
 {
@@ -147,6 +137,8 @@ void PtzActionServer::start()
 
   presets_ = std::make_unique<PresetServices>(node_handle_, config_.presets, limits_, backend_);
   frame_listener_ = std::make_unique<FrameListener>(node_handle_, config_.frame_listen_time, config_.frame_wait);
+  frame_hold_ = std::make_unique<FrameGoalHold>(node_handle_, *frame_listener_, kinematics_.baseFrame());
+  translator_ = std::make_unique<GoalTranslator>(kinematics_, limits_, *frame_listener_, *presets_);
   frame_tracking_ = std::make_unique<FrameTracking>(node_handle_, kinematics_, limits_, config_.track, *supervisor_,
                                                     *frame_listener_, *backend_);
 
@@ -277,26 +269,21 @@ template <class Action>
 void PtzActionServer::onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
 {
   status_hold_.goalArrived(clock_.now());
-  supersedeWaitingFrameGoal(kind);
+  frame_hold_->supersede(kind);
   const std::string frame_id = frameOf(*handle.getGoal());
-  if (kind == ActionKind::POSITION_ABS_TF || kind == ActionKind::FRAME || kind == ActionKind::TRACK_FRAME)
+  const bool on_frame =
+      kind == ActionKind::POSITION_ABS_TF || kind == ActionKind::FRAME || kind == ActionKind::TRACK_FRAME;
+  if (on_frame && frame_hold_->mustWait(frame_id))
   {
-    frame_listener_->listen();
-    if (!frame_id.empty() && !frame_listener_->ready(kinematics_.baseFrame(), frame_id))
-    {
-      // The listener has just started: hold the goal until tf has its frame or frame_wait is over, without holding
-      // up anything else.
-      const auto result = [] { return typename Action::_action_result_type::_result_type(); };
-      waitForFrame(
-          WaitingFrameGoal{ handle.getGoalID().id, frame_id, [this, handle, kind] { submit(handle, kind); },
-                            [this, handle, result](const std::string& text) {
-                              postStatus([handle, result, text]() mutable { handle.setRejected(result(), text); });
-                            },
-                            [this, handle, result](const std::string& text) {
-                              postStatus([handle, result, text]() mutable { handle.setCanceled(result(), text); });
-                            } });
-      return;
-    }
+    const auto result = [] { return typename Action::_action_result_type::_result_type(); };
+    frame_hold_->hold({ handle.getGoalID().id, frame_id, [this, handle, kind] { submit(handle, kind); },
+                        [this, handle, result](const std::string& text) {
+                          postStatus([handle, result, text]() mutable { handle.setRejected(result(), text); });
+                        },
+                        [this, handle, result](const std::string& text) {
+                          postStatus([handle, result, text]() mutable { handle.setCanceled(result(), text); });
+                        } });
+    return;
   }
   submit(handle, kind);
 }
@@ -305,9 +292,10 @@ template <class Action>
 void PtzActionServer::submit(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
 {
   const auto goal = handle.getGoal();
-  supervisor_->submit(
-      std::make_unique<GoalHandleAdapter<Action>>(handle, kind, statusPoster()),
-      [&](const PtzSample& current, GoalCommand& command) { return toCommand(*goal, kind, current, command); });
+  supervisor_->submit(std::make_unique<GoalHandleAdapter<Action>>(handle, kind, statusPoster()),
+                      [&](const PtzSample& current, GoalCommand& command) {
+                        return translator_->convert(*goal, kind, current, command);
+                      });
   if constexpr (std::is_same_v<Action, PtzFrameAction>)
   {
     const std::string& id = handle.getGoalID().id;
@@ -321,208 +309,33 @@ void PtzActionServer::submit(actionlib::ServerGoalHandle<Action> handle, ActionK
 template <class Action>
 void PtzActionServer::onCancel(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
 {
-  if (waiting_frame_goal_ && waiting_frame_goal_->id == handle.getGoalID().id)
+  if (!frame_hold_->cancel(handle.getGoalID().id))
   {
-    const WaitingFrameGoal goal = takeWaitingFrameGoal();
-    goal.cancel("cancelled while waiting for tf to have '" + goal.frame_id + "'");
-    return;
-  }
-  supervisor_->cancel(actionName(kind), handle.getGoalID().id);
-}
-
-void PtzActionServer::supersedeWaitingFrameGoal(ActionKind kind)
-{
-  if (waiting_frame_goal_)
-  {
-    const WaitingFrameGoal goal = takeWaitingFrameGoal();
-    goal.reject(std::string("superseded by a new ") + actionName(kind) + " goal while waiting for tf to have '" +
-                goal.frame_id + "'");
+    supervisor_->cancel(actionName(kind), handle.getGoalID().id);
   }
 }
 
 void PtzActionServer::lookAt(const geometry_msgs::PointStamped& point)
 {
   // No status hold: a clicked point has no actionlib client that could miss its status.
-  supersedeWaitingFrameGoal(ActionKind::CLICKED_POINT);
+  frame_hold_->supersede(ActionKind::CLICKED_POINT);
   const std::string id = std::string(ClickedPointGoal::ACTION) + "_" + std::to_string(++clicked_points_);
   const auto submit_point = [this, point, id] {
     supervisor_->submit(
         std::make_unique<ClickedPointGoal>(id, describePoint(point)),
-        [&](const PtzSample& current, GoalCommand& command) { return toCommand(point, current, command); });
+        [&](const PtzSample& current, GoalCommand& command) { return translator_->convert(point, current, command); });
   };
-  frame_listener_->listen();
-  if (!point.header.frame_id.empty() && !frame_listener_->ready(kinematics_.baseFrame(), point.header.frame_id))
+  if (frame_hold_->mustWait(point.header.frame_id))
   {
     const std::string where = describePoint(point);
-    waitForFrame(WaitingFrameGoal{ id, point.header.frame_id, submit_point,
-                                   [where](const std::string& text) {
-                                     ROS_WARN("look_at_clicked_point: not aiming at %s: %s", where.c_str(),
-                                              text.c_str());
-                                   },
-                                   [](const std::string&) {} });
+    frame_hold_->hold({ id, point.header.frame_id, submit_point,
+                        [where](const std::string& text) {
+                          ROS_WARN("look_at_clicked_point: not aiming at %s: %s", where.c_str(), text.c_str());
+                        },
+                        [](const std::string&) {} });
     return;
   }
   submit_point();
-}
-
-void PtzActionServer::waitForFrame(WaitingFrameGoal goal)
-{
-  waiting_frame_goal_ = std::move(goal);
-  frame_wait_timer_ = node_handle_.createSteadyTimer(ros::WallDuration(FRAME_WAIT_CHECK_PERIOD),
-                                                     [this](const ros::SteadyTimerEvent&) { checkWaitingFrameGoal(); });
-}
-
-PtzActionServer::WaitingFrameGoal PtzActionServer::takeWaitingFrameGoal()
-{
-  WaitingFrameGoal goal = std::move(*waiting_frame_goal_);
-  waiting_frame_goal_.reset();
-  frame_wait_timer_.stop();
-  return goal;
-}
-
-void PtzActionServer::checkWaitingFrameGoal()
-{
-  if (waiting_frame_goal_ && frame_listener_->ready(kinematics_.baseFrame(), waiting_frame_goal_->frame_id))
-  {
-    takeWaitingFrameGoal().submit();
-  }
-}
-
-std::string PtzActionServer::toCommand(const PtzGoal& goal, ActionKind kind, const PtzSample& sample,
-                                       GoalCommand& command) const
-{
-  const AxisValues values{ { goal.pan, goal.tilt, goal.zoom } };
-  switch (kind)
-  {
-    case ActionKind::POSITION_REL: {
-      std::string reason = findNonFinite(values, "offset");
-      command.values = values;
-      for (Axis axis : ALL_AXES)
-      {
-        const AxisCapability& capability = limits_.axes[axis];
-        if (capability.present && capability.feedback)
-        {
-          command.values[axis] += sample.position[axis];
-        }
-        else if (values[axis] != 0.0 && reason.empty())
-        {
-          reason = findUnsupported(limits_, axis, AxisRequest::OFFSET);
-        }
-        else
-        {
-          command.values[axis] = axis == ZOOM ? 0.0 : values[axis];  // zoom 0: left alone (leavesAxisAlone())
-        }
-      }
-      return reason;
-    }
-    case ActionKind::VELOCITY:
-      command.velocity = true;
-      command.values = values;
-      return findNonFinite(values, "velocity");
-    default:
-      command.values = values;
-      return findNonFinite(values, "position");
-  }
-}
-
-std::string PtzActionServer::toCommand(const PtzRelToGoal& goal, ActionKind, const PtzSample&,
-                                       GoalCommand& command) const
-{
-  std::string reason = findNonFinite({ { goal.pan, goal.tilt, goal.zoom } }, "position");
-  Eigen::Isometry3d frame_in_base = identity();
-  if (reason.empty())
-  {
-    reason = lookupFrame(goal.frame_id, frame_in_base);
-  }
-  if (!reason.empty())
-  {
-    return reason;
-  }
-  // The goal's pan and tilt follow the contract's convention in the axes of frame_id.
-  const Eigen::Vector3d in_base = frame_in_base.linear() * directionOf(goal.pan, goal.tilt);
-  command.values[ZOOM] = goal.zoom;
-  if (!kinematics_.aimAlong(in_base, command.values[PAN], command.values[TILT]))
-  {
-    return "no pan and tilt aim the camera along that direction of '" + goal.frame_id + "'";
-  }
-  return {};
-}
-
-std::string PtzActionServer::toCommand(const PtzFrameGoal& goal, ActionKind kind, const PtzSample&,
-                                       GoalCommand& command) const
-{
-  command.track = kind == ActionKind::TRACK_FRAME;
-  std::string reason = findNonFinite({ { 0.0, 0.0, goal.zoom } }, "position");
-  Eigen::Isometry3d frame_in_base = identity();
-  if (reason.empty())
-  {
-    reason = lookupFrame(goal.frame_id, frame_in_base);
-  }
-  if (!reason.empty())
-  {
-    return reason;
-  }
-  command.values[ZOOM] = goal.zoom;
-  if (!kinematics_.aimAt(frame_in_base.translation(), command.values[PAN], command.values[TILT]))
-  {
-    return "cannot point at the origin of '" + goal.frame_id + "': it is too close to the camera";
-  }
-  return {};
-}
-
-std::string PtzActionServer::toCommand(const PtzPresetGoal& goal, ActionKind, const PtzSample&,
-                                       GoalCommand& command) const
-{
-  const std::optional<AxisValues> pose = presets_->find(goal.name);
-  if (!pose)
-  {
-    return "no preset named '" + goal.name + "'";
-  }
-  command.values = *pose;
-  return {};
-}
-
-std::string PtzActionServer::toCommand(const geometry_msgs::PointStamped& point, const PtzSample& sample,
-                                       GoalCommand& command) const
-{
-  const Eigen::Vector3d in_frame(point.point.x, point.point.y, point.point.z);
-  if (!in_frame.allFinite())
-  {
-    return "the point is not finite";
-  }
-  Eigen::Isometry3d frame_in_base = identity();
-  const std::string reason = lookupFrame(point.header.frame_id, frame_in_base);
-  if (!reason.empty())
-  {
-    return reason;
-  }
-  // The zoom stays where it is (0: left alone on a device that cannot position or report it).
-  const AxisCapability& zoom = limits_.axes[ZOOM];
-  command.values[ZOOM] = zoom.present && zoom.absolute && zoom.feedback ? sample.position[ZOOM] : 0.0;
-  if (!kinematics_.aimAt(frame_in_base * in_frame, command.values[PAN], command.values[TILT]))
-  {
-    return "cannot point at it: it is too close to the camera";
-  }
-  return {};
-}
-
-std::string PtzActionServer::lookupFrame(const std::string& frame_id, Eigen::Isometry3d& frame_in_base) const
-{
-  if (frame_id.empty())
-  {
-    return "frame_id is empty";
-  }
-  try
-  {
-    // Time 0: the latest transform, without waiting, so other goals are never held up.
-    frame_in_base = tf2::transformToEigen(
-        frame_listener_->buffer().lookupTransform(kinematics_.baseFrame(), frame_id, ros::Time(0)));
-  }
-  catch (const tf2::TransformException& error)
-  {
-    return "frame '" + frame_id + "' is unknown to tf: " + error.what();
-  }
-  return {};
 }
 
 }  // namespace ptz_action_server

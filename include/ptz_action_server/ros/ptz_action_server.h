@@ -23,8 +23,11 @@
 #include "ptz_action_server/core/kinematics.h"
 #include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/core/status_hold.h"
+#include "ptz_action_server/ros/action_kind.h"
+#include "ptz_action_server/ros/frame_goal_hold.h"
 #include "ptz_action_server/ros/frame_listener.h"
 #include "ptz_action_server/ros/frame_tracking.h"
+#include "ptz_action_server/ros/goal_translator.h"
 #include "ptz_action_server/ros/look_at_clicked_point.h"
 #include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/preset_services.h"
@@ -62,21 +65,6 @@ struct NodeConfig
   static NodeConfig load(const ParamReader& params);
 };
 
-/// One of the actions, for names and messages.
-enum class ActionKind
-{
-  POSITION_ABS,
-  POSITION_REL,
-  VELOCITY,
-  POSITION_ABS_TF,
-  FRAME,
-  TRACK_FRAME,
-  PRESET,
-  CLICKED_POINT,  ///< not an action: a point on the clicked point topic (LookAtClickedPoint)
-};
-
-const char* actionName(ActionKind kind);
-
 /// Runs a goal status change now or later (see StatusHold), and says whether changes are being held.
 struct StatusPoster
 {
@@ -101,11 +89,12 @@ public:
 /**
  * \brief The ptz_action_server node around one backend.
  *
- * It converts the goals of its actions (looking frames up in tf) and adapts actionlib's goal handles; the
- * GoalSupervisor runs the goals, the StatePublisher the 10 Hz state tick.
+ * It wires ROS to the core: a goal goes from its action callback (through the FrameGoalHold if it must wait for tf)
+ * to the GoalSupervisor, which converts it with the GoalTranslator, checks it and commands the backend; the goal
+ * handle's status changes go through the StatusHold. The StatePublisher runs the 10 Hz state tick.
  *
  * Threads: the node handle's queue (the main thread) runs every action callback and the supervisor; the state tick
- * runs on its own queue and spinner and hands each sample to the main thread for the goal's feedback and verdict.
+ * runs on the process's TimerThread and hands each sample to the main thread for the goal's feedback and verdict.
  * The backend is shared by both and is thread-safe by contract.
  */
 class PtzActionServer
@@ -154,8 +143,6 @@ private:
   /// Hands a goal to the supervisor, which converts, checks and runs it.
   template <class Action>
   void submit(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
-  /// Rejects the frame goal waiting for tf, if any, because a \p kind goal came after it.
-  void supersedeWaitingFrameGoal(ActionKind kind);
   /// Aims the optical axis at a clicked point, as a frame goal aims it at a frame's origin: it waits for tf the same
   /// way, then preempts the active goal (or is rejected, moving nothing, with the reason in the log).
   void lookAt(const geometry_msgs::PointStamped& point);
@@ -168,16 +155,6 @@ private:
   void armStatusRelease(TimePoint due);
   /// On the backend's thread when its state may have changed: queues one early verdict check on the main thread.
   void onBackendSample();
-
-  /// Converts a goal into what to command (a GoalConverter); returns "" or the reason to reject it.
-  std::string toCommand(const PtzGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
-  std::string toCommand(const PtzRelToGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
-  std::string toCommand(const PtzFrameGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
-  std::string toCommand(const PtzPresetGoal& goal, ActionKind kind, const PtzSample& sample,
-                        GoalCommand& command) const;
-  std::string toCommand(const geometry_msgs::PointStamped& point, const PtzSample& sample, GoalCommand& command) const;
-  /// The transform from \p frame_id to the base frame, looked up once without waiting; "" or the reason.
-  std::string lookupFrame(const std::string& frame_id, Eigen::Isometry3d& frame_in_base) const;
 
   ros::NodeHandle node_handle_;  ///< the node's namespace: actions and topics; the main callback queue
   NodeConfig config_;
@@ -205,27 +182,10 @@ private:
   int status_period_ticks_ = 0;                      ///< state ticks between status lists; 0: none (set before start)
   int status_ticks_ = 0;                             ///< state ticks so far (state thread)
 
-  /// A frame goal held back, neither accepted nor rejected, while a listener that just started hears tf.
-  struct WaitingFrameGoal
-  {
-    std::string id;        ///< actionlib goal id, for a cancel
-    std::string frame_id;  ///< the frame it waits for
-    std::function<void()> submit;
-    std::function<void(const std::string&)> reject;
-    std::function<void(const std::string&)> cancel;
-  };
-
-  /// Holds \p goal until its frame is known or the wait is over (checkWaitingFrameGoal()).
-  void waitForFrame(WaitingFrameGoal goal);
-  /// Submits the waiting frame goal once its frame is known or the wait is over.
-  void checkWaitingFrameGoal();
-  /// The waiting frame goal, which waits no more (there must be one).
-  WaitingFrameGoal takeWaitingFrameGoal();
-
   // Frame lookups for position_abs_tf and frame goals; the listener feeds the buffer from the main queue.
   std::unique_ptr<FrameListener> frame_listener_;
-  std::optional<WaitingFrameGoal> waiting_frame_goal_;
-  ros::SteadyTimer frame_wait_timer_;  ///< checks the waiting frame goal's frame while one waits
+  std::unique_ptr<FrameGoalHold> frame_hold_;   ///< a frame goal waiting for tf; built by start()
+  std::unique_ptr<GoalTranslator> translator_;  ///< goals to commands; built by start()
 
   std::unique_ptr<PtzServer> position_abs_server_;
   std::unique_ptr<PtzServer> position_rel_server_;

@@ -1,0 +1,57 @@
+/**
+ * \file
+ * \brief What each action's goal asks the device for: contract angles, tf frames and presets turned into a
+ * GoalCommand, or the reason to reject the goal.
+ */
+#pragma once
+
+#include <string>
+
+#include <Eigen/Geometry>
+#include <geometry_msgs/PointStamped.h>
+
+#include "ptz_action_server/PtzAction.h"
+#include "ptz_action_server/PtzFrameAction.h"
+#include "ptz_action_server/PtzPresetAction.h"
+#include "ptz_action_server/PtzRelToAction.h"
+#include "ptz_action_server/core/goal_supervisor.h"
+#include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/ros/action_kind.h"
+#include "ptz_action_server/ros/frame_listener.h"
+#include "ptz_action_server/ros/preset_services.h"
+
+namespace ptz_action_server
+{
+/**
+ * \brief Translates the node's goals for the GoalSupervisor (its GoalConverter), which calls it with the device's
+ * current sample when it takes a goal.
+ *
+ * Frames are looked up once, at the latest transform, without waiting (a frame goal that must wait for tf waits
+ * before it reaches the supervisor: FrameGoalHold). One thread: the node's main queue.
+ */
+class GoalTranslator
+{
+public:
+  /// \p frames and \p presets must outlive the converter. \p limits are the node's.
+  GoalTranslator(const PtzKinematics& kinematics, const Capabilities& limits, const FrameListener& frames,
+                 const PresetServices& presets);
+
+  /// Each returns "" with \p command filled, or the reason to reject the goal.
+  std::string convert(const PtzGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
+  std::string convert(const PtzRelToGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
+  std::string convert(const PtzFrameGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
+  std::string convert(const PtzPresetGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
+  /// A clicked point: the optical axis through it, the zoom where it is.
+  std::string convert(const geometry_msgs::PointStamped& point, const PtzSample& sample, GoalCommand& command) const;
+
+private:
+  /// The transform from \p frame_id to the base frame, looked up once without waiting; "" or the reason.
+  std::string lookupFrame(const std::string& frame_id, Eigen::Isometry3d& frame_in_base) const;
+
+  const PtzKinematics& kinematics_;
+  const Capabilities& limits_;
+  const FrameListener& frames_;
+  const PresetServices& presets_;
+};
+
+}  // namespace ptz_action_server

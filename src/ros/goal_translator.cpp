@@ -1,0 +1,154 @@
+#include "ptz_action_server/ros/goal_translator.h"
+
+#include <optional>
+
+#include <tf2/exceptions.h>
+#include <tf2_eigen/tf2_eigen.h>
+
+#include "ptz_action_server/core/capabilities.h"
+#include "ptz_action_server/core/goal_validation.h"
+
+namespace ptz_action_server
+{
+GoalTranslator::GoalTranslator(const PtzKinematics& kinematics, const Capabilities& limits, const FrameListener& frames,
+                               const PresetServices& presets)
+  : kinematics_(kinematics), limits_(limits), frames_(frames), presets_(presets)
+{
+}
+
+std::string GoalTranslator::convert(const PtzGoal& goal, ActionKind kind, const PtzSample& sample,
+                                    GoalCommand& command) const
+{
+  const AxisValues values{ { goal.pan, goal.tilt, goal.zoom } };
+  switch (kind)
+  {
+    case ActionKind::POSITION_REL: {
+      std::string reason = findNonFinite(values, "offset");
+      command.values = values;
+      for (Axis axis : ALL_AXES)
+      {
+        const AxisCapability& capability = limits_.axes[axis];
+        if (capability.present && capability.feedback)
+        {
+          command.values[axis] += sample.position[axis];
+        }
+        else if (values[axis] != 0.0 && reason.empty())
+        {
+          reason = findUnsupported(limits_, axis, AxisRequest::OFFSET);
+        }
+        else
+        {
+          command.values[axis] = axis == ZOOM ? 0.0 : values[axis];  // zoom 0: left alone (leavesAxisAlone())
+        }
+      }
+      return reason;
+    }
+    case ActionKind::VELOCITY:
+      command.velocity = true;
+      command.values = values;
+      return findNonFinite(values, "velocity");
+    default:
+      command.values = values;
+      return findNonFinite(values, "position");
+  }
+}
+
+std::string GoalTranslator::convert(const PtzRelToGoal& goal, ActionKind, const PtzSample&, GoalCommand& command) const
+{
+  std::string reason = findNonFinite({ { goal.pan, goal.tilt, goal.zoom } }, "position");
+  Eigen::Isometry3d frame_in_base = Eigen::Isometry3d::Identity();
+  if (reason.empty())
+  {
+    reason = lookupFrame(goal.frame_id, frame_in_base);
+  }
+  if (!reason.empty())
+  {
+    return reason;
+  }
+  // The goal's pan and tilt follow the contract's convention in the axes of frame_id.
+  const Eigen::Vector3d in_base = frame_in_base.linear() * directionOf(goal.pan, goal.tilt);
+  command.values[ZOOM] = goal.zoom;
+  if (!kinematics_.aimAlong(in_base, command.values[PAN], command.values[TILT]))
+  {
+    return "no pan and tilt aim the camera along that direction of '" + goal.frame_id + "'";
+  }
+  return {};
+}
+
+std::string GoalTranslator::convert(const PtzFrameGoal& goal, ActionKind kind, const PtzSample&,
+                                    GoalCommand& command) const
+{
+  command.track = kind == ActionKind::TRACK_FRAME;
+  std::string reason = findNonFinite({ { 0.0, 0.0, goal.zoom } }, "position");
+  Eigen::Isometry3d frame_in_base = Eigen::Isometry3d::Identity();
+  if (reason.empty())
+  {
+    reason = lookupFrame(goal.frame_id, frame_in_base);
+  }
+  if (!reason.empty())
+  {
+    return reason;
+  }
+  command.values[ZOOM] = goal.zoom;
+  if (!kinematics_.aimAt(frame_in_base.translation(), command.values[PAN], command.values[TILT]))
+  {
+    return "cannot point at the origin of '" + goal.frame_id + "': it is too close to the camera";
+  }
+  return {};
+}
+
+std::string GoalTranslator::convert(const PtzPresetGoal& goal, ActionKind, const PtzSample&, GoalCommand& command) const
+{
+  const std::optional<AxisValues> pose = presets_.find(goal.name);
+  if (!pose)
+  {
+    return "no preset named '" + goal.name + "'";
+  }
+  command.values = *pose;
+  return {};
+}
+
+std::string GoalTranslator::convert(const geometry_msgs::PointStamped& point, const PtzSample& sample,
+                                    GoalCommand& command) const
+{
+  const Eigen::Vector3d in_frame(point.point.x, point.point.y, point.point.z);
+  if (!in_frame.allFinite())
+  {
+    return "the point is not finite";
+  }
+  Eigen::Isometry3d frame_in_base = Eigen::Isometry3d::Identity();
+  const std::string reason = lookupFrame(point.header.frame_id, frame_in_base);
+  if (!reason.empty())
+  {
+    return reason;
+  }
+  // The zoom stays where it is (0: left alone on a device that cannot position or report it).
+  const AxisCapability& zoom = limits_.axes[ZOOM];
+  command.values[ZOOM] = zoom.present && zoom.absolute && zoom.feedback ? sample.position[ZOOM] : 0.0;
+  if (!kinematics_.aimAt(frame_in_base * in_frame, command.values[PAN], command.values[TILT]))
+  {
+    return "cannot point at it: it is too close to the camera";
+  }
+  return {};
+}
+
+std::string GoalTranslator::lookupFrame(const std::string& frame_id, Eigen::Isometry3d& frame_in_base) const
+{
+  if (frame_id.empty())
+  {
+    return "frame_id is empty";
+  }
+  try
+  {
+    // Time 0: the latest transform, without waiting, so other goals are never held up.
+    frame_in_base =
+        tf2::transformToEigen(frames_.buffer().lookupTransform(kinematics_.baseFrame(), frame_id, ros::Time(0)));
+  }
+  catch (const tf2::TransformException& error)
+  {
+    return "frame '" + frame_id + "' is unknown to tf: " + error.what();
+  }
+  return {};
+}
+
+}  // namespace ptz_action_server
