@@ -1,19 +1,12 @@
 #include "ptz_action_server/core/timer_thread.h"
 
+#include "ptz_action_server/core/process_shared.h"
+
 namespace ptz_action_server
 {
 std::shared_ptr<TimerThread> TimerThread::shared()
 {
-  static std::mutex mutex;
-  static std::weak_ptr<TimerThread> instance;
-  std::lock_guard<std::mutex> lock(mutex);
-  std::shared_ptr<TimerThread> timer = instance.lock();
-  if (!timer)
-  {
-    timer = std::make_shared<TimerThread>();
-    instance = timer;
-  }
-  return timer;
+  return processShared<TimerThread>();
 }
 
 TimerThread::TimerThread() : thread_([this] { run(); })

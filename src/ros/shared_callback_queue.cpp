@@ -1,21 +1,12 @@
 #include "ptz_action_server/ros/shared_callback_queue.h"
 
-#include <mutex>
+#include "ptz_action_server/core/process_shared.h"
 
 namespace ptz_action_server
 {
 std::shared_ptr<SharedCallbackQueue> SharedCallbackQueue::shared()
 {
-  static std::mutex mutex;
-  static std::weak_ptr<SharedCallbackQueue> instance;
-  std::lock_guard<std::mutex> lock(mutex);
-  std::shared_ptr<SharedCallbackQueue> queue = instance.lock();
-  if (!queue)
-  {
-    queue = std::make_shared<SharedCallbackQueue>();
-    instance = queue;
-  }
-  return queue;
+  return processShared<SharedCallbackQueue>();
 }
 
 SharedCallbackQueue::SharedCallbackQueue() : spinner_(1, &queue_)

@@ -3,20 +3,13 @@
 #include <set>
 #include <string>
 
+#include "ptz_action_server/core/process_shared.h"
+
 namespace ptz_action_server
 {
 std::shared_ptr<SharedTransforms> SharedTransforms::shared()
 {
-  static std::mutex mutex;
-  static std::weak_ptr<SharedTransforms> instance;
-  std::lock_guard<std::mutex> lock(mutex);
-  std::shared_ptr<SharedTransforms> transforms = instance.lock();
-  if (!transforms)
-  {
-    transforms = std::make_shared<SharedTransforms>();
-    instance = transforms;
-  }
-  return transforms;
+  return processShared<SharedTransforms>();
 }
 
 SharedTransforms::SharedTransforms()
