@@ -63,7 +63,7 @@ LinkConfig OnvifConfig::defaultLink()
 }
 
 OnvifProtocol::OnvifProtocol(const OnvifSettings& settings, DeviceSession& session)
-  : settings_(settings), session_(session), http_(session.http()), random_(std::random_device{}())
+  : settings_(settings), session_(session), http_(session.http())
 {
   request_.content_type = onvif::SOAP_CONTENT_TYPE;
 }
@@ -170,14 +170,7 @@ bool OnvifProtocol::call(const std::string& path, const std::string& body, bool 
   request_.path = path;
   if (secure && !settings_.username.empty())
   {
-    onvif::UsernameToken token;
-    token.username = settings_.username;
-    token.nonce.resize(16);
-    for (char& byte : token.nonce)
-    {
-      byte = static_cast<char>(random_());
-    }
-    token.created = onvif::isoTime(cameraTime());
+    const onvif::UsernameToken token = onvif::newUsernameToken(settings_.username, onvif::isoTime(cameraTime()));
     request_.body = onvif::envelope(body, &token, settings_.password);
   }
   else
