@@ -304,6 +304,10 @@ void DeviceSession::onLinkBytes(const std::uint8_t* data, std::size_t size)
 
 void DeviceSession::onLinkDown(const std::string& reason)
 {
+  // A certificate refused before the device was ever up is refused again on every retry: start-up ends now, with
+  // that reason, instead of at startup_timeout.
+  const auto* http = dynamic_cast<const HttpLink*>(link_.get());
+  const bool certificate_refused = http != nullptr && http->certificateRefused();
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (link_was_up_)
@@ -313,6 +317,13 @@ void DeviceSession::onLinkDown(const std::string& reason)
     connected_ = false;
     ready_ = false;
     has_state_ = false;
+    if (certificate_refused && !ever_up_ && startup_problem_.empty())
+    {
+      // "https://host:port: GET ...: TLS refused: ..." without the address start() names already.
+      const std::string address = link_->config().describe() + ": ";
+      startup_problem_ = reason.rfind(address, 0) == 0 ? reason.substr(address.size()) : reason;
+      startup_changed_.notify_all();
+    }
   }
   protocol_->onDisconnected();
   if (state_listener_)
