@@ -1,6 +1,7 @@
 #include "ptz_action_server/core/device/device_session.h"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 
 #include <boost/asio/post.hpp>
@@ -334,6 +335,9 @@ void DeviceSession::onLinkDown(const std::string& reason)
 
 void DeviceSession::tick()
 {
+  // Ticks keep their rate from one start to the next: a poll that blocks (an HTTP request to a slow camera) is
+  // followed by the next at once, not a poll_period later, so a reply at 90 % of state_timeout still keeps the link.
+  const auto started = std::chrono::steady_clock::now();
   {
     std::lock_guard<std::mutex> lock(mutex_);
     checkLinkLocked(clock_->now());
@@ -342,7 +346,7 @@ void DeviceSession::tick()
   {
     protocol_->poll();
   }
-  tick_timer_.expires_after(toDuration(config_.poll_period));
+  tick_timer_.expires_at(started + toDuration(config_.poll_period));
   tick_timer_.async_wait([this](const boost::system::error_code& error) {
     if (!error)
     {

@@ -619,13 +619,20 @@ void OnvifProtocol::command(const std::string& path, const std::string& body, co
 {
   const std::uint64_t serial = session_.currentCommand();
   std::string problem;
-  if (!call(path, body, true, problem) && !problem.empty())
+  const bool done = call(path, body, true, problem);
+  if (!done && !problem.empty())
   {
     session_.reportFault(problem, serial);
     if (std::string(operation) == "AbsoluteMove" && onvif::faultHas(message_, "ActionNotSupported"))
     {
       absoluteMoveRefused(message_.fault_text);
     }
+  }
+  if (done || !problem.empty())
+  {
+    // An answer, even a fault: the camera is alive (a slow camera's command and the next GetStatus may leave more
+    // than state_timeout between two positions; each answer within it keeps the link up).
+    session_.reportAlive();
   }
   if (std::string(operation) == "ContinuousMove")
   {
