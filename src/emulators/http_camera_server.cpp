@@ -559,6 +559,23 @@ void HttpCameraServer::setListening(bool listening)
   });
 }
 
+void HttpCameraServer::recordSecrets(const std::vector<std::string>& values)
+{
+  if (config_.secrets_file.empty())
+  {
+    return;
+  }
+  std::lock_guard<std::mutex> lock(secrets_mutex_);
+  std::ofstream file(config_.secrets_file, std::ios::app);
+  for (const std::string& value : values)
+  {
+    if (!value.empty())
+    {
+      file << value << '\n';
+    }
+  }
+}
+
 void HttpCameraServer::renewNonce()
 {
   runOnServerThread([this] { nonce_ = newNonce(); });
@@ -568,8 +585,10 @@ std::string HttpCameraServer::newNonce()
 {
   static thread_local std::mt19937_64 random(std::random_device{}());
   nonce_used_ = 0;
-  return base64Encode(formatText("%016llx:%llu", static_cast<unsigned long long>(random()),
-                                 static_cast<unsigned long long>(++nonce_serial_)));
+  const std::string nonce = base64Encode(formatText("%016llx:%llu", static_cast<unsigned long long>(random()),
+                                                    static_cast<unsigned long long>(++nonce_serial_)));
+  recordSecrets({ nonce });
+  return nonce;
 }
 
 bool HttpCameraServer::authorised(const std::string& method, const std::string& target,
@@ -578,6 +597,7 @@ bool HttpCameraServer::authorised(const std::string& method, const std::string& 
   stale = false;
   if (config_.auth == HttpAuth::BASIC)
   {
+    recordSecrets({ authorization.rfind("Basic ", 0) == 0 ? authorization.substr(6) : std::string() });
     return authorization == "Basic " + base64Encode(config_.username + ":" + config_.password);
   }
   if (authorization.rfind("Digest ", 0) != 0)
@@ -585,6 +605,7 @@ bool HttpCameraServer::authorised(const std::string& method, const std::string& 
     return false;
   }
   std::map<std::string, std::string> fields = digestFields(authorization.substr(7));
+  recordSecrets({ fields["response"], fields["nonce"], fields["cnonce"] });
   if (fields["nonce"] != nonce_)
   {
     stale = !fields["nonce"].empty();

@@ -403,6 +403,11 @@ HttpAnswer OnvifCameraEmulator::handle(const std::string& target, const std::str
   std::lock_guard<std::mutex> lock(mutex_);
   if (operation != "GetSystemDateAndTime")
   {
+    const Element* token = path(child(message.header, ns::WSSE, "Security"), ns::WSSE, { "UsernameToken" });
+    if (token != nullptr)
+    {
+      server_->recordSecrets({ text(child(token, ns::WSSE, "Nonce")), text(child(token, ns::WSSE, "Password")) });
+    }
     const std::string refused = checkToken(message);
     if (!refused.empty())
     {

@@ -23,6 +23,8 @@ constexpr const char* HTTP_OPTIONS_HELP = R"(HTTP options:
   --tls                  serve https with a self-signed certificate made at start (EC P-256, for 127.0.0.1 and
                          localhost); prints its SHA-256 fingerprint (the backend's tls_fingerprint)
   --cert-file PATH       with --tls: write the certificate there, PEM (the backend's ca_file)
+  --secrets-file PATH    append every credential-derived value requests carried there, one a line (Digest
+                         nonces, responses, cnonces; WS-Security Nonces and PasswordDigests): for leak tests
 )";
 
 /// The fault options and signals every emulated IP camera takes (after its own options in its usage).
@@ -88,6 +90,10 @@ inline bool parseHttpCameraOption(const std::string& arg, const Value& value, co
   else if (arg == "--cert-file")
   {
     options.certificate_file = value();
+  }
+  else if (arg == "--secrets-file")
+  {
+    options.http.secrets_file = value();
   }
   else if (arg == "--delay")
   {

@@ -41,6 +41,8 @@ Options:
   --auth MODE            none (default: WS-Security only) or digest (HTTP Digest as well, with the same
                          credentials, as some cameras demand)
   --nonce-uses N         with --auth digest: a nonce goes stale after N requests (default 0: never)
+  --secrets-file PATH    append every credential-derived value requests carried there, one a line (WS-Security
+                         Nonces and PasswordDigests; Digest nonces, responses, cnonces): for leak tests
 Camera options:
   --mode MODE            a camera as found in the field (default standard; may be given more than once):
                            generic-status        lists SphericalPositionSpaceDegrees, but its default space, and so

@@ -1,6 +1,7 @@
 /**
  * \file
- * \brief The ONVIF codec: WS-Security PasswordDigest against the ONVIF programmer's guide example, golden request
+ * \brief The ONVIF codec: WS-Security PasswordDigest against the ONVIF programmer's guide example, nonces that never
+ * repeat (10,000 headers, in the same millisecond), golden request
  * envelopes, replies in any prefixes, SOAP faults (two deep, as the PTZ service sends them), status in each space and
  * without a position, profiles' default spaces, nodes' spaces and ranges (INF, a wrong listed range read as listed),
  * services and presets, times and durations, and what malformed replies are called. The replies are written from the
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 #include "ptz_action_server/core/http/crypto.h"
 #include "ptz_action_server/core/onvif/onvif_codec.h"
@@ -24,6 +26,41 @@ TEST(OnvifCodec, PasswordDigestOfTheProgrammersGuideExample)
   std::string nonce;
   ASSERT_TRUE(base64Decode("LKqI6G/AikKCQrN0zqZFlg==", nonce));
   EXPECT_EQ(passwordDigest(nonce, "2010-09-16T07:50:45Z", "userpassword"), "tuOSpGlFlIXsozq4HFNeeGeFLEI=");
+}
+
+/// The text of the first <wsse:NAME ...>TEXT</wsse:NAME> in \p xml.
+std::string wsseText(const std::string& xml, const std::string& name)
+{
+  const std::size_t open = xml.find("<wsse:" + name);
+  const std::size_t start = open == std::string::npos ? open : xml.find('>', open);
+  const std::size_t end = start == std::string::npos ? start : xml.find("</wsse:" + name + ">", start);
+  return end == std::string::npos ? std::string() : xml.substr(start + 1, end - start - 1);
+}
+
+TEST(OnvifCodec, WsSecurityNoncesNeverRepeatEvenWithinOneCreatedTime)
+{
+  // Every header in the same millisecond with the same password: only the nonce tells them apart, so a nonce that
+  // repeats also repeats the PasswordDigest (a replay a camera must refuse).
+  constexpr int HEADERS = 10000;
+  const std::string created = isoTime(1.7e9);
+  std::set<std::string> nonces;
+  std::set<std::string> digests;
+  for (int i = 0; i < HEADERS; ++i)
+  {
+    const UsernameToken token = newUsernameToken("operator", created);
+    ASSERT_EQ(token.nonce.size(), 16u);
+    const std::string xml = envelope("<tptz:Stop/>", &token, "s3cret");
+    ASSERT_EQ(xml.find("s3cret"), std::string::npos);  // only its digest travels
+    const std::string nonce = wsseText(xml, "Nonce");
+    std::string raw;
+    ASSERT_TRUE(base64Decode(nonce, raw)) << nonce;
+    ASSERT_EQ(raw, token.nonce);
+    EXPECT_EQ(wsseText(xml, "Password"), passwordDigest(raw, created, "s3cret"));
+    nonces.insert(nonce);
+    digests.insert(wsseText(xml, "Password"));
+  }
+  EXPECT_EQ(nonces.size(), static_cast<std::size_t>(HEADERS));
+  EXPECT_EQ(digests.size(), static_cast<std::size_t>(HEADERS));
 }
 
 TEST(OnvifCodec, AbsoluteMoveEnvelopeIsGolden)

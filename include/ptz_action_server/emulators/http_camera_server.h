@@ -11,6 +11,7 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
@@ -36,6 +37,10 @@ struct HttpCameraServerConfig
   /// https: TLS with a self-signed certificate generated at start (an EC P-256 key; names 127.0.0.1, localhost
   /// and host). A plain-HTTP request on the port is answered 400 and counted, never served.
   bool tls = false;
+  /// "" = none: the file the server appends every credential-derived value it meets to, one a line (the Digest
+  /// nonces it hands out, each request's Digest response and cnonce, a Basic token; the ONVIF camera adds the
+  /// WS-Security Nonce and PasswordDigest), so a test can check that a client never prints one.
+  std::string secrets_file;
 };
 
 /// A request as the server read it.
@@ -122,6 +127,8 @@ public:
   void setListening(bool listening);
   /// Makes every outstanding nonce stale (the next request is challenged with stale=true).
   void renewNonce();
+  /// Appends \p values (the empty ones skipped) to config's secrets_file, one a line; nothing without one. Any thread.
+  void recordSecrets(const std::vector<std::string>& values);
 
   ReceivedLog<HttpExchange>& received()
   {
@@ -161,6 +168,7 @@ private:
   ReceivedLog<HttpExchange> received_;
   HttpServerCounters counters_;
 
+  std::mutex secrets_mutex_;  ///< guards appends to secrets_file
   mutable std::mutex mutex_;  ///< guards the fault switches and the certificate's texts
   bool silent_ = false;
   bool endless_ = false;

@@ -436,10 +436,17 @@ void AxisProtocol::command(const std::string& arguments)
   const std::uint64_t serial = session_.currentCommand();
   std::string problem;
   vapix::Reply reply;
-  if (!request(arguments, reply, problem) && !problem.empty())
+  const bool done = request(arguments, reply, problem);
+  if (!done && !problem.empty())
   {
     ++counters_.refusals;
     session_.reportFault(problem, serial);
+  }
+  if (done || !problem.empty())
+  {
+    // An answer, even a refusal: the camera is alive. A slow camera's command and the next poll, one request at a
+    // time, may leave more than state_timeout between two positions; each answer within it keeps the link up.
+    session_.reportAlive();
   }
 }
 

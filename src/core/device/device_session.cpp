@@ -1,6 +1,7 @@
 #include "ptz_action_server/core/device/device_session.h"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 
 #include <boost/asio/post.hpp>
@@ -304,6 +305,10 @@ void DeviceSession::onLinkBytes(const std::uint8_t* data, std::size_t size)
 
 void DeviceSession::onLinkDown(const std::string& reason)
 {
+  // A certificate refused before the device was ever up is refused again on every retry: start-up ends now, with
+  // that reason, instead of at startup_timeout.
+  const auto* http = dynamic_cast<const HttpLink*>(link_.get());
+  const bool certificate_refused = http != nullptr && http->certificateRefused();
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (link_was_up_)
@@ -313,6 +318,13 @@ void DeviceSession::onLinkDown(const std::string& reason)
     connected_ = false;
     ready_ = false;
     has_state_ = false;
+    if (certificate_refused && !ever_up_ && startup_problem_.empty())
+    {
+      // "https://host:port: GET ...: TLS refused: ..." without the address start() names already.
+      const std::string address = link_->config().describe() + ": ";
+      startup_problem_ = reason.rfind(address, 0) == 0 ? reason.substr(address.size()) : reason;
+      startup_changed_.notify_all();
+    }
   }
   protocol_->onDisconnected();
   if (state_listener_)
@@ -323,6 +335,9 @@ void DeviceSession::onLinkDown(const std::string& reason)
 
 void DeviceSession::tick()
 {
+  // Ticks keep their rate from one start to the next: a poll that blocks (an HTTP request to a slow camera) is
+  // followed by the next at once, not a poll_period later, so a reply at 90 % of state_timeout still keeps the link.
+  const auto started = std::chrono::steady_clock::now();
   {
     std::lock_guard<std::mutex> lock(mutex_);
     checkLinkLocked(clock_->now());
@@ -331,7 +346,7 @@ void DeviceSession::tick()
   {
     protocol_->poll();
   }
-  tick_timer_.expires_after(toDuration(config_.poll_period));
+  tick_timer_.expires_at(started + toDuration(config_.poll_period));
   tick_timer_.async_wait([this](const boost::system::error_code& error) {
     if (!error)
     {

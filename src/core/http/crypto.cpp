@@ -1,8 +1,10 @@
 #include "ptz_action_server/core/http/crypto.h"
 
 #include <openssl/evp.h>
+#include <openssl/rand.h>
 
 #include <cstdio>
+#include <stdexcept>
 
 namespace ptz_action_server
 {
@@ -67,6 +69,16 @@ bool base64Decode(const std::string& text, std::string& bytes)
   }
   bytes.resize(static_cast<std::size_t>(size) - padding);
   return true;
+}
+
+std::string randomBytes(std::size_t count)
+{
+  std::string bytes(count, '\0');
+  if (count > 0 && RAND_bytes(reinterpret_cast<unsigned char*>(&bytes[0]), static_cast<int>(count)) != 1)
+  {
+    throw std::runtime_error("OpenSSL's random generator has no entropy to give (RAND_bytes failed)");
+  }
+  return bytes;
 }
 
 }  // namespace ptz_action_server

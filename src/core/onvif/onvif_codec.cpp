@@ -152,6 +152,15 @@ const Space* findSpace(const std::vector<Space>& spaces, const std::string& uri)
   return nullptr;
 }
 
+UsernameToken newUsernameToken(const std::string& username, const std::string& created)
+{
+  UsernameToken token;
+  token.username = username;
+  token.nonce = randomBytes(16);
+  token.created = created;
+  return token;
+}
+
 std::string passwordDigest(const std::string& nonce, const std::string& created, const std::string& password)
 {
   return base64Encode(sha1(nonce + created + password));

@@ -63,7 +63,7 @@ LinkConfig OnvifConfig::defaultLink()
 }
 
 OnvifProtocol::OnvifProtocol(const OnvifSettings& settings, DeviceSession& session)
-  : settings_(settings), session_(session), http_(session.http()), random_(std::random_device{}())
+  : settings_(settings), session_(session), http_(session.http())
 {
   request_.content_type = onvif::SOAP_CONTENT_TYPE;
 }
@@ -170,14 +170,7 @@ bool OnvifProtocol::call(const std::string& path, const std::string& body, bool 
   request_.path = path;
   if (secure && !settings_.username.empty())
   {
-    onvif::UsernameToken token;
-    token.username = settings_.username;
-    token.nonce.resize(16);
-    for (char& byte : token.nonce)
-    {
-      byte = static_cast<char>(random_());
-    }
-    token.created = onvif::isoTime(cameraTime());
+    const onvif::UsernameToken token = onvif::newUsernameToken(settings_.username, onvif::isoTime(cameraTime()));
     request_.body = onvif::envelope(body, &token, settings_.password);
   }
   else
@@ -626,13 +619,20 @@ void OnvifProtocol::command(const std::string& path, const std::string& body, co
 {
   const std::uint64_t serial = session_.currentCommand();
   std::string problem;
-  if (!call(path, body, true, problem) && !problem.empty())
+  const bool done = call(path, body, true, problem);
+  if (!done && !problem.empty())
   {
     session_.reportFault(problem, serial);
     if (std::string(operation) == "AbsoluteMove" && onvif::faultHas(message_, "ActionNotSupported"))
     {
       absoluteMoveRefused(message_.fault_text);
     }
+  }
+  if (done || !problem.empty())
+  {
+    // An answer, even a fault: the camera is alive (a slow camera's command and the next GetStatus may leave more
+    // than state_timeout between two positions; each answer within it keeps the link up).
+    session_.reportAlive();
   }
   if (std::string(operation) == "ContinuousMove")
   {

@@ -311,6 +311,7 @@ const HttpReply& HttpLink::perform(const HttpRequest& request)
   reply_.status = 0;
   error_buffer_[0] = '\0';
   pin_.presented.clear();
+  certificate_refused_ = false;
   if (!isOpen())
   {
     ++counters_.writes_dropped;
@@ -371,6 +372,7 @@ const HttpReply& HttpLink::perform(const HttpRequest& request)
     if (tls_failed && (result == CURLE_PEER_FAILED_VERIFICATION || !pin_.presented.empty()))
     {
       ++http_counters_.tls_refusals;
+      certificate_refused_ = true;
     }
     const std::string detail =
         oversized  ? formatText("an answer longer than %zu bytes: dropped", MAX_ANSWER) :

@@ -5,6 +5,7 @@
  */
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 namespace ptz_action_server
@@ -17,5 +18,8 @@ std::string sha1(const std::string& bytes);
 std::string base64Encode(const std::string& bytes);
 /// Decodes standard Base64 (padding required); false for anything else.
 bool base64Decode(const std::string& text, std::string& bytes);
+/// \p count bytes from OpenSSL's CSPRNG (RAND_bytes: seeded by the operating system), for nonces no one can guess
+/// or see repeat. Throws std::runtime_error if it has no entropy to give.
+std::string randomBytes(std::size_t count);
 
 }  // namespace ptz_action_server

@@ -41,6 +41,9 @@ struct UsernameToken
   std::string created;  ///< UTC in the camera's clock: "2026-11-21T10:20:30.123Z"
 };
 
+/// A token for one request of \p username: a fresh 16-byte nonce from randomBytes() (never repeated, never
+/// guessable), and \p created.
+UsernameToken newUsernameToken(const std::string& username, const std::string& created);
 /// Base64(SHA-1(nonce + created + password)).
 std::string passwordDigest(const std::string& nonce, const std::string& created, const std::string& password);
 /// "YYYY-MM-DDTHH:MM:SS.mmmZ" of \p utc_seconds since the epoch.

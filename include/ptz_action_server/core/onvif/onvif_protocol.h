@@ -8,7 +8,6 @@
 #include <functional>
 #include <memory>
 #include <mutex>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -178,7 +177,6 @@ private:
   Report report_;
 
   // I/O thread only.
-  std::mt19937_64 random_;
   double clock_offset_ = 0.0;  ///< camera UTC - our UTC, s
   onvif::ServicePaths paths_;
   onvif::Profile profile_;

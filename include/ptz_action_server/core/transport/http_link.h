@@ -91,6 +91,12 @@ public:
     return http_counters_;
   }
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
+  /// The last request failed because its certificate was refused (untrusted, or not the pinned one): retrying the
+  /// same camera will not change that. I/O thread.
+  bool certificateRefused() const
+  {
+    return certificate_refused_;
+  }
 
   /// The warning a session gives once for \p config: TLS with verification off; "" for none.
   static std::string configWarning(const LinkConfig& config);
@@ -122,6 +128,7 @@ private:
   bool challenged_ = false;  ///< the camera has answered 401 once: it wants HTTP authentication
   CertificatePin pin_;       ///< the pin and what the camera presented (OpenSSL's verify callback fills it, I/O thread)
   HttpCounters http_counters_;
+  bool certificate_refused_ = false;  ///< the last request's certificate was refused (I/O thread)
 };
 
 }  // namespace ptz_action_server
