@@ -374,7 +374,9 @@ TEST_P(DeviceContract, ASlowDeviceWorksWithinItsDeadlineAndPastItEndsTheGoalAsLi
   slow.reply_delay = 0.9 * deadline;
   ASSERT_TRUE(device_->setFaults(slow));
   const AxisValues near = device_->goal(0.3, 0.1);
-  const std::string end = runGoalToItsEnd(*backend_, near, stateTimeout());
+  // The stall timeout a user of a slow device sets: a poll round of several answers (Pelco-D, VISCA) at 90 % of a
+  // 0.1 s allowance each leaves 10 ms to the scheduler, and a busy machine sometimes takes them, losing a round.
+  const std::string end = runGoalToItsEnd(*backend_, near, 2.0 * stateTimeout());
   EXPECT_EQ(end.rfind("SUCCEEDED", 0), 0u) << end << "; last loss " << backend_->lastLinkLoss();
 
   // Every answer just past the deadline: nothing answers in time, and a goal under way ends as link lost, never as a
