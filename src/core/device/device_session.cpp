@@ -13,12 +13,14 @@
 namespace ptz_action_server
 {
 DeviceSession::DeviceSession(const LinkConfig& link, const DeviceSessionConfig& config,
-                             std::shared_ptr<const Clock> clock)
+                             std::shared_ptr<const Clock> clock, DeviceIoPool& pool)
   : config_(config)
   , clock_(std::move(clock))
-  , link_(Link::create(context_, link, *this))
-  , tick_timer_(context_)
-  , grace_timer_(context_)
+  // A link whose calls block (HTTP) would stall every session on a shared thread: it gets a thread of its own.
+  , io_(pool.acquire(link.kind == LinkKind::HTTP))
+  , link_(Link::create(io_.context(), link, *this))
+  , tick_timer_(io_.context())
+  , grace_timer_(io_.context())
   , motion_(config.settle_window)
 {
   const std::string link_warning = HttpLink::configWarning(link);  // TLS without verification, once
@@ -58,14 +60,18 @@ void DeviceSession::attach(DeviceProtocol& protocol)
 
 void DeviceSession::start()
 {
-  thread_ = std::thread([this] {
-    auto work = boost::asio::make_work_guard(context_);
-    context_.run();
-  });
-  boost::asio::post(context_, [this] {
-    link_->open();
-    tick();
-  });
+  {
+    std::lock_guard<std::mutex> lock(post_mutex_);
+    if (started_ || stop_begun_)
+    {
+      return;
+    }
+    started_ = true;
+    boost::asio::post(context(), [this] {
+      link_->open();
+      tick();
+    });
+  }
   std::unique_lock<std::mutex> lock(mutex_);
   const bool settled = startup_changed_.wait_for(lock, toDuration(config_.startup_timeout),
                                                  [this] { return ever_up_ || !startup_problem_.empty(); });
@@ -94,39 +100,84 @@ void DeviceSession::start()
 
 void DeviceSession::stop()
 {
-  if (!thread_.joinable())
+  if (DeviceIoPool::onIoThread())
   {
-    return;
+    throw std::logic_error("a device session (" + link_->config().describe() +
+                           ") stopped or destroyed on a device I/O thread: it would wait for its own thread's work");
   }
-  boost::asio::post(context_, [this] {
-    tick_timer_.cancel();
-    if (link_->isOpen())
+  auto stopped = std::make_shared<std::promise<void>>();
+  std::future<void> done = stopped->get_future();
+  {
+    std::lock_guard<std::mutex> lock(post_mutex_);
+    if (stop_begun_)
     {
-      protocol_->shutdown();
+      return;
     }
-    // Close once the last words are out, or after the grace time if the device does not take them.
-    link_->whenWritten([this] { finishStop(); });
-    grace_timer_.expires_after(toDuration(config_.shutdown_grace));
-    grace_timer_.async_wait([this](const boost::system::error_code& error) {
-      if (!error)
-      {
-        finishStop();
-      }
-    });
+    stop_begun_ = true;  // command() queues nothing from now on: every handler queued so far runs before the fence
+    if (started_)
+    {
+      boost::asio::post(context(), [this, stopped] { beginStop(stopped); });
+    }
+    else
+    {
+      // Never started: only commands may be queued; a fence behind them is enough.
+      boost::asio::post(context(), [stopped] { stopped->set_value(); });
+    }
+  }
+  done.wait();
+}
+
+void DeviceSession::beginStop(std::shared_ptr<std::promise<void>> stopped)
+{
+  stopped_ = std::move(stopped);
+  stopping_ = true;
+  tick_timer_.cancel();
+  if (link_->isOpen())
+  {
+    protocol_->shutdown();
+  }
+  // Close once the last words are out, or after the grace time if the device does not take them.
+  link_->whenWritten([this] { finishStop(); });
+  if (closing_)
+  {
+    return;  // nothing was left to write: closed already, and no timer may be armed now
+  }
+  grace_timer_.expires_after(toDuration(config_.shutdown_grace));
+  grace_timer_.async_wait([this](const boost::system::error_code& error) {
+    if (!error)
+    {
+      finishStop();
+    }
   });
-  thread_.join();
 }
 
 void DeviceSession::finishStop()
 {
+  if (closing_)
+  {
+    return;  // link_->close() below runs the whenWritten callback too
+  }
+  closing_ = true;
   grace_timer_.cancel();
+  tick_timer_.cancel();
   link_->close();
-  context_.stop();
+  if (protocol_ != nullptr)
+  {
+    protocol_->onClosing();
+  }
+  // Everything cancelled above has queued its aborted handler by now, and the context runs on one thread, first in
+  // first out: once this fence runs, none of them is left, and (closing_) none has started anything new.
+  boost::asio::post(context(), [stopped = std::move(stopped_)] { stopped->set_value(); });
 }
 
 void DeviceSession::command(std::function<void()> work)
 {
-  boost::asio::post(context_, [this, work = std::move(work)] {
+  std::lock_guard<std::mutex> lock(post_mutex_);
+  if (stop_begun_)
+  {
+    return;
+  }
+  boost::asio::post(context(), [this, work = std::move(work)] {
     ++command_serial_;
     work();
   });
@@ -348,7 +399,7 @@ void DeviceSession::tick()
   }
   tick_timer_.expires_at(started + toDuration(config_.poll_period));
   tick_timer_.async_wait([this](const boost::system::error_code& error) {
-    if (!error)
+    if (!error && !stopping_)  // a tick already due when stop() began: no poll after the last words
     {
       tick();
     }

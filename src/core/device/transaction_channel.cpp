@@ -74,6 +74,12 @@ void TransactionChannel::reset()
   drain_until_ = TimePoint{};
 }
 
+void TransactionChannel::close()
+{
+  closed_ = true;
+  reset();
+}
+
 std::optional<TransactionChannel::Request> TransactionChannel::complete()
 {
   if (clock_.now() < drain_until_ || outstanding_.empty())
@@ -100,6 +106,10 @@ void TransactionChannel::pump()
 
 void TransactionChannel::send(const Request& request)
 {
+  if (closed_)
+  {
+    return;
+  }
   write_(request.bytes);
   if (request.expects_reply)
   {
@@ -122,7 +132,7 @@ void TransactionChannel::armTimer()
   // (the device answers in order).
   timer_.expires_after(toDuration(reply_timeout_));
   timer_.async_wait([this](const boost::system::error_code& error) {
-    if (error || outstanding_.empty())
+    if (error || closed_ || outstanding_.empty())
     {
       return;
     }
@@ -135,7 +145,7 @@ void TransactionChannel::armTimer()
     // Resume once the drain time has passed.
     timer_.expires_after(toDuration(reply_timeout_));
     timer_.async_wait([this](const boost::system::error_code& drained) {
-      if (!drained)
+      if (!drained && !closed_)
       {
         pump();
       }

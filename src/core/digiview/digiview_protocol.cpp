@@ -385,7 +385,7 @@ void DigiViewProtocol::velocityTick()
   sendTargets(target);
   velocity_timer_.expires_after(toDuration(settings_.velocity_period));
   velocity_timer_.async_wait([this](const boost::system::error_code& error) {
-    if (!error)
+    if (!error && !session_.closing())
     {
       velocityTick();
     }
@@ -413,6 +413,11 @@ void DigiViewProtocol::hold()
   // Back after a loss: whatever DigiView still does belongs to a goal that has ended. Hold the view where it is.
   velocity_timer_.cancel();
   sendTargets(session_.estimate().position);
+}
+
+void DigiViewProtocol::onClosing()
+{
+  velocity_timer_.cancel();
 }
 
 void DigiViewProtocol::shutdown()

@@ -93,6 +93,13 @@ void FlirProtocol::setUpAfter(Wait wait)
   armWaitTimer();
 }
 
+void FlirProtocol::onClosing()
+{
+  waiting_ = Wait::NOTHING;
+  wait_timer_.cancel();
+  channel_.close();
+}
+
 void FlirProtocol::armWaitTimer()
 {
   TimePoint due = wait_deadline_;
@@ -102,7 +109,7 @@ void FlirProtocol::armWaitTimer()
   }
   wait_timer_.expires_after(toDuration(std::max(0.0, secondsBetween(session_.now(), due))));
   wait_timer_.async_wait([this](const boost::system::error_code& error) {
-    if (error || waiting_ == Wait::NOTHING)
+    if (error || waiting_ == Wait::NOTHING || session_.closing())
     {
       return;
     }

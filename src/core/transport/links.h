@@ -6,7 +6,10 @@
 
 #include <array>
 #include <memory>
+#include <mutex>
+#include <utility>
 
+#include <boost/asio/ip/address.hpp>
 #include <boost/asio/write.hpp>
 
 #include "ptz_action_server/core/transport/link.h"
@@ -19,6 +22,57 @@ std::unique_ptr<Link> makeTcpLink(boost::asio::io_context& context, const LinkCo
 std::unique_ptr<Link> makeHttpLink(boost::asio::io_context& context, const LinkConfig& config,
                                    Link::Listener& listener);
 std::unique_ptr<Link> makeUdpLink(boost::asio::io_context& context, const LinkConfig& config, Link::Listener& listener);
+
+/// \p host as a numeric address (dotted or IPv6), or false for a name to resolve. A numeric address needs no
+/// resolution, and so none of the resolver threads Boost.Asio starts for one (one per io_context).
+inline bool numericAddress(const std::string& host, boost::asio::ip::address& address)
+{
+  boost::system::error_code error;
+  address = boost::asio::ip::make_address(host, error);
+  return !error;
+}
+
+/**
+ * \brief Keeps a name resolution's completion off a link that is gone.
+ *
+ * Boost.Asio resolves names on a thread of its own, and a cancelled resolution still completes (operation_aborted)
+ * when getaddrinfo() returns, which may be after the session's teardown fence, on a pool thread that other sessions
+ * keep running. Such a completion reaches the link only through wrap(), under a lock the link's destruction takes
+ * too: it runs before the link goes, or not at all. Declare it as the link's last member (destroyed first).
+ */
+class ResolveGuard
+{
+public:
+  ResolveGuard() = default;
+  ~ResolveGuard()
+  {
+    std::lock_guard<std::mutex> lock(state_->mutex);
+    state_->alive = false;
+  }
+  ResolveGuard(const ResolveGuard&) = delete;
+  ResolveGuard& operator=(const ResolveGuard&) = delete;
+
+  /// \p handler, run only while the guard lives.
+  template <class Handler>
+  auto wrap(Handler handler) const
+  {
+    return [state = state_, handler = std::move(handler)](const boost::system::error_code& error, auto results) {
+      std::lock_guard<std::mutex> lock(state->mutex);
+      if (state->alive)
+      {
+        handler(error, std::move(results));
+      }
+    };
+  }
+
+private:
+  struct State
+  {
+    std::mutex mutex;
+    bool alive = true;
+  };
+  const std::shared_ptr<State> state_ = std::make_shared<State>();
+};
 
 /// The read and write loops of a byte-stream link (Boost.Asio serial_port or tcp::socket).
 template <class Stream>

@@ -28,9 +28,16 @@ public:
 protected:
   void startOpen() override
   {
+    boost::asio::ip::address address;
+    if (numericAddress(config_.host, address))
+    {
+      connect({ tcp::endpoint(address, config_.port) });
+      return;
+    }
     resolver_.async_resolve(
         config_.host, std::to_string(config_.port),
-        [this, connection = connection()](const boost::system::error_code& error, tcp::resolver::results_type found) {
+        resolve_guard_.wrap([this, connection = connection()](const boost::system::error_code& error,
+                                                              tcp::resolver::results_type found) {
           if (connection != this->connection())
           {
             return;
@@ -40,8 +47,13 @@ protected:
             openFailed("cannot resolve " + config_.host + ": " + error.message());
             return;
           }
-          connect(found);
-        });
+          std::vector<tcp::endpoint> endpoints;
+          for (const auto& entry : found)
+          {
+            endpoints.push_back(entry.endpoint());
+          }
+          connect(endpoints);
+        }));
   }
 
   void closeHandle() override
@@ -67,7 +79,7 @@ protected:
   }
 
 private:
-  void connect(const tcp::resolver::results_type& found)
+  void connect(const std::vector<tcp::endpoint>& found)
   {
     connect_timer_.expires_after(toDuration(config_.connect_timeout));
     connect_timer_.async_wait([this, connection = connection()](const boost::system::error_code& error) {
@@ -98,7 +110,8 @@ private:
 
   tcp::resolver resolver_;
   boost::asio::steady_timer connect_timer_;
-  const std::string peer_;  ///< host:port, for messages
+  const std::string peer_;      ///< host:port, for messages
+  ResolveGuard resolve_guard_;  ///< last: destroyed first, before anything a late resolution would touch
 };
 }  // namespace
 

@@ -28,9 +28,16 @@ protected:
   {
     // The socket is not connected to the peer, so datagrams from strangers reach us to be counted, and no ICMP
     // "port unreachable" from an earlier send ever fails a receive.
+    boost::asio::ip::address address;
+    if (numericAddress(config_.host, address) && address.is_v4())
+    {
+      bindFor(udp::endpoint(address, config_.port));
+      return;
+    }
     resolver_.async_resolve(
         udp::v4(), config_.host, std::to_string(config_.port),
-        [this, connection = connection()](const boost::system::error_code& error, udp::resolver::results_type found) {
+        resolve_guard_.wrap([this, connection = connection()](const boost::system::error_code& error,
+                                                              udp::resolver::results_type found) {
           if (connection != this->connection())
           {
             return;
@@ -40,25 +47,31 @@ protected:
             openFailed("cannot resolve " + config_.host + ": " + error.message());
             return;
           }
-          peer_ = found.begin()->endpoint();
-          boost::system::error_code failure;
-          const auto local = boost::asio::ip::make_address(config_.local_host, failure);
-          if (!failure)
-          {
-            socket_.open(udp::v4(), failure);
-          }
-          if (!failure)
-          {
-            socket_.bind(udp::endpoint(local, config_.local_port), failure);
-          }
-          if (failure)
-          {
-            openFailed("cannot bind udp " + config_.local_host + ":" + std::to_string(config_.local_port) + ": " +
-                       failure.message());
-            return;
-          }
-          opened();
-        });
+          bindFor(found.begin()->endpoint());
+        }));
+  }
+
+  /// Opens the local socket for datagrams to and from \p peer.
+  void bindFor(const udp::endpoint& peer)
+  {
+    peer_ = peer;
+    boost::system::error_code failure;
+    const auto local = boost::asio::ip::make_address(config_.local_host, failure);
+    if (!failure)
+    {
+      socket_.open(udp::v4(), failure);
+    }
+    if (!failure)
+    {
+      socket_.bind(udp::endpoint(local, config_.local_port), failure);
+    }
+    if (failure)
+    {
+      openFailed("cannot bind udp " + config_.local_host + ":" + std::to_string(config_.local_port) + ": " +
+                 failure.message());
+      return;
+    }
+    opened();
   }
 
   void closeHandle() override
@@ -119,6 +132,7 @@ private:
   udp::endpoint peer_;
   udp::endpoint sender_;
   std::vector<std::uint8_t> buffer_;
+  ResolveGuard resolve_guard_;  ///< last: destroyed first, before anything a late resolution would touch
 };
 }  // namespace
 

@@ -30,7 +30,7 @@ public:
   /// Builds the session on \p link, then the protocol over it with \p make_protocol.
   DeviceBackend(const LinkConfig& link, const DeviceSessionConfig& config, const ProtocolFactory& make_protocol,
                 std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
-  /// Stops the I/O thread (after the protocol's last words) before the protocol goes.
+  /// Stops the session (after the protocol's last words) before the protocol goes.
   ~DeviceBackend() override;
 
   std::string name() const override

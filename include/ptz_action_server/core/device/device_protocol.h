@@ -66,6 +66,12 @@ public:
   virtual void shutdown()
   {
   }
+  /// The session closes for good (after shutdown()'s words are out or the grace time is over; the link is closed):
+  /// cancel every timer of the protocol. The I/O thread is shared with other sessions, so from here on no handler of
+  /// the protocol may start anything new (check DeviceSession::closing() in timer handlers that re-arm).
+  virtual void onClosing()
+  {
+  }
 
   /// Settings and counters for the node's diagnostics. Any thread.
   virtual void diagnostics(std::vector<DiagnosticValue>& values) const

@@ -1,16 +1,16 @@
 /**
  * \file
- * \brief The device session every device backend shares: I/O thread, link, state snapshot, link supervision,
- * start-up wait and recovery. Protocols only add a codec and a small policy (DeviceProtocol).
+ * \brief The device session every device backend shares: I/O (on the process's DeviceIoPool), link, state snapshot,
+ * link supervision, start-up wait and recovery. Protocols only add a codec and a small policy (DeviceProtocol).
  */
 #pragma once
 
 #include <condition_variable>
 #include <functional>
+#include <future>
 #include <memory>
 #include <mutex>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <boost/asio/io_context.hpp>
@@ -18,6 +18,7 @@
 
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/counter.h"
+#include "ptz_action_server/core/device/device_io_pool.h"
 #include "ptz_action_server/core/device/state_plausibility.h"
 #include "ptz_action_server/core/motion_estimator.h"
 #include "ptz_action_server/core/transport/http_link.h"
@@ -52,11 +53,16 @@ struct DeviceSessionCounters
 };
 
 /**
- * \brief Owns the I/O thread, the link and the state of one device; runs a DeviceProtocol over them.
+ * \brief Owns the link and the state of one device; runs a DeviceProtocol over them on an I/O thread.
+ *
+ * The I/O thread is one of the process's DeviceIoPool: a few threads serve every session, each session's handlers
+ * on one thread, one at a time, in order (a session over HTTP, whose calls block, gets a thread of its own). "The
+ * I/O thread" below is that thread.
  *
  * Two audiences, two sets of calls:
  * - DeviceBackend (any thread): start(), stop(), command(), sample(), capabilities(), lastFault(), lastLinkLoss(),
- *   diagnostics(). None of them waits on I/O (start() waits, with a deadline, for the device to be ready).
+ *   diagnostics(). None of them waits on I/O (start() waits, with a deadline, for the device to be ready; stop() for
+ *   the last words and the teardown). stop() and the destructor: never on an I/O thread of the pool.
  * - The protocol (I/O thread only): write(), reportState(), reportAlive(), reportFault(), ready(), ...
  *
  * The link is up while the link is open, the protocol has said ready() since it opened, and a valid state came
@@ -68,7 +74,9 @@ struct DeviceSessionCounters
 class DeviceSession : private Link::Listener
 {
 public:
-  DeviceSession(const LinkConfig& link, const DeviceSessionConfig& config, std::shared_ptr<const Clock> clock);
+  /// Takes its I/O thread from \p pool (tests give their own; a dedicated one for HTTP).
+  DeviceSession(const LinkConfig& link, const DeviceSessionConfig& config, std::shared_ptr<const Clock> clock,
+                DeviceIoPool& pool = DeviceIoPool::instance());
   ~DeviceSession() override;
   DeviceSession(const DeviceSession&) = delete;
   DeviceSession& operator=(const DeviceSession&) = delete;
@@ -83,13 +91,24 @@ public:
 
   // ---------------------------------------------------------------- for the backend: any thread
 
-  /// Starts the I/O thread and opens the link, then waits until the device is ready and its link up. Throws
-  /// BackendError naming the device, the link and the reason when it is not within startup_timeout.
+  /// Opens the link on the I/O thread, then waits until the device is ready and its link up. Throws BackendError
+  /// naming the device, the link and the reason when it is not within startup_timeout.
   void start();
-  /// Lets the protocol say goodbye (shutdown()), closes the link and joins the I/O thread. Idempotent.
+  /**
+   * \brief Lets the protocol say goodbye (shutdown()), closes the link, then waits until nothing of this session is
+   * left on the I/O thread. Idempotent; the destructor calls it.
+   *
+   * On the I/O thread, once the last words are out (or after shutdown_grace): the timers are cancelled, the link
+   * closed and the protocol's onClosing() runs; from then on no handler of the session, its link or its protocol
+   * starts anything new. The aborted handlers are then queued on the single-threaded context ahead of a fence that
+   * stop() waits for, so none of them runs after stop() returns.
+   *
+   * Any thread but an I/O thread of the pool (a handler that stopped a session would wait for its own thread, or
+   * stall another's): throws std::logic_error there.
+   */
   void stop();
   /// Runs \p work (one of the protocol's commands) on the I/O thread, after every earlier command. From then on,
-  /// faults reported for earlier commands no longer count.
+  /// faults reported for earlier commands no longer count. Dropped once stop() has begun.
   void command(std::function<void()> work);
 
   PtzSample sample() const;
@@ -121,9 +140,16 @@ public:
 
   // ---------------------------------------------------------------- for the protocol: I/O thread only
 
+  /// The session's io_context (shared with other sessions): for the protocol's timers. Their handlers must start
+  /// nothing once closing() (see DeviceProtocol::onClosing()).
   boost::asio::io_context& context()
   {
-    return context_;
+    return io_.context();
+  }
+  /// The session is closing for good: the link is closed and no handler may start a new operation.
+  bool closing() const
+  {
+    return closing_;
   }
   TimePoint now() const
   {
@@ -202,18 +228,28 @@ private:
   /// Brings the link up if it now is, and runs the recovery once after a loss (I/O thread, mutex_ not held).
   void refreshLink();
   void recordLossLocked(const std::string& reason) const;
+  /// Begins the goodbye (I/O thread): the protocol's shutdown(), then finishStop() when written or at the grace time.
+  void beginStop(std::shared_ptr<std::promise<void>> stopped);
+  /// Closes for good (I/O thread, once): timers, link, protocol; then fulfils the promise from a fence behind them.
   void finishStop();
 
   const DeviceSessionConfig config_;
   const std::shared_ptr<const Clock> clock_;
-  boost::asio::io_context context_;
-  std::unique_ptr<Link> link_;  ///< after context_: its handlers live on it
+  DeviceIoPool::Lease io_;      ///< first: the link and the timers below live on its context, and go before it
+  std::unique_ptr<Link> link_;  ///< after io_: its handlers live on it
   boost::asio::steady_timer tick_timer_;
   boost::asio::steady_timer grace_timer_;
   DeviceProtocol* protocol_ = nullptr;
-  std::thread thread_;
+
+  // Guarded by post_mutex_: whether handlers may still be queued for the session (any thread).
+  std::mutex post_mutex_;
+  bool started_ = false;
+  bool stop_begun_ = false;
 
   // I/O thread only.
+  bool stopping_ = false;                        ///< beginStop() has run: no more polls
+  bool closing_ = false;                         ///< finishStop() has run: nothing new may start
+  std::shared_ptr<std::promise<void>> stopped_;  ///< fulfilled by the fence behind the last handlers
   std::uint64_t command_serial_ = 0;
   std::function<void()> state_listener_;  ///< set before start()
 

@@ -59,6 +59,8 @@ public:
   void clearQueue();
   /// Forgets everything (after a reconnect).
   void reset();
+  /// For good (the session closes): cancels the timer; nothing is sent or timed from now on.
+  void close();
 
   /// A reply arrived: the request it answers, or nothing (none outstanding, or draining after a timeout).
   std::optional<Request> complete();
@@ -93,6 +95,7 @@ private:
   std::deque<Request> queue_;
   std::deque<Request> outstanding_;  ///< on the wire, oldest first
   TimePoint drain_until_{};
+  bool closed_ = false;
   Counter timeouts_;
   Counter late_replies_;
 };

@@ -93,6 +93,7 @@ public:
   /// unpacked yet and the first messages are of a format of another size, start() fails saying so.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   void onDisconnected() override;
+  void onClosing() override;
   /// Subscribes again after three missed states (over UDP nothing else tells that DigiView restarted), and asks
   /// again for a stream description that did not come (a datagram may be lost).
   void poll() override;

@@ -86,6 +86,7 @@ public:
   /// Reply lines, each matched to the one request on the wire.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   void onDisconnected() override;
+  void onClosing() override;
   /// `PP` and `TP` whenever the line is free.
   void poll() override;
   /// `CI PS TS PP TP`, the pan inverted (the unit's positive pan is counter-clockwise).

@@ -77,6 +77,10 @@ public:
   /// Frames of our address (and general replies), each matched to the one request on the wire.
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   void onDisconnected() override;
+  void onClosing() override
+  {
+    channel_.close();
+  }
   /// 0x51, 0x53 (and 0x55 with zoom) whenever the line is free.
   void poll() override;
   /// The extended absolute commands 0x4B, 0x4D, 0x4F.

@@ -68,6 +68,9 @@ struct CertificatePin
  * "Open" means ready to send: the connection itself is curl's to make on the first request and to keep. A request
  * that gets no answer (refused, reset, timed out) loses the link with its reason, and it reopens after the backoff;
  * the backoff starts afresh only once an answer came (provenAlive()). Bytes cannot be written to it.
+ *
+ * perform() blocks its thread for up to request_timeout, so a session over HTTP does not share the pool's I/O threads
+ * (DeviceIoPool): it gets a thread of its own, until HTTP is asynchronous.
  */
 class HttpLink : public Link
 {

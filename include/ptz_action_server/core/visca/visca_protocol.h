@@ -85,6 +85,10 @@ public:
   void onConnected() override;
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   void onDisconnected() override;
+  void onClosing() override
+  {
+    channel_.close();
+  }
   /// The pan-tilt and zoom inquiries, whenever the line is free.
   void poll() override;
   void goTo(const AxisValues& position) override;
