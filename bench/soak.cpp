@@ -60,7 +60,7 @@ const char* const USAGE = "usage: bench_soak URDF_FILE --device NAME --seconds S
                           "clients (default 4)\n"
                           "send a goal mix (absolute, relative, velocity, frame, preset; some cancelled, 5 % invalid) "
                           "and the emulator\n"
-                          "shows one fault every --fault-period seconds (default 5: 2 s of fault, then 3 s clean), the "
+                          "shows one fault every --fault-period seconds (default 4: 2 s of fault, then 2 s clean), the "
                           "faults it has in\n"
                           "turn: silence, drop, garbage, endless, flood, slow, impossible. Prints one markdown table "
                           "row and the details.\n"
@@ -523,7 +523,7 @@ int main(int argc, char** argv)
 {
   std::string urdf_file, device_name;
   double seconds = 0.0;
-  double fault_period = 5.0;
+  double fault_period = 4.0;
   int clients = CLIENTS;
   for (int index = 1; index < argc; ++index)
   {
