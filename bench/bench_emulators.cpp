@@ -41,6 +41,30 @@ public:
   {
     return select(isStop);
   }
+  bool setFault(Fault fault, bool on) override
+  {
+    switch (fault)
+    {
+      case Fault::SILENCE:
+        emulator_.setSilent(on);
+        return true;
+      case Fault::DROP:
+        emulator_.setDropRatio(on ? DROP_RATIO : 0.0);
+        return true;
+      case Fault::ENDLESS:
+        emulator_.setEndless(on);
+        return true;
+      case Fault::FLOOD:
+        emulator_.setFlood(on ? FLOOD_COPIES : 1);
+        return true;
+      case Fault::IMPOSSIBLE:
+        setSimFault(fault, on, faults_);
+        emulator_.panTilt().setFaults(faults_);
+        return true;
+      default:
+        return false;  // garbage: no such mode; slow: the device pushes its state
+    }
+  }
 
 private:
   static bool isStop(const ReceivedDatagram& datagram)
@@ -66,6 +90,7 @@ private:
     return arrivals;
   }
   PanTiltEmulator emulator_;
+  SimFaults faults_;
 };
 
 class DigiViewDevice : public EmulatedDevice
@@ -91,6 +116,33 @@ public:
   {
     return targetings();
   }
+  bool setFault(Fault fault, bool on) override
+  {
+    switch (fault)
+    {
+      case Fault::SILENCE:
+        emulator_.setSilent(on);
+        return true;
+      case Fault::DROP:
+        if (on)
+        {
+          emulator_.dropConnections();
+        }
+        return true;
+      case Fault::ENDLESS:
+        emulator_.setEndless(on);
+        return true;
+      case Fault::FLOOD:
+        emulator_.setFlood(on ? FLOOD_COPIES : 1);
+        return true;
+      case Fault::IMPOSSIBLE:
+        setSimFault(fault, on, faults_);
+        emulator_.setFaults(faults_);
+        return true;
+      default:
+        return false;  // garbage: no such mode; slow: the device pushes its state
+    }
+  }
 
 private:
   std::vector<Arrival> targetings() const
@@ -108,6 +160,7 @@ private:
     return arrivals;
   }
   DigiViewEmulator emulator_;
+  SimFaults faults_;
 };
 
 class FlirDevice : public EmulatedDevice
@@ -131,6 +184,11 @@ public:
   std::vector<Arrival> stopCommands() const override
   {
     return select(isHalt);
+  }
+
+  bool setFault(Fault fault, bool on) override
+  {
+    return setLineFault(emulator_, faults_, fault, on);
   }
 
 private:
@@ -160,6 +218,7 @@ private:
     return arrivals;
   }
   mutable FlirPtuEmulator emulator_;  ///< mutable: port() is not const
+  SimFaults faults_;
 };
 
 class PelcoDevice : public EmulatedDevice
@@ -189,6 +248,11 @@ public:
     return select([](const pelco::Frame& frame) { return frame == pelco::stop(frame.address); });
   }
 
+  bool setFault(Fault fault, bool on) override
+  {
+    return setLineFault(emulator_, faults_, fault, on);
+  }
+
 private:
   static PelcoDEmulatorConfig config(const DevicePortConfig& port)
   {
@@ -211,6 +275,7 @@ private:
     return arrivals;
   }
   mutable PelcoDEmulator emulator_;  ///< mutable: port() is not const
+  SimFaults faults_;
 };
 }  // namespace
 

@@ -44,6 +44,31 @@ public:
   {
     return static_cast<long>(emulator_.server().counters().connections);
   }
+  bool setFault(Fault fault, bool on) override
+  {
+    switch (fault)
+    {
+      case Fault::SILENCE:
+        emulator_.server().setSilent(on);
+        return true;
+      case Fault::DROP:
+        if (on)
+        {
+          emulator_.server().dropConnections();
+        }
+        return true;
+      case Fault::ENDLESS:
+        emulator_.server().setEndless(on);
+        return true;
+      case Fault::SLOW:
+      case Fault::IMPOSSIBLE:
+        setSimFault(fault, on, faults_);
+        emulator_.setFaults(faults_);
+        return true;
+      default:
+        return false;  // garbage: HTTP has no such mode here; flood: the camera answers requests
+    }
+  }
 
 private:
   /// Requests (the target for GETs, the body for POSTs) holding \p text, answered by the camera (not a 401).
@@ -64,6 +89,7 @@ private:
   mutable Emulator emulator_;  ///< mutable: its server's log and counters are read from const accessors
   const std::string goal_text_;
   const std::string stop_text_;
+  SimFaults faults_;
 };
 }  // namespace
 

@@ -294,6 +294,27 @@ void BenchProcesses::stop()
   node_ = -1;
 }
 
+void setNodeParameters(const DeviceRow& row, const EmulatedDevice* device, const std::string& urdf)
+{
+  ros::param::del(NODE_NAMESPACE);  // nothing left from the previous row
+  ros::param::set(std::string(NODE_NAMESPACE) + "/robot_description", urdf);
+  const std::string private_namespace = std::string(NODE_NAMESPACE) + "/" + NODE_NAME + "/";
+  ros::param::set(private_namespace + "backend", row.plugin);
+  for (const BenchParam& param : row.params)
+  {
+    XmlRpc::XmlRpcValue value = param.value;
+    if (param.source == BenchParam::Source::EMULATOR_PORT)
+    {
+      value = static_cast<int>(device->port());
+    }
+    else if (param.source == BenchParam::Source::EMULATOR_LINK)
+    {
+      value = device->link();
+    }
+    ros::param::set(private_namespace + param.name, value);
+  }
+}
+
 void removeOnFatalSignal(const std::string& path)
 {
   if (path.size() < sizeof(g_remove_on_signal))

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bench_common.h"
+#include "device_table.h"
 
 namespace ptz_bench
 {
@@ -56,6 +57,10 @@ private:
   pid_t node_ = -1;
   int gate_ = -1;  ///< write end of the children's gate pipe; closing it unreleased sends them home
 };
+
+/// Sets what a launch file would: the URDF, ~backend and the row's parameters (the emulator's port or link from
+/// \p device, which may be null for a row without one), in NODE_NAMESPACE cleared first.
+void setNodeParameters(const DeviceRow& row, const EmulatedDevice* device, const std::string& urdf);
 
 /// A file to remove if a fatal signal (SIGINT, SIGTERM, SIGHUP) ends the parent before its owner can: an
 /// emulator's pseudo-terminal link. One at a time.

@@ -43,6 +43,11 @@ public:
     return select(isHalt);
   }
 
+  bool setFault(Fault fault, bool on) override
+  {
+    return setLineFault(emulator_, faults_, fault, on);
+  }
+
 private:
   static ViscaEmulatorConfig config(const DevicePortConfig& port, ViscaFraming framing)
   {
@@ -66,6 +71,7 @@ private:
     return arrivals;
   }
   mutable ViscaEmulator emulator_;  ///< mutable: port() is not const
+  SimFaults faults_;
 };
 }  // namespace
 

@@ -165,27 +165,6 @@ Mode parseOptions(int argc, char** argv, BenchOptions& options)
   return mode;
 }
 
-/// Sets what a launch file would: the URDF, ~backend and the row's parameters, in a namespace cleared first.
-void setNodeParameters(const DeviceRow& row, const EmulatedDevice* device, const std::string& urdf)
-{
-  ros::param::del(NODE_NAMESPACE);  // nothing left from the previous row
-  ros::param::set(std::string(NODE_NAMESPACE) + "/robot_description", urdf);
-  const std::string private_namespace = std::string(NODE_NAMESPACE) + "/" + NODE_NAME + "/";
-  ros::param::set(private_namespace + "backend", row.plugin);
-  for (const BenchParam& param : row.params)
-  {
-    XmlRpc::XmlRpcValue value = param.value;
-    if (param.source == BenchParam::Source::EMULATOR_PORT)
-    {
-      value = static_cast<int>(device->port());
-    }
-    else if (param.source == BenchParam::Source::EMULATOR_LINK)
-    {
-      value = device->link();
-    }
-    ros::param::set(private_namespace + param.name, value);
-  }
-}
 }  // namespace
 
 int main(int argc, char** argv)

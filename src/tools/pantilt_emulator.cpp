@@ -32,6 +32,7 @@ Options:
   --state-period S       seconds between unsolicited params frames (default 0.1; 0 = replies only)
   --drop RATIO           drop this share of replies (0..1)
   --delay S              delay every reply by S seconds
+  --flood N              send every state N times (1..1000; default 1): a device that reports N times too fast
   --silent               start silent: ignore everything, send nothing (an unplugged device)
   --silent-after S       fall silent S seconds after start
 Signals: SIGUSR1 toggles silence, SIGUSR2 unplugs / replugs the pseudo-terminal; SIGINT / SIGTERM end the program.
@@ -47,6 +48,7 @@ int main(int argc, char** argv)
   emulator_main::Schedule schedule;
   double drop = 0.0;
   double delay = 0.0;
+  unsigned flood = 1;
   emulator_main::parseArguments(
       argc, argv, PROGRAM, USAGE, [&](const std::string& arg, const emulator_main::Value& value) {
         auto number = [&]() { return emulator_main::number(PROGRAM, value(), arg, USAGE); };
@@ -91,6 +93,10 @@ int main(int argc, char** argv)
         {
           delay = number();
         }
+        else if (arg == "--flood")
+        {
+          flood = static_cast<unsigned>(emulator_main::numberIn(PROGRAM, value(), arg, 1, 1000, USAGE));
+        }
         else if (!emulator_main::parseFaultOption(arg, value, PROGRAM, USAGE, silent, schedule))
         {
           return false;
@@ -105,11 +111,13 @@ int main(int argc, char** argv)
     device.setSilent(silent);
     device.setDropRatio(drop);
     device.setReplyDelay(delay);
+    device.setFlood(flood);
     const std::string where = config.serial ?
                                   device.path() + " (SLIP) at " + std::to_string(config.line.baud) + " baud" :
                                   device.endpoint().toString();
-    std::printf("%s: listening on %s, format %s, state every %.2f s%s\n", PROGRAM, where.c_str(),
-                cr::pantilt::toString(config.format), config.state_period, silent ? ", silent" : "");
+    std::printf("%s: listening on %s, format %s, state every %.2f s%s%s\n", PROGRAM, where.c_str(),
+                cr::pantilt::toString(config.format), config.state_period,
+                flood > 1 ? (", each sent " + std::to_string(flood) + " times").c_str() : "", silent ? ", silent" : "");
     std::fflush(stdout);
     emulator_main::Hooks hooks;
     hooks.set_silent = [&device](bool value) { device.setSilent(value); };
