@@ -13,13 +13,20 @@ std::shared_ptr<SharedTransforms> SharedTransforms::shared()
 }
 
 SharedTransforms::SharedTransforms()
-  : static_publisher_(ros::NodeHandle().advertise<tf2_msgs::TFMessage>("/tf_static", 100, true))
+  : static_publisher_(node_handle_.advertise<tf2_msgs::TFMessage>("/tf_static", 100, true))
 {
+  publisher_.advertise<tf2_msgs::TFMessage>(node_handle_, "/tf", 100);
 }
 
 void SharedTransforms::send(const std::vector<geometry_msgs::TransformStamped>& transforms)
 {
-  broadcaster_.sendTransform(transforms);
+  if (!publisher_.listened())
+  {
+    return;
+  }
+  std::lock_guard<std::mutex> lock(send_mutex_);
+  message_.transforms.assign(transforms.begin(), transforms.end());
+  publisher_.publish(message_);
 }
 
 void SharedTransforms::setStatic(const void* owner, const std::vector<geometry_msgs::TransformStamped>& transforms)

@@ -50,8 +50,8 @@ StatePublisher::~StatePublisher()
 
 void StatePublisher::start()
 {
-  state_publisher_ = node_handle_.advertise<PtzState>("ptz_state", 10);
-  joint_state_publisher_ = node_handle_.advertise<sensor_msgs::JointState>("joint_states", 10);
+  state_publisher_.advertise<PtzState>(node_handle_, "ptz_state", 10);
+  joint_state_publisher_.advertise<sensor_msgs::JointState>(node_handle_, "joint_states", 10);
   for (Axis axis : { PAN, TILT })
   {
     if (limits_.axes[axis].feedback)

@@ -180,7 +180,10 @@ TEST_P(DigiViewEmulatorAnswers, AZeroChecksumIsTakenOnlyWhenConfiguredAndItsOwnC
   EXPECT_EQ(state.message_type, MessageType::CURRENT_PARAMETERS);
   EXPECT_EQ(last_[layout().checksum_offset], 0) << "the emulator was told not to fill it";
   Message strict;
-  EXPECT_EQ(Message::unpack(last_.data(), last_.size(), Wire{ GetParam() }, strict), UnpackError::BAD_CHECKSUM);
+  // Unless the answer's own CRC-8 happens to be 0 (1 in 256: it carries the moving state), a strict peer refuses it.
+  const bool crc_is_zero = digiview::crc8(last_.data(), layout().checksum_offset) == 0;
+  EXPECT_EQ(Message::unpack(last_.data(), last_.size(), Wire{ GetParam() }, strict),
+            crc_is_zero ? UnpackError::NONE : UnpackError::BAD_CHECKSUM);
   ASSERT_TRUE(emulator_->received().waitForCount(1, WAIT));
   const ReceivedMessage received = emulator_->received().items().front();
   EXPECT_EQ(received.error, UnpackError::NONE);

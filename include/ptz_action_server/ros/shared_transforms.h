@@ -13,7 +13,8 @@
 #include <geometry_msgs/TransformStamped.h>
 #include <ros/ros.h>
 #include <tf2_msgs/TFMessage.h>
-#include <tf2_ros/transform_broadcaster.h>
+
+#include "ptz_action_server/ros/listened_publisher.h"
 
 namespace ptz_action_server
 {
@@ -34,7 +35,7 @@ public:
 
   SharedTransforms();
 
-  /// Sends moving joints on /tf.
+  /// Sends moving joints on /tf (nothing while nobody listens).
   void send(const std::vector<geometry_msgs::TransformStamped>& transforms);
   /// Replaces the fixed joints of \p owner and republishes every owner's on the latched /tf_static.
   void setStatic(const void* owner, const std::vector<geometry_msgs::TransformStamped>& transforms);
@@ -44,7 +45,10 @@ public:
 private:
   void publishStaticLocked();
 
-  tf2_ros::TransformBroadcaster broadcaster_;
+  ros::NodeHandle node_handle_;
+  ListenedPublisher publisher_;  ///< /tf, only while someone listens
+  tf2_msgs::TFMessage message_;  ///< guarded by send_mutex_, reused
+  std::mutex send_mutex_;
   std::mutex mutex_;
   ros::Publisher static_publisher_;
   std::map<const void*, std::vector<geometry_msgs::TransformStamped>> statics_;  ///< guarded by mutex_

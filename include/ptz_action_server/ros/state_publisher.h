@@ -21,6 +21,7 @@
 #include "ptz_action_server/core/kinematics.h"
 #include "ptz_action_server/core/timer_thread.h"
 #include "ptz_action_server/ros/field_of_view_publisher.h"
+#include "ptz_action_server/ros/listened_publisher.h"
 #include "ptz_action_server/ros/shared_transforms.h"
 
 namespace ptz_action_server
@@ -93,8 +94,8 @@ private:
   SystemClock clock_;
 
   // Only the state thread touches these after start().
-  ros::Publisher state_publisher_;
-  ros::Publisher joint_state_publisher_;
+  ListenedPublisher state_publisher_;
+  ListenedPublisher joint_state_publisher_;
   PtzState state_message_;
   sensor_msgs::JointState joint_state_message_;
   std::vector<geometry_msgs::TransformStamped> joint_transforms_;  ///< of reported_joints_, reused every tick
