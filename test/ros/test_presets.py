@@ -10,15 +10,17 @@ import shutil
 import signal
 import subprocess
 import tempfile
-import time
 import unittest
 
 import actionlib
 import rospy
 import rostest
+
 from actionlib_msgs.msg import GoalStatus
 from ptz_action_server.msg import PtzAction, PtzGoal, PtzPresetAction, PtzPresetGoal, PtzState
 from ptz_action_server.srv import DeletePreset, ListPresets, SavePreset
+
+from wait_until import wait_until
 
 NAMESPACE = '/ptz'
 TOLERANCE = 0.006  # rad: the node's 0.005 plus float32 rounding
@@ -26,15 +28,6 @@ ZOOM_TOLERANCE = 0.06
 START_WAIT = 90.0  # s for the node to come up (roslaunch on a busy 2-core machine)
 GOAL_WAIT = 30.0
 HOME = (0.1, -0.05, 1.0)  # ~home/pan, ~home/tilt; zoom: the sim's lowest
-
-
-def wait_until(condition, timeout, step=0.02):
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if condition():
-            return True
-        time.sleep(step)
-    return condition()
 
 
 class Node:

@@ -13,21 +13,15 @@ import unittest
 
 import rospy
 import rostest
+
 from ptz_action_server.msg import PtzActionGoal, PtzPresetActionGoal, PtzState
+
+from wait_until import wait_until
 
 NAMESPACE = '/ptz'
 TOLERANCE = 0.006  # rad
 WAIT = 30.0
 LEFT = b'\x1b[D'
-
-
-def wait_until(condition, timeout, step=0.02):
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if condition():
-            return True
-        time.sleep(step)
-    return condition()
 
 
 class Terminal:

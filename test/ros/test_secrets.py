@@ -15,30 +15,23 @@ import shutil
 import signal
 import subprocess
 import tempfile
-import time
 import unittest
 
 import actionlib
 import rospy
 import rostest
+
 from actionlib_msgs.msg import GoalStatus
 from diagnostic_msgs.msg import DiagnosticArray
 from ptz_action_server.msg import PtzAction, PtzGoal
 from rosgraph_msgs.msg import Log
 
+from wait_until import wait_until
+
 NAMESPACE = '/ptz'
 START_WAIT = 90.0  # s for the node to come up (roslaunch on a busy 2-core machine)
 GOAL_WAIT = 30.0
 USER = 'operator'
-
-
-def wait_until(condition, timeout, step=0.05):
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if condition():
-            return True
-        time.sleep(step)
-    return condition()
 
 
 def read(path):

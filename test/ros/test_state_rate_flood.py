@@ -8,29 +8,22 @@ coalesced rather than queued, shows in the backend's diagnostics: its "state rep
 than ptz_state. Waits on conditions with deadlines, never on bare sleeps.
 """
 import threading
-import time
 import unittest
 
 import rospy
 import rostest
+
 from diagnostic_msgs.msg import DiagnosticArray
 from ptz_action_server.msg import PtzState
 from sensor_msgs.msg import JointState
+
+from wait_until import wait_until
 
 RATE = 10.0
 TOLERANCE = 0.02  # 10 Hz +- 2 %
 WINDOW = 10.0  # s of stamps the rate is taken over
 NORMAL_REPORTS = 20.0  # params frames a second without the flood (--state-period 0.05)
 START_WAIT = 60.0  # s for the node and its first flooded states (a busy 2-core machine)
-
-
-def wait_until(condition, timeout, step=0.05):
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if condition():
-            return True
-        time.sleep(step)
-    return condition()
 
 
 class StateRateFloodTest(unittest.TestCase):
