@@ -8,7 +8,7 @@ ptz_protocol(pantilt
   EMULATOR src/emulators/pantilt_emulator.cpp src/emulators/sim_pantilt.cpp
   PROGRAM pantilt_emulator src/tools/pantilt_emulator.cpp
   TESTS test/core/test_pantilt_codec.cpp test/core/test_pantilt_foreign_frames.cpp test/core/test_pantilt_formats.cpp
-    test/core/test_pantilt_params.cpp test/core/test_pantilt_protocol.cpp
+    test/core/test_pantilt_params.cpp test/core/test_pantilt_protocol.cpp test/core/contract/pantilt_fixtures.cpp
   FUZZ pantilt src/core/pantilt/pantilt_codec.cpp src/core/pantilt/pantilt_params.cpp
     src/core/pantilt/pantilt_params_json.cpp
   ROSTESTS test/ros/pantilt_udp_node.test test/ros/serial_pantilt_node.test test/ros/state_rate_flood.test
@@ -20,6 +20,7 @@ ptz_protocol(flir
   EMULATOR src/emulators/flir_ptu_emulator.cpp src/emulators/flir_ptu_emulator_answers.cpp
   PROGRAM flir_ptu_emulator src/tools/flir_ptu_emulator.cpp
   TESTS test/core/test_flir_codec.cpp test/core/test_flir_emulator.cpp test/core/test_flir_protocol.cpp
+    test/core/contract/flir_fixtures.cpp
   FUZZ flir_reply src/core/flir/flir_codec.cpp
   ROSTESTS test/ros/serial_flir_node.test
 )
@@ -28,7 +29,7 @@ ptz_protocol(pelco_d
   CORE src/core/pelco_d/pelco_d_codec.cpp src/core/pelco_d/pelco_d_protocol.cpp
   EMULATOR src/emulators/pelco_d_emulator.cpp
   PROGRAM pelco_d_emulator src/tools/pelco_d_emulator.cpp
-  TESTS test/core/test_pelco_d_codec.cpp test/core/test_pelco_d_protocol.cpp
+  TESTS test/core/test_pelco_d_codec.cpp test/core/test_pelco_d_protocol.cpp test/core/contract/pelco_d_fixtures.cpp
   FUZZ pelco_d src/core/pelco_d/pelco_d_codec.cpp
   ROSTESTS test/ros/serial_pelco_node.test
 )
@@ -38,7 +39,7 @@ ptz_protocol(visca
   PLUGIN src/plugins/visca_ip_backend_plugin.cpp src/plugins/visca_params.cpp
   EMULATOR src/emulators/visca_emulator.cpp
   PROGRAM visca_emulator src/tools/visca_emulator.cpp
-  TESTS test/core/test_visca_codec.cpp test/core/test_visca_protocol.cpp test/core/contract/visca_device_fixtures.cpp
+  TESTS test/core/test_visca_codec.cpp test/core/test_visca_protocol.cpp test/core/contract/visca_fixtures.cpp
   FUZZ visca_reply src/core/visca/visca_codec.cpp
   ROSTESTS test/ros/serial_visca_node.test test/ros/visca_ip_node.test
 )
@@ -50,7 +51,7 @@ ptz_protocol(digiview
   EMULATOR src/emulators/digiview_emulator.cpp src/emulators/digiview_emulator_answers.cpp
   PROGRAM digiview_emulator src/tools/digiview_emulator.cpp
   TESTS test/core/test_digiview_emulator.cpp test/core/test_digiview_goldens.cpp test/core/test_digiview_messages.cpp
-    test/core/test_digiview_protocol.cpp
+    test/core/test_digiview_protocol.cpp test/core/contract/digiview_fixtures.cpp
   FUZZ digiview src/core/digiview/digiview_codec.cpp src/core/digiview/digiview_payloads.cpp
   ROSTESTS test/ros/digiview_node.test test/ros/digiview_node_v1_0.test test/ros/digiview_node_v1_1.test
 )
@@ -62,7 +63,7 @@ ptz_protocol(mavlink_gimbal
   EMULATOR src/emulators/mavlink_gimbal_emulator.cpp
   PROGRAM mavlink_gimbal_emulator src/tools/mavlink_gimbal_emulator.cpp
   TESTS test/core/test_mavlink_codec.cpp test/core/test_mavlink_gimbal_protocol.cpp
-    test/core/contract/mavlink_device_fixtures.cpp
+    test/core/contract/mavlink_gimbal_fixtures.cpp
   FUZZ mavlink src/core/mavlink/mavlink_codec.cpp src/core/mavlink/mavlink_messages.cpp
   ROSTESTS test/ros/mavlink_gimbal_node.test
 )
@@ -72,7 +73,7 @@ ptz_protocol(axis
   PLUGIN src/plugins/axis_backend_plugin.cpp
   EMULATOR src/emulators/axis_camera_emulator.cpp
   PROGRAM axis_camera_emulator src/tools/axis_camera_emulator.cpp
-  TESTS test/core/test_axis_protocol.cpp test/core/test_vapix_codec.cpp
+  TESTS test/core/test_axis_protocol.cpp test/core/test_vapix_codec.cpp test/core/contract/axis_fixtures.cpp
   FUZZ vapix_reply src/core/axis/vapix_codec.cpp src/core/types.cpp
   ROSTESTS test/ros/axis_node.test test/ros/axis_field_node.test
 )
@@ -83,6 +84,7 @@ ptz_protocol(onvif
   EMULATOR src/emulators/onvif_camera_emulator.cpp
   PROGRAM onvif_camera_emulator src/tools/onvif_camera_emulator.cpp
   TESTS test/core/test_onvif_codec.cpp test/core/test_onvif_emulator.cpp test/core/test_onvif_protocol.cpp
+    test/core/contract/onvif_fixtures.cpp
   FUZZ soap_reply src/core/onvif/onvif_codec.cpp src/core/onvif/onvif_xml.cpp src/core/axis/vapix_codec.cpp
     src/core/http/crypto.cpp src/core/types.cpp
   FUZZ_LIBS tinyxml2::tinyxml2 OpenSSL::Crypto

@@ -61,17 +61,27 @@ std::size_t DeviceFixture::holds(const std::vector<DeviceCommand>& commands, con
   }));
 }
 
+namespace
+{
+std::vector<FixtureMaker>& registeredFixtures()
+{
+  static std::vector<FixtureMaker> fixtures;  // built at first use: registrations run during static initialisation
+  return fixtures;
+}
+}  // namespace
+
+DeviceFixtureRegistration::DeviceFixtureRegistration(std::vector<FixtureMaker> fixtures)
+{
+  std::vector<FixtureMaker>& all = registeredFixtures();
+  all.insert(all.end(), std::make_move_iterator(fixtures.begin()), std::make_move_iterator(fixtures.end()));
+}
+
 std::vector<FixtureMaker> allDeviceFixtures()
 {
-  std::vector<FixtureMaker> fixtures = lineDeviceFixtures();
-  const std::vector<FixtureMaker> network = networkDeviceFixtures();
-  fixtures.insert(fixtures.end(), network.begin(), network.end());
-  const std::vector<FixtureMaker> visca = viscaDeviceFixtures();
-  fixtures.insert(fixtures.end(), visca.begin(), visca.end());
-  const std::vector<FixtureMaker> mavlink = mavlinkDeviceFixtures();
-  fixtures.insert(fixtures.end(), mavlink.begin(), mavlink.end());
-  const std::vector<FixtureMaker> cameras = ipCameraFixtures();
-  fixtures.insert(fixtures.end(), cameras.begin(), cameras.end());
+  std::vector<FixtureMaker> fixtures = registeredFixtures();
+  // By name: the order of static initialisation is the linker's.
+  std::sort(fixtures.begin(), fixtures.end(),
+            [](const FixtureMaker& a, const FixtureMaker& b) { return a.name < b.name; });
   return fixtures;
 }
 

@@ -129,7 +129,14 @@ struct FixtureMaker
   std::function<std::unique_ptr<DeviceFixture>()> make;
 };
 
-/// Every device backend over every transport it supports.
+/// Every device backend over every transport it supports: what the protocols' fixture files registered, by name.
 std::vector<FixtureMaker> allDeviceFixtures();
+
+/// Adds a protocol's fixtures to allDeviceFixtures(): a static object in its fixture file, so that adding a protocol's
+/// fixture is listing its file in the protocol's registration (cmake/protocols.cmake), nothing else.
+struct DeviceFixtureRegistration
+{
+  explicit DeviceFixtureRegistration(std::vector<FixtureMaker> fixtures);
+};
 
 }  // namespace ptz_action_server

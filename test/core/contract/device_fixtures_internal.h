@@ -1,8 +1,7 @@
 /**
  * \file
- * \brief Private to the device fixtures: what the line fixtures (line_device_fixtures.cpp: FLIR, Pelco-D) and the
- * network ones (network_device_fixtures.cpp: PanTilt, DigiView), VISCA's (visca_device_fixtures.cpp), the IP cameras
- * (ip_camera_fixtures.cpp) and MAVLink's share, and their lists, which allDeviceFixtures() (device_fixtures.cpp) joins.
+ * \brief Private to the device fixtures: what every protocol's fixture file (<protocol>_fixtures.cpp, listed in its
+ * registration in cmake/protocols.cmake) shares.
  */
 #pragma once
 
@@ -22,19 +21,6 @@ std::string uniqueLink(const char* name);
 
 /// \p commands without the state polls.
 std::vector<DeviceCommand> withoutQueries(const std::vector<DeviceCommand>& commands);
-
-/// FLIR (serial, TCP) and Pelco-D (serial in both tilt encodings, TCP).
-std::vector<FixtureMaker> lineDeviceFixtures();
-
-/// PanTilt over UDP (every wire format) and DigiView (TCP, UDP; formats 0.5 and 1.0).
-std::vector<FixtureMaker> networkDeviceFixtures();
-
-/// VISCA on a pseudo-terminal, raw over TCP, over UDP raw and with Sony's VISCA over IP header.
-std::vector<FixtureMaker> viscaDeviceFixtures();
-/// The MAVLink gimbal manager over UDP and a serial line.
-std::vector<FixtureMaker> mavlinkDeviceFixtures();
-/// The IP cameras over HTTP: Axis (VAPIX) and ONVIF, each against its emulated camera.
-std::vector<FixtureMaker> ipCameraFixtures();
 
 /// s without a state before a link is lost: generous, a busy test machine may starve the I/O threads for a while
 /// (the deadline cases read it back).

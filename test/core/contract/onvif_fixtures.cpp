@@ -1,16 +1,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
-#include <cmath>
 
-#include "device_fixtures_internal.h"
-#include "ptz_action_server/core/axis/axis_protocol.h"
+#include "http_camera_fixture.h"
 #include "ptz_action_server/core/onvif/onvif_protocol.h"
-#include "ptz_action_server/core/transport/http_link.h"
 #include "ptz_action_server/core/units.h"
-#include "ptz_action_server/emulators/axis_camera_emulator.h"
 #include "ptz_action_server/emulators/onvif_camera_emulator.h"
 
 namespace ptz_action_server
@@ -18,186 +15,6 @@ namespace ptz_action_server
 namespace
 {
 using Kind = DeviceCommand::Kind;
-
-/// What the IP camera fixtures share: an emulated camera behind its HTTP server.
-class HttpCameraFixture : public DeviceFixture
-{
-public:
-  void setSilent(bool silent) override
-  {
-    server().setSilent(silent);
-  }
-  double replyDeadline() const override
-  {
-    // The state timeout (shorter here than request_timeout): an answer later than it leaves the link without news
-    // for longer. A goal's command and the next poll go one request at a time, so two positions may be two answers
-    // apart; the command's answer keeps the link up in between (the emulators apply SimFaults::reply_delay through
-    // HttpCameraServer::setDelay()).
-    return TEST_STATE_TIMEOUT;
-  }
-  bool setEndlessReplies(bool endless) override
-  {
-    server().setEndless(endless);
-    return true;
-  }
-  /// The camera vanishes: its connections close and nothing listens (a closed keep-alive connection alone is no
-  /// loss on HTTP: the next request opens another).
-  void breakLink() override
-  {
-    server().setListening(false);
-    server().dropConnections();
-  }
-  void restoreLink() override
-  {
-    server().setListening(true);
-  }
-  /// A connection that closes and reopens at once is ordinary HTTP: only a request that fails, or silence, is a loss.
-  bool breaksAtOnce() const override
-  {
-    return false;
-  }
-  std::string linkLossWords() const override
-  {
-    return server().url().substr(0, server().url().rfind(':'));  // "http://127.0.0.1" or "https://127.0.0.1"
-  }
-  void clearCommands() override
-  {
-    server().received().clear();
-  }
-  AxisValues goal(double pan, double tilt) const override
-  {
-    return AxisValues{ { pan, tilt, 2.0 } };
-  }
-
-protected:
-  virtual HttpCameraServer& server() const = 0;
-
-  /// A camera serving TLS is reached over TLS, its certificate pinned (as a self-signed camera is configured).
-  static void pinIfTls(const HttpCameraServer& server, LinkConfig& link)
-  {
-    link.http.tls = !server.fingerprint().empty();
-    link.http.fingerprint = parseCertificateFingerprint(server.fingerprint());
-  }
-};
-
-// ---------------------------------------------------------------- Axis (VAPIX)
-
-/// An Axis camera: by default the emulator's own (zoom attributes, an 18X table); \p camera for a field case.
-class AxisFixture : public HttpCameraFixture
-{
-public:
-  explicit AxisFixture(const AxisCameraEmulatorConfig& camera = AxisCameraEmulatorConfig(),
-                       const vapix::ZoomTable& backend_table = zoomTable(AxisCameraEmulatorConfig::DEFAULT_ZOOM_TABLE))
-    : backend_table_(backend_table)
-  {
-    emulator_ = std::make_unique<AxisCameraEmulator>(camera);
-    config_.link.host = "127.0.0.1";
-    config_.link.port = emulator_->port();
-    config_.link.http.username = "root";
-    config_.link.http.password = "pass";
-    config_.link.http.request_timeout = 2.0;  // longer than the state timeout: silence is seen as silence
-    pinIfTls(emulator_->server(), config_.link);
-    config_.session.state_timeout = TEST_STATE_TIMEOUT;
-  }
-
-  std::unique_ptr<DeviceBackend> makeBackend() override
-  {
-    return makeAxisBackend(config_);
-  }
-  std::vector<DeviceCommand> commands() const override
-  {
-    std::vector<DeviceCommand> commands;
-    for (const HttpExchange& exchange : emulator_->server().received().items())
-    {
-      const std::string& target = exchange.target;
-      Kind kind = Kind::OTHER;
-      bool aims = false;
-      double pan = 0.0;
-      if (target.find("query=") != std::string::npos)
-      {
-        kind = Kind::QUERY;
-      }
-      else if (target.find("move=stop") != std::string::npos)
-      {
-        kind = Kind::STOP;
-      }
-      else if (target.find("&pan=") != std::string::npos)
-      {
-        kind = Kind::MOVE;
-        aims = true;
-        pan = toRadians(std::stod(target.substr(target.find("&pan=") + 5)));
-      }
-      commands.push_back(DeviceCommand{ exchange.at, kind, exchange.method + " " + target, aims, pan });
-    }
-    return commands;
-  }
-  PtzSample deviceState() const override
-  {
-    return emulator_->sample();
-  }
-  bool setFaults(const SimFaults& faults) override
-  {
-    emulator_->setFaults(faults);
-    return true;
-  }
-  std::string prepareRefusal(AxisValues& goal) override
-  {
-    emulator_->setRefuse(true);
-    goal = AxisValues{ { 0.3, 0.0, 1.0 } };
-    return std::string("the Axis camera refused 'pan=17.1887&tilt=0.0000&zoom=1&speed=100': ") +
-           AxisCameraEmulator::REFUSAL;
-  }
-  void expectGoalCommands(const std::vector<DeviceCommand>& commands, const AxisValues& target) const override
-  {
-    // The zoom value goes out through the table the backend found (the camera's, or its guess).
-    std::string expected = "GET /axis-cgi/com/ptz.cgi?camera=1&";
-    vapix::appendAbsoluteMove(expected, toDegrees(target[PAN]), toDegrees(target[TILT]),
-                              backend_table_.toValue(target[ZOOM]), 100);
-    std::vector<std::string> texts;
-    for (const DeviceCommand& sent : withoutQueries(commands))
-    {
-      texts.push_back(sent.text);
-    }
-    EXPECT_EQ(texts, std::vector<std::string>{ expected });
-  }
-
-private:
-  HttpCameraServer& server() const override
-  {
-    return emulator_->server();
-  }
-  static vapix::ZoomTable zoomTable(const std::string& text)
-  {
-    vapix::ZoomTable table;
-    vapix::ZoomTable::parse(text, table);
-    return table;
-  }
-
-  const vapix::ZoomTable backend_table_;
-  std::unique_ptr<AxisCameraEmulator> emulator_;
-  AxisConfig config_;
-};
-
-/// The camera of issue 21, as it answered in the field: no `query=attributes` (info=1 does not list it, asking answers
-/// `Error:` / `query: unknown value: attributes`), MinZoom=1 and MaxZoom=9999 in the limits, zoom, iris, focus,
-/// brightness, autofocus and autoiris in the position; a Q6155-E with a 30X lens, whose family the backend guesses
-/// 30X for: the guess and the lens agree, so zoom goals reach their X.
-/// The emulator's own Axis camera over https (its certificate pinned).
-AxisCameraEmulatorConfig axisTlsCamera()
-{
-  AxisCameraEmulatorConfig camera;
-  camera.http.tls = true;
-  return camera;
-}
-
-AxisCameraEmulatorConfig axisFieldCamera()
-{
-  AxisCameraEmulatorConfig camera;
-  camera.attributes = false;
-  camera.zoom_table = AxisCameraEmulatorConfig::linearZoomTable(30.0);
-  camera.model = "Q6155-E";
-  return camera;
-}
 
 // ---------------------------------------------------------------- ONVIF
 
@@ -333,7 +150,6 @@ private:
   std::unique_ptr<OnvifCameraEmulator> emulator_;
   OnvifConfig config_;
 };
-}  // namespace
 
 /// The contract cases the continuous-only and the no-position cameras cannot run, and why.
 const Unsupported CONTINUOUS_ONLY_CANNOT = { { "*" },
@@ -353,18 +169,12 @@ const Unsupported NO_POSITION_CANNOT = {
   "refused)"
 };
 
-std::vector<FixtureMaker> ipCameraFixtures()
-{
-  using Modes = std::vector<std::string>;
-  return {
-    { "AxisHttpDigest", [] { return std::make_unique<AxisFixture>(); } },
-    { "AxisHttpsPinned", [] { return std::make_unique<AxisFixture>(axisTlsCamera()); } },
-    { "AxisFieldNoZoomAttributes",
-      [] { return std::make_unique<AxisFixture>(axisFieldCamera(), vapix::ZoomTable::linear(30.0)); } },
+using Modes = std::vector<std::string>;
+const DeviceFixtureRegistration ONVIF_FIXTURES({
     { "OnvifDegreeSpace", [] { return std::make_unique<OnvifFixture>(Modes{ "standard" }); } },
     { "OnvifHttpsPinned", [] { return std::make_unique<OnvifFixture>(Modes{ "standard" }, Unsupported{}, true); } },
     { "OnvifGenericSpace", [] { return std::make_unique<OnvifFixture>(Modes{ "generic-only" }); } },
-    // The field's cameras (README, ONVIF): each mode as the emulator plays it.
+    // The field's cameras (doc/backends/onvif.md): each mode as the emulator plays it.
     { "OnvifDegreesListedGenericStatus", [] { return std::make_unique<OnvifFixture>(Modes{ "generic-status" }); } },
     { "OnvifWrongGenericRange", [] { return std::make_unique<OnvifFixture>(Modes{ "wrong-generic-range" }); } },
     { "OnvifNoPresets", [] { return std::make_unique<OnvifFixture>(Modes{ "no-presets" }); } },
@@ -372,7 +182,7 @@ std::vector<FixtureMaker> ipCameraFixtures()
     { "OnvifContinuousOnly",
       [] { return std::make_unique<OnvifFixture>(Modes{ "continuous-only" }, CONTINUOUS_ONLY_CANNOT); } },
     { "OnvifNoPosition", [] { return std::make_unique<OnvifFixture>(Modes{ "no-position" }, NO_POSITION_CANNOT); } },
-  };
-}
+});
+}  // namespace
 
 }  // namespace ptz_action_server

@@ -164,16 +164,13 @@ private:
   ViscaConfig config_;
   std::unique_ptr<ViscaEmulator> emulator_;
 };
-}  // namespace
 
-std::vector<FixtureMaker> viscaDeviceFixtures()
-{
-  return {
+const DeviceFixtureRegistration VISCA_FIXTURES({
     { "ViscaSerial", [] { return std::make_unique<ViscaFixture>(PortKind::PTY, ViscaFraming::RAW); } },
     { "ViscaTcp", [] { return std::make_unique<ViscaFixture>(PortKind::TCP, ViscaFraming::RAW); } },
     { "ViscaUdpSonyIp", [] { return std::make_unique<ViscaFixture>(PortKind::UDP, ViscaFraming::SONY_IP); } },
     { "ViscaUdpRaw", [] { return std::make_unique<ViscaFixture>(PortKind::UDP, ViscaFraming::RAW); } },
-  };
-}
+});
+}  // namespace
 
 }  // namespace ptz_action_server

@@ -206,18 +206,15 @@ private:
   std::unique_ptr<MavlinkGimbalEmulator> emulator_;
   MavlinkGimbalConfig config_;
 };
-}  // namespace
 
-std::vector<FixtureMaker> mavlinkDeviceFixtures()
-{
-  return {
+const DeviceFixtureRegistration MAVLINK_GIMBAL_FIXTURES({
     { "MavlinkGimbalUdp",
       [] { return std::make_unique<MavlinkGimbalFixture>(LinkKind::UDP, Setup::GIMBAL_INSIDE_MANAGER); } },
     { "MavlinkGimbalSerial",
       [] { return std::make_unique<MavlinkGimbalFixture>(LinkKind::SERIAL, Setup::GIMBAL_INSIDE_MANAGER); } },
     { "MavlinkGimbalAutopilotHostedUdp",
       [] { return std::make_unique<MavlinkGimbalFixture>(LinkKind::UDP, Setup::AUTOPILOT_HOSTED); } },
-  };
-}
+});
+}  // namespace
 
 }  // namespace ptz_action_server
