@@ -1,0 +1,34 @@
+#include "device_plugin.h"
+#include "ptz_action_server/core/flir/flir_protocol.h"
+
+namespace ptz_action_server
+{
+/// A FLIR / Directed Perception PTU (D46, E46, E-series): ~flir/..., on a serial port or over TCP (port 4000).
+struct FlirPlugin
+{
+  using Config = FlirConfig;
+  static constexpr const char* NAME = "flir";
+
+  static LinkChoices links()
+  {
+    return { { { LinkKind::SERIAL }, { LinkKind::TCP, 4000 } } };
+  }
+
+  static void read(const DeviceParams& device, const BackendContext& /*context*/, FlirConfig& config)
+  {
+    const ParamReader& flir = device.own;
+    config.flir.pan_speed = flir.number("pan_speed", config.flir.pan_speed, 1e-3, 10.0);
+    config.flir.tilt_speed = flir.number("tilt_speed", config.flir.tilt_speed, 1e-3, 10.0);
+    config.flir.acceleration = flir.number("acceleration", config.flir.acceleration, 0.0, 1e4);
+    config.flir.reply_timeout = device.params.number("reply_timeout", 0.0, 0.0, 10.0);
+  }
+
+  static std::unique_ptr<DeviceBackend> make(const FlirConfig& config, std::shared_ptr<const Clock> clock)
+  {
+    return makeFlirBackend(config, std::move(clock));
+  }
+};
+
+}  // namespace ptz_action_server
+
+PTZ_DEVICE_PLUGIN(FlirPlugin, FlirBackendPlugin)
