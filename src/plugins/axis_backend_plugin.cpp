@@ -7,7 +7,7 @@ namespace ptz_action_server
 /// An Axis PTZ camera over VAPIX: ~axis/..., over http or https.
 struct AxisPlugin
 {
-  using Config = AxisConfig;
+  using Protocol = AxisProtocol;
   static constexpr const char* NAME = "axis";
 
   static LinkChoices links()
@@ -15,10 +15,10 @@ struct AxisPlugin
     return { { { LinkKind::HTTP } }, 0.15, 0.02 };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& /*context*/, AxisConfig& config)
+  static void read(const DeviceParams& device, const BackendContext& /*context*/, DeviceConfig<AxisProtocol>& config)
   {
     const ParamReader& params = device.own;
-    AxisSettings& axis = config.axis;
+    AxisSettings& axis = config.settings;
     axis.camera = params.integer("camera", axis.camera, 1, 64);
     axis.speed = params.integer("speed", axis.speed, 1, 100);
     axis.pan_max_speed = params.number("pan/max_speed", axis.pan_max_speed, 1e-3, 100.0);
@@ -49,11 +49,6 @@ struct AxisPlugin
                         " are both set: set one (the table, or the optical zoom for a linear one)");
     }
     axis.zoom_guess = params.flag("zoom_guess", axis.zoom_guess);
-  }
-
-  static std::unique_ptr<DeviceBackend> make(const AxisConfig& config, std::shared_ptr<const Clock> clock)
-  {
-    return makeAxisBackend(config, std::move(clock));
   }
 };
 

@@ -4,11 +4,10 @@
  * PTZ_DEVICE_PLUGIN line.
  *
  * A protocol's plugin is a struct with
- * - `using Config = ...;` its core config (with `link`, `session` and the protocol's settings),
+ * - `using Protocol = ...;` its DeviceProtocol (its config is DeviceConfig<Protocol>: link, session, settings),
  * - `static constexpr const char* NAME`, the plugin name and parameter namespace ("flir": ~flir/...),
  * - `static LinkChoices links()`, the transports it runs over and their default ports,
- * - `static void read(const DeviceParams&, const BackendContext&, Config&)`, its own settings,
- * - `static std::unique_ptr<DeviceBackend> make(const Config&, std::shared_ptr<const Clock>)`.
+ * - `static void read(const DeviceParams&, const BackendContext&, DeviceConfig<Protocol>&)`, its own settings.
  *
  * The link and session parameters are read once for all (plugin_params.h), before read().
  */
@@ -20,30 +19,31 @@
 #include <pluginlib/class_list_macros.hpp>
 
 #include "plugin_params.h"
+#include "ptz_action_server/core/device/device_backend.h"
 #include "ptz_action_server/ros/backend_plugin.h"
 
 namespace ptz_action_server
 {
-/// The backend of \p Protocol from \p device's parameters: link, session, then the protocol's own settings.
-template <class Protocol>
+/// The backend of \p Plugin from \p device's parameters: link, session, then the protocol's own settings.
+template <class Plugin>
 std::shared_ptr<PtzBackend> createDevice(const DeviceParams& device, const BackendContext& context)
 {
-  typename Protocol::Config config;
-  const LinkChoices choices = Protocol::links();
+  DeviceConfig<typename Plugin::Protocol> config;
+  const LinkChoices choices = Plugin::links();
   readLink(device, choices, config.link);
   readSession(device, choices, config.session);
-  Protocol::read(device, context, config);
-  return Protocol::make(config, context.clock);
+  Plugin::read(device, context, config);
+  return makeDeviceBackend<typename Plugin::Protocol>(config, context.clock);
 }
 
-/// The pluginlib class of \p Protocol: reads ~NAME/...
-template <class Protocol>
+/// The pluginlib class of \p Plugin: reads ~NAME/...
+template <class Plugin>
 class DevicePlugin : public BackendPlugin
 {
 public:
   std::shared_ptr<PtzBackend> create(const ParamReader& params, const BackendContext& context) override
   {
-    return createDevice<Protocol>(DeviceParams(params, Protocol::NAME), context);
+    return createDevice<Plugin>(DeviceParams(params, Plugin::NAME), context);
   }
 };
 
@@ -57,14 +57,14 @@ DeviceFactory findDevice(const std::string& name);
 
 }  // namespace ptz_action_server
 
-/// Exports DevicePlugin<Protocol> as ptz_action_server::PluginClass (backend_plugins.xml's type).
-#define PTZ_DEVICE_PLUGIN(Protocol, PluginClass)                                                                       \
+/// Exports DevicePlugin<Plugin> as ptz_action_server::PluginClass (backend_plugins.xml's type).
+#define PTZ_DEVICE_PLUGIN(Plugin, PluginClass)                                                                         \
   namespace ptz_action_server                                                                                          \
   {                                                                                                                    \
-  using PluginClass = DevicePlugin<Protocol>;                                                                          \
+  using PluginClass = DevicePlugin<Plugin>;                                                                            \
   namespace                                                                                                            \
   {                                                                                                                    \
-  const bool PluginClass##_registered = registerDevice(Protocol::NAME, &createDevice<Protocol>);                       \
+  const bool PluginClass##_registered = registerDevice(Plugin::NAME, &createDevice<Plugin>);                           \
   }                                                                                                                    \
   }                                                                                                                    \
   PLUGINLIB_EXPORT_CLASS(ptz_action_server::PluginClass, ptz_action_server::BackendPlugin)

@@ -6,7 +6,7 @@ namespace ptz_action_server
 /// A DigiView (Synclair Vision) virtual camera: ~digiview/..., over TCP or UDP (port 5500).
 struct DigiViewPlugin
 {
-  using Config = DigiViewConfig;
+  using Protocol = DigiViewProtocol;
   static constexpr const char* NAME = "digiview";
 
   static LinkChoices links()
@@ -14,10 +14,11 @@ struct DigiViewPlugin
     return { { { LinkKind::TCP, 5500 }, { LinkKind::UDP, 5500 } }, 0.15 };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& /*context*/, DigiViewConfig& config)
+  static void read(const DeviceParams& device, const BackendContext& /*context*/,
+                   DeviceConfig<DigiViewProtocol>& config)
   {
     const ParamReader& params = device.own;
-    DigiViewSettings& digiview = config.digiview;
+    DigiViewSettings& digiview = config.settings;
     digiview::parseFormat(params.choice("format", "0.5", { "0.5", "1.0", "1.1" }), digiview.wire.format);
     digiview::parseChecksumRule(params.choice("checksum", "required", { "required", "zero_accepted" }),
                                 digiview.wire.checksum);
@@ -34,11 +35,6 @@ struct DigiViewPlugin
     digiview.slew_rate = params.number("slew_rate", digiview.slew_rate, 1e-3, 100.0);
     digiview.acceleration = params.number("acceleration", digiview.acceleration, 0.0, 1e4);
     digiview.velocity_period = params.number("velocity_period", digiview.velocity_period, 0.02, 5.0);
-  }
-
-  static std::unique_ptr<DeviceBackend> make(const DigiViewConfig& config, std::shared_ptr<const Clock> clock)
-  {
-    return makeDigiViewBackend(config, std::move(clock));
   }
 };
 

@@ -6,7 +6,7 @@ namespace ptz_action_server
 /// A FLIR / Directed Perception PTU (D46, E46, E-series): ~flir/..., on a serial port or over TCP (port 4000).
 struct FlirPlugin
 {
-  using Config = FlirConfig;
+  using Protocol = FlirProtocol;
   static constexpr const char* NAME = "flir";
 
   static LinkChoices links()
@@ -14,18 +14,13 @@ struct FlirPlugin
     return { { { LinkKind::SERIAL }, { LinkKind::TCP, 4000 } } };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& /*context*/, FlirConfig& config)
+  static void read(const DeviceParams& device, const BackendContext& /*context*/, DeviceConfig<FlirProtocol>& config)
   {
     const ParamReader& flir = device.own;
-    config.flir.pan_speed = flir.number("pan_speed", config.flir.pan_speed, 1e-3, 10.0);
-    config.flir.tilt_speed = flir.number("tilt_speed", config.flir.tilt_speed, 1e-3, 10.0);
-    config.flir.acceleration = flir.number("acceleration", config.flir.acceleration, 0.0, 1e4);
-    config.flir.reply_timeout = device.params.number("reply_timeout", 0.0, 0.0, 10.0);
-  }
-
-  static std::unique_ptr<DeviceBackend> make(const FlirConfig& config, std::shared_ptr<const Clock> clock)
-  {
-    return makeFlirBackend(config, std::move(clock));
+    config.settings.pan_speed = flir.number("pan_speed", config.settings.pan_speed, 1e-3, 10.0);
+    config.settings.tilt_speed = flir.number("tilt_speed", config.settings.tilt_speed, 1e-3, 10.0);
+    config.settings.acceleration = flir.number("acceleration", config.settings.acceleration, 0.0, 1e4);
+    config.settings.reply_timeout = device.params.number("reply_timeout", 0.0, 0.0, 10.0);
   }
 };
 

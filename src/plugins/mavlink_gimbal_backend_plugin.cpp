@@ -6,7 +6,7 @@ namespace ptz_action_server
 /// A drone gimbal through its MAVLink gimbal manager: ~mavlink_gimbal/..., over UDP (port 14550) or serial.
 struct MavlinkGimbalPlugin
 {
-  using Config = MavlinkGimbalConfig;
+  using Protocol = MavlinkGimbalProtocol;
   static constexpr const char* NAME = "mavlink_gimbal";
 
   static LinkChoices links()
@@ -14,10 +14,11 @@ struct MavlinkGimbalPlugin
     return { { { LinkKind::UDP, 14550 }, { LinkKind::SERIAL } }, 0.1 };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& context, MavlinkGimbalConfig& config)
+  static void read(const DeviceParams& device, const BackendContext& context,
+                   DeviceConfig<MavlinkGimbalProtocol>& config)
   {
     const ParamReader& params = device.own;
-    MavlinkGimbalSettings& gimbal = config.gimbal;
+    MavlinkGimbalSettings& gimbal = config.settings;
     auto id = [&params](const char* name, int value, int min) {
       return static_cast<std::uint8_t>(params.integer(name, value, min, 255));
     };
@@ -34,11 +35,6 @@ struct MavlinkGimbalPlugin
     gimbal.resend_period = params.number("resend_period", gimbal.resend_period, 0.05, 10.0);
     readAxis(params.child("pan"), context.urdf_limits.axes[PAN].range, M_PI, gimbal.pan);
     readAxis(params.child("tilt"), context.urdf_limits.axes[TILT].range, M_PI / 2.0, gimbal.tilt);
-  }
-
-  static std::unique_ptr<DeviceBackend> make(const MavlinkGimbalConfig& config, std::shared_ptr<const Clock> clock)
-  {
-    return makeMavlinkGimbalBackend(config, std::move(clock));
   }
 };
 

@@ -17,7 +17,7 @@ void readGenericAxis(const ParamReader& params, GenericAxisMapping& mapping)
 /// An ONVIF PTZ camera: ~onvif/..., over http or https (SOAP 1.2, WS-Security, optionally HTTP Digest).
 struct OnvifPlugin
 {
-  using Config = OnvifConfig;
+  using Protocol = OnvifProtocol;
   static constexpr const char* NAME = "onvif";
 
   static LinkChoices links()
@@ -25,10 +25,10 @@ struct OnvifPlugin
     return { { { LinkKind::HTTP } }, 0.15, 0.02 };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& /*context*/, OnvifConfig& config)
+  static void read(const DeviceParams& device, const BackendContext& /*context*/, DeviceConfig<OnvifProtocol>& config)
   {
     const ParamReader& params = device.own;
-    OnvifSettings& onvif = config.onvif;
+    OnvifSettings& onvif = config.settings;
     onvif.device_path = params.text("device_path", onvif.device_path);
     onvif.profile = params.text("profile", onvif.profile);
     // WS-Security takes the HTTP credentials: one user and password for the camera.
@@ -46,11 +46,6 @@ struct OnvifPlugin
     onvif.acceleration = params.number("acceleration", onvif.acceleration, 0.0, 1e4);
     onvif.velocity_timeout = params.integer("velocity_timeout", onvif.velocity_timeout, 1, 3600);
     // What the camera contradicts itself in (a listed range its own status leaves): once, also in diagnostics.
-  }
-
-  static std::unique_ptr<DeviceBackend> make(const OnvifConfig& config, std::shared_ptr<const Clock> clock)
-  {
-    return makeOnvifBackend(config, std::move(clock));
   }
 };
 

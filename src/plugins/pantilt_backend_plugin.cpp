@@ -9,7 +9,7 @@ namespace ptz_action_server
  */
 struct PanTiltPlugin
 {
-  using Config = PanTiltConfig;
+  using Protocol = PanTiltProtocol;
   static constexpr const char* NAME = "pantilt";
 
   static LinkChoices links()
@@ -17,10 +17,10 @@ struct PanTiltPlugin
     return { { { LinkKind::UDP, 5000 }, { LinkKind::SERIAL }, { LinkKind::TCP, 4002 } }, 0.05 };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& context, PanTiltConfig& config)
+  static void read(const DeviceParams& device, const BackendContext& context, DeviceConfig<PanTiltProtocol>& config)
   {
     const ParamReader& params = device.own;
-    PanTiltSettings& pantilt = config.pantilt;
+    PanTiltSettings& pantilt = config.settings;
     if (params.has("wire_version"))
     {
       // "1.0" named two formats that share their version bytes (the seed's and PanTilt 1.0.x): no guessing.
@@ -35,11 +35,6 @@ struct PanTiltPlugin
     // The PanTilt angle range: +-180 and +-90 degrees.
     readAxis(params.child("pan"), context.urdf_limits.axes[PAN].range, M_PI, pantilt.axes[PAN]);
     readAxis(params.child("tilt"), context.urdf_limits.axes[TILT].range, M_PI / 2.0, pantilt.axes[TILT]);
-  }
-
-  static std::unique_ptr<DeviceBackend> make(const PanTiltConfig& config, std::shared_ptr<const Clock> clock)
-  {
-    return makePanTiltBackend(config, std::move(clock));
   }
 };
 

@@ -6,7 +6,7 @@ namespace ptz_action_server
 /// A Pelco-D camera or pan-tilt unit: ~pelco_d/..., on a serial port or over TCP to a serial-to-Ethernet server.
 struct PelcoDPlugin
 {
-  using Config = PelcoConfig;
+  using Protocol = PelcoProtocol;
   static constexpr const char* NAME = "pelco_d";
 
   static LinkChoices links()
@@ -14,9 +14,9 @@ struct PelcoDPlugin
     return { { { LinkKind::SERIAL }, { LinkKind::TCP, 4001 } } };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& context, PelcoConfig& config)
+  static void read(const DeviceParams& device, const BackendContext& context, DeviceConfig<PelcoProtocol>& config)
   {
-    PelcoSettings& settings = config.pelco;
+    PelcoSettings& settings = config.settings;
     settings.reply_timeout = device.params.number("reply_timeout", 0.0, 0.0, 10.0);
     const ParamReader& pelco = device.own;
     settings.address = static_cast<std::uint8_t>(pelco.integer("address", settings.address, 1, 255));
@@ -44,11 +44,6 @@ struct PelcoDPlugin
       }
       settings.turbo_speed = pelco.number("turbo_speed", 0.0, settings.axes[PAN].max_speed + 1e-6, 100.0);
     }
-  }
-
-  static std::unique_ptr<DeviceBackend> make(const PelcoConfig& config, std::shared_ptr<const Clock> clock)
-  {
-    return makePelcoBackend(config, std::move(clock));
   }
 };
 

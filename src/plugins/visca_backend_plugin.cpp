@@ -98,7 +98,7 @@ ViscaFraming readViscaFraming(const ParamReader& params, LinkKind kind)
  */
 struct ViscaPlugin
 {
-  using Config = ViscaConfig;
+  using Protocol = ViscaProtocol;
   static constexpr const char* NAME = "visca";
 
   static LinkChoices links()
@@ -106,19 +106,14 @@ struct ViscaPlugin
     return { { { LinkKind::SERIAL }, { LinkKind::TCP, 5678 }, { LinkKind::UDP, visca::SONY_IP_PORT } } };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& /*context*/, ViscaConfig& config)
+  static void read(const DeviceParams& device, const BackendContext& /*context*/, DeviceConfig<ViscaProtocol>& config)
   {
     // Diagnostics keep the name the backend was loaded by.
-    config.visca.backend_name =
+    config.settings.backend_name =
         device.old_plugin == "serial" ? "serial/visca" : (device.old_plugin.empty() ? NAME : device.old_plugin);
-    readViscaSettings(device.own, config.visca);
-    config.visca.framing = readViscaFraming(device.own, config.link.kind);
-    config.visca.reply_timeout = device.params.number("reply_timeout", 0.0, 0.0, 10.0);
-  }
-
-  static std::unique_ptr<DeviceBackend> make(const ViscaConfig& config, std::shared_ptr<const Clock> clock)
-  {
-    return makeViscaBackend(config, std::move(clock));
+    readViscaSettings(device.own, config.settings);
+    config.settings.framing = readViscaFraming(device.own, config.link.kind);
+    config.settings.reply_timeout = device.params.number("reply_timeout", 0.0, 0.0, 10.0);
   }
 };
 

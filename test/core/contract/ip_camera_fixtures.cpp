@@ -102,7 +102,7 @@ public:
 
   std::unique_ptr<DeviceBackend> makeBackend() override
   {
-    return makeAxisBackend(config_);
+    return makeDeviceBackend<AxisProtocol>(config_);
   }
   std::vector<DeviceCommand> commands() const override
   {
@@ -175,7 +175,7 @@ private:
 
   const vapix::ZoomTable backend_table_;
   std::unique_ptr<AxisCameraEmulator> emulator_;
-  AxisConfig config_;
+  DeviceConfig<AxisProtocol> config_;
 };
 
 /// The camera of issue 21, as it answered in the field: no `query=attributes` (info=1 does not list it, asking answers
@@ -254,15 +254,15 @@ public:
     config_.link.http.password = camera.password;
     config_.link.http.request_timeout = 2.0;
     pinIfTls(emulator_->server(), config_.link);
-    config_.onvif.username = camera.username;
-    config_.onvif.password = camera.password;
+    config_.settings.username = camera.username;
+    config_.settings.password = camera.password;
     config_.session.state_timeout = TEST_STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override
   {
     skipIfUnsupported(unsupported_);
-    return makeOnvifBackend(config_);
+    return makeDeviceBackend<OnvifProtocol>(config_);
   }
   std::vector<DeviceCommand> commands() const override
   {
@@ -331,7 +331,7 @@ private:
 
   Unsupported unsupported_;
   std::unique_ptr<OnvifCameraEmulator> emulator_;
-  OnvifConfig config_;
+  DeviceConfig<OnvifProtocol> config_;
 };
 }  // namespace
 
