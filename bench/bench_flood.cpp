@@ -54,10 +54,10 @@ int main(int argc, char** argv)
     PanTiltEmulatorConfig emulator_config;
     emulator_config.state_period = 0.05;
     PanTiltEmulator emulator(emulator_config);
-    PanTiltConfig config;
+    DeviceConfig<PanTiltProtocol> config;
     config.link.port = emulator.endpoint().port();
     config.link.local_host = "127.0.0.1";
-    std::unique_ptr<DeviceBackend> backend = makePanTiltBackend(config);
+    std::unique_ptr<DeviceBackend> backend = makeDeviceBackend<PanTiltProtocol>(config);
     backend->start();
     emulator.setFlood(flood);
     std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the flood under way

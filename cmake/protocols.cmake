@@ -4,7 +4,7 @@
 ptz_protocol(pantilt
   CORE src/core/pantilt/pantilt_codec.cpp src/core/pantilt/pantilt_params.cpp src/core/pantilt/pantilt_params_json.cpp
     src/core/pantilt/pantilt_protocol.cpp
-  PLUGIN src/plugins/pantilt_udp_backend_plugin.cpp src/plugins/pantilt_settings.cpp
+  PLUGIN src/plugins/pantilt_backend_plugin.cpp
   EMULATOR src/emulators/pantilt_emulator.cpp src/emulators/sim_pantilt.cpp
   PROGRAM pantilt_emulator src/tools/pantilt_emulator.cpp
   TESTS test/core/test_pantilt_codec.cpp test/core/test_pantilt_foreign_frames.cpp test/core/test_pantilt_formats.cpp
@@ -17,6 +17,7 @@ ptz_protocol(pantilt
 
 ptz_protocol(flir
   CORE src/core/flir/flir_codec.cpp src/core/flir/flir_protocol.cpp
+  PLUGIN src/plugins/flir_backend_plugin.cpp
   EMULATOR src/emulators/flir_ptu_emulator.cpp src/emulators/flir_ptu_emulator_answers.cpp
   PROGRAM flir_ptu_emulator src/tools/flir_ptu_emulator.cpp
   TESTS test/core/test_flir_codec.cpp test/core/test_flir_emulator.cpp test/core/test_flir_protocol.cpp
@@ -27,6 +28,7 @@ ptz_protocol(flir
 
 ptz_protocol(pelco_d
   CORE src/core/pelco_d/pelco_d_codec.cpp src/core/pelco_d/pelco_d_protocol.cpp
+  PLUGIN src/plugins/pelco_d_backend_plugin.cpp
   EMULATOR src/emulators/pelco_d_emulator.cpp
   PROGRAM pelco_d_emulator src/tools/pelco_d_emulator.cpp
   TESTS test/core/test_pelco_d_codec.cpp test/core/test_pelco_d_protocol.cpp test/core/contract/pelco_d_fixtures.cpp
@@ -36,7 +38,7 @@ ptz_protocol(pelco_d
 
 ptz_protocol(visca
   CORE src/core/visca/visca_codec.cpp src/core/visca/visca_model.cpp src/core/visca/visca_protocol.cpp
-  PLUGIN src/plugins/visca_ip_backend_plugin.cpp src/plugins/visca_params.cpp
+  PLUGIN src/plugins/visca_backend_plugin.cpp
   EMULATOR src/emulators/visca_emulator.cpp
   PROGRAM visca_emulator src/tools/visca_emulator.cpp
   TESTS test/core/test_visca_codec.cpp test/core/test_visca_protocol.cpp test/core/contract/visca_fixtures.cpp

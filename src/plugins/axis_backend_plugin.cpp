@@ -1,29 +1,24 @@
-#include <memory>
-#include <string>
-
-#include <pluginlib/class_list_macros.hpp>
-#include <ros/console.h>
-
-#include "plugin_params.h"
+#include "device_plugin.h"
 #include "ptz_action_server/core/axis/axis_protocol.h"
 #include "ptz_action_server/core/text.h"
-#include "ptz_action_server/ros/backend_plugin.h"
 
 namespace ptz_action_server
 {
-/// Builds the axis backend from ~axis/... parameters.
-class AxisBackendPlugin : public BackendPlugin
+/// An Axis PTZ camera over VAPIX: ~axis/..., over http or https.
+struct AxisPlugin
 {
-public:
-  std::shared_ptr<PtzBackend> create(const ParamReader& params, const BackendContext& context) override
-  {
-    AxisConfig config;  // the node intersects the camera's limits with the URDF's
-    readHttpLink(params, config.link);
-    config.session.state_timeout = params.number("state_timeout", config.session.state_timeout, 0.15, 60.0);
-    config.session.poll_period = params.number("poll_period", config.session.poll_period, 0.02, 1.0);
-    readSessionTiming(params, config.session);
+  using Protocol = AxisProtocol;
+  static constexpr const char* NAME = "axis";
 
-    AxisSettings& axis = config.axis;
+  static LinkChoices links()
+  {
+    return { { { LinkKind::HTTP } }, 0.15, 0.02 };
+  }
+
+  static void read(const DeviceParams& device, const BackendContext& /*context*/, DeviceConfig<AxisProtocol>& config)
+  {
+    const ParamReader& params = device.own;
+    AxisSettings& axis = config.settings;
     axis.camera = params.integer("camera", axis.camera, 1, 64);
     axis.speed = params.integer("speed", axis.speed, 1, 100);
     axis.pan_max_speed = params.number("pan/max_speed", axis.pan_max_speed, 1e-3, 100.0);
@@ -54,10 +49,9 @@ public:
                         " are both set: set one (the table, or the optical zoom for a linear one)");
     }
     axis.zoom_guess = params.flag("zoom_guess", axis.zoom_guess);
-    return makeAxisBackend(config, context.clock);
   }
 };
 
 }  // namespace ptz_action_server
 
-PLUGINLIB_EXPORT_CLASS(ptz_action_server::AxisBackendPlugin, ptz_action_server::BackendPlugin)
+PTZ_DEVICE_PLUGIN(AxisPlugin, AxisBackendPlugin)

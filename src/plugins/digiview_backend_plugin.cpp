@@ -1,30 +1,24 @@
-#include <memory>
-#include <string>
-
-#include <pluginlib/class_list_macros.hpp>
-
-#include "plugin_params.h"
+#include "device_plugin.h"
 #include "ptz_action_server/core/digiview/digiview_protocol.h"
-#include "ptz_action_server/ros/backend_plugin.h"
 
 namespace ptz_action_server
 {
-/// Builds the digiview backend from ~digiview/... parameters.
-class DigiViewBackendPlugin : public BackendPlugin
+/// A DigiView (Synclair Vision) virtual camera: ~digiview/..., over TCP or UDP (port 5500).
+struct DigiViewPlugin
 {
-public:
-  std::shared_ptr<PtzBackend> create(const ParamReader& params, const BackendContext& context) override
-  {
-    DigiViewConfig config;
-    LinkConfig& link = config.link;
-    link.host = params.text("host", link.host);
-    link.port = static_cast<std::uint16_t>(params.integer("port", link.port, 1, 65535));
-    link.kind = params.choice("transport", "tcp", { "tcp", "udp" }) == "tcp" ? LinkKind::TCP : LinkKind::UDP;
-    readReconnect(params, link);
-    config.session.state_timeout = params.number("state_timeout", config.session.state_timeout, 0.15, 60.0);
-    readSessionTiming(params, config.session);
+  using Protocol = DigiViewProtocol;
+  static constexpr const char* NAME = "digiview";
 
-    DigiViewSettings& digiview = config.digiview;
+  static LinkChoices links()
+  {
+    return { { { LinkKind::TCP, 5500 }, { LinkKind::UDP, 5500 } }, 0.15 };
+  }
+
+  static void read(const DeviceParams& device, const BackendContext& /*context*/,
+                   DeviceConfig<DigiViewProtocol>& config)
+  {
+    const ParamReader& params = device.own;
+    DigiViewSettings& digiview = config.settings;
     digiview::parseFormat(params.choice("format", "0.5", { "0.5", "1.0", "1.1" }), digiview.wire.format);
     digiview::parseChecksumRule(params.choice("checksum", "required", { "required", "zero_accepted" }),
                                 digiview.wire.checksum);
@@ -41,10 +35,9 @@ public:
     digiview.slew_rate = params.number("slew_rate", digiview.slew_rate, 1e-3, 100.0);
     digiview.acceleration = params.number("acceleration", digiview.acceleration, 0.0, 1e4);
     digiview.velocity_period = params.number("velocity_period", digiview.velocity_period, 0.02, 5.0);
-    return makeDigiViewBackend(config, context.clock);
   }
 };
 
 }  // namespace ptz_action_server
 
-PLUGINLIB_EXPORT_CLASS(ptz_action_server::DigiViewBackendPlugin, ptz_action_server::BackendPlugin)
+PTZ_DEVICE_PLUGIN(DigiViewPlugin, DigiViewBackendPlugin)

@@ -1,38 +1,24 @@
-#include <memory>
-#include <string>
-
-#include <pluginlib/class_list_macros.hpp>
-#include <ros/console.h>
-
-#include "plugin_params.h"
+#include "device_plugin.h"
 #include "ptz_action_server/core/mavlink/mavlink_gimbal_protocol.h"
-#include "ptz_action_server/ros/backend_plugin.h"
 
 namespace ptz_action_server
 {
-/// Builds the mavlink_gimbal backend from ~mavlink_gimbal/... parameters.
-class MavlinkGimbalBackendPlugin : public BackendPlugin
+/// A drone gimbal through its MAVLink gimbal manager: ~mavlink_gimbal/..., over UDP (port 14550) or serial.
+struct MavlinkGimbalPlugin
 {
-public:
-  std::shared_ptr<PtzBackend> create(const ParamReader& params, const BackendContext& context) override
-  {
-    MavlinkGimbalConfig config;
-    LinkConfig& link = config.link;
-    if (params.choice("transport", "udp", { "udp", "serial" }) == "udp")
-    {
-      link.host = params.text("host", link.host);
-      link.port = static_cast<std::uint16_t>(params.integer("port", link.port, 1, 65535));
-      link.local_port = static_cast<std::uint16_t>(params.integer("local_port", 0, 0, 65535));
-      readReconnect(params, link);
-    }
-    else
-    {
-      readSerialLink(params, "serial_port", link);
-    }
-    config.session.state_timeout = params.number("state_timeout", config.session.state_timeout, 0.1, 60.0);
-    readSessionTiming(params, config.session);
+  using Protocol = MavlinkGimbalProtocol;
+  static constexpr const char* NAME = "mavlink_gimbal";
 
-    MavlinkGimbalSettings& gimbal = config.gimbal;
+  static LinkChoices links()
+  {
+    return { { { LinkKind::UDP, 14550 }, { LinkKind::SERIAL } }, 0.1 };
+  }
+
+  static void read(const DeviceParams& device, const BackendContext& context,
+                   DeviceConfig<MavlinkGimbalProtocol>& config)
+  {
+    const ParamReader& params = device.own;
+    MavlinkGimbalSettings& gimbal = config.settings;
     auto id = [&params](const char* name, int value, int min) {
       return static_cast<std::uint8_t>(params.integer(name, value, min, 255));
     };
@@ -49,10 +35,9 @@ public:
     gimbal.resend_period = params.number("resend_period", gimbal.resend_period, 0.05, 10.0);
     readAxis(params.child("pan"), context.urdf_limits.axes[PAN].range, M_PI, gimbal.pan);
     readAxis(params.child("tilt"), context.urdf_limits.axes[TILT].range, M_PI / 2.0, gimbal.tilt);
-    return makeMavlinkGimbalBackend(config, context.clock);
   }
 };
 
 }  // namespace ptz_action_server
 
-PLUGINLIB_EXPORT_CLASS(ptz_action_server::MavlinkGimbalBackendPlugin, ptz_action_server::BackendPlugin)
+PTZ_DEVICE_PLUGIN(MavlinkGimbalPlugin, MavlinkGimbalBackendPlugin)

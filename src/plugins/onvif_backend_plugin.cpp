@@ -1,12 +1,5 @@
-#include <memory>
-#include <string>
-
-#include <pluginlib/class_list_macros.hpp>
-#include <ros/console.h>
-
-#include "plugin_params.h"
+#include "device_plugin.h"
 #include "ptz_action_server/core/onvif/onvif_protocol.h"
-#include "ptz_action_server/ros/backend_plugin.h"
 
 namespace ptz_action_server
 {
@@ -21,19 +14,21 @@ void readGenericAxis(const ParamReader& params, GenericAxisMapping& mapping)
 }
 }  // namespace
 
-/// Builds the onvif backend from ~onvif/... parameters.
-class OnvifBackendPlugin : public BackendPlugin
+/// An ONVIF PTZ camera: ~onvif/..., over http or https (SOAP 1.2, WS-Security, optionally HTTP Digest).
+struct OnvifPlugin
 {
-public:
-  std::shared_ptr<PtzBackend> create(const ParamReader& params, const BackendContext& context) override
-  {
-    OnvifConfig config;  // the node intersects the camera's ranges with the URDF's
-    readHttpLink(params, config.link);
-    config.session.state_timeout = params.number("state_timeout", config.session.state_timeout, 0.15, 60.0);
-    config.session.poll_period = params.number("poll_period", config.session.poll_period, 0.02, 1.0);
-    readSessionTiming(params, config.session);
+  using Protocol = OnvifProtocol;
+  static constexpr const char* NAME = "onvif";
 
-    OnvifSettings& onvif = config.onvif;
+  static LinkChoices links()
+  {
+    return { { { LinkKind::HTTP } }, 0.15, 0.02 };
+  }
+
+  static void read(const DeviceParams& device, const BackendContext& /*context*/, DeviceConfig<OnvifProtocol>& config)
+  {
+    const ParamReader& params = device.own;
+    OnvifSettings& onvif = config.settings;
     onvif.device_path = params.text("device_path", onvif.device_path);
     onvif.profile = params.text("profile", onvif.profile);
     // WS-Security takes the HTTP credentials: one user and password for the camera.
@@ -51,10 +46,9 @@ public:
     onvif.acceleration = params.number("acceleration", onvif.acceleration, 0.0, 1e4);
     onvif.velocity_timeout = params.integer("velocity_timeout", onvif.velocity_timeout, 1, 3600);
     // What the camera contradicts itself in (a listed range its own status leaves): once, also in diagnostics.
-    return makeOnvifBackend(config, context.clock);
   }
 };
 
 }  // namespace ptz_action_server
 
-PLUGINLIB_EXPORT_CLASS(ptz_action_server::OnvifBackendPlugin, ptz_action_server::BackendPlugin)
+PTZ_DEVICE_PLUGIN(OnvifPlugin, OnvifBackendPlugin)

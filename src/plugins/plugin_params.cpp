@@ -4,6 +4,9 @@
 #include <fstream>
 #include <string>
 
+#include <ros/console.h>
+#include <xmlrpcpp/XmlRpcValue.h>
+
 #include "ptz_action_server/core/transport/http_link.h"
 
 namespace ptz_action_server
@@ -58,6 +61,26 @@ void readCredentialsFile(const std::string& path, HttpLinkConfig& http)
   }
 }
 
+bool isText(const ParamReader& params, const std::string& name)
+{
+  XmlRpc::XmlRpcValue value;
+  return params.nodeHandle().getParam(name, value) && value.getType() == XmlRpc::XmlRpcValue::TypeString;
+}
+
+bool isInteger(const ParamReader& params, const std::string& name)
+{
+  XmlRpc::XmlRpcValue value;
+  return params.nodeHandle().getParam(name, value) && value.getType() == XmlRpc::XmlRpcValue::TypeInt;
+}
+
+LinkKind linkKind(const std::string& transport)
+{
+  return transport == "serial" ? LinkKind::SERIAL :
+         transport == "tcp"    ? LinkKind::TCP :
+         transport == "udp"    ? LinkKind::UDP :
+                                 LinkKind::HTTP;
+}
+
 bool standardBaud(int baud)
 {
   for (int rate : { 1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600 })
@@ -71,18 +94,60 @@ bool standardBaud(int baud)
 }
 }  // namespace
 
-void readReconnect(const ParamReader& params, LinkConfig& link)
+DeviceParams::DeviceParams(const ParamReader& reader, std::string plugin_name)
+  : params(reader)
+  , own(reader)
+  , name(std::move(plugin_name))
+  , old_names{ { "host", "device_host" }, { "state_timeout", "transaction_deadline" }, { "tls_verify", "verify_peer" } }
 {
-  link.reconnect_min = params.number("reconnect_min", link.reconnect_min, 0.01, 10.0);
-  link.reconnect_max = params.number("reconnect_max", link.reconnect_max, link.reconnect_min, 60.0);
 }
 
-void readHttpLink(const ParamReader& params, LinkConfig& link)
+std::string DeviceParams::pick(const std::string& new_name, const std::vector<std::string>& more_old_names,
+                               bool (*usable)(const ParamReader&, const std::string&)) const
 {
+  if (params.has(new_name) && (usable == nullptr || usable(params, new_name)))
+  {
+    return new_name;
+  }
+  std::vector<std::string> candidates;
+  for (const auto& renamed : old_names)
+  {
+    if (renamed.first == new_name)
+    {
+      candidates.push_back(renamed.second);
+    }
+  }
+  candidates.insert(candidates.end(), more_old_names.begin(), more_old_names.end());
+  for (const std::string& old_name : candidates)
+  {
+    if (params.has(old_name))
+    {
+      warnDeprecated("parameter " + params.resolve(old_name), "~" + name + "/" + new_name);
+      return old_name;
+    }
+  }
+  return new_name;
+}
+
+void DeviceParams::warnDeprecated(const std::string& old_text, const std::string& new_text)
+{
+  ROS_WARN("%s is deprecated: use %s", old_text.c_str(), new_text.c_str());
+}
+
+std::string transportName(LinkKind kind)
+{
+  return kind == LinkKind::HTTP ? "http" : toString(kind);
+}
+
+/// The http and https transports: host (an http:// or https:// prefix sets tls), port (0: 80, or 443 with tls), tls,
+/// tls_verify, ca_file, tls_fingerprint, auth, username, password (never printed), credentials_file, request_timeout.
+void readHttpLink(const DeviceParams& device, bool https, LinkConfig& link)
+{
+  const ParamReader& params = device.params;
   link.kind = LinkKind::HTTP;
   HttpLinkConfig& http = link.http;
-  link.host = params.text("host", link.host);
-  http.tls = params.flag("tls", http.tls);
+  link.host = params.text(device.pick("host"), link.host);
+  http.tls = params.flag("tls", http.tls) || https;  // transport: https is tls: true
   // "https://camera" turns tls on (whatever `tls` says: config/*.yaml set it false); "http://camera" with tls on is
   // an error, never a quiet downgrade.
   for (const bool secure : { true, false })
@@ -107,8 +172,7 @@ void readHttpLink(const ParamReader& params, LinkConfig& link)
   }
   const int port = params.integer("port", 0, 0, 65535);
   link.port = static_cast<std::uint16_t>(port != 0 ? port : (http.tls ? 443 : 80));
-  // tls_verify (verify_peer is its old name)
-  http.verify_peer = params.flag("tls_verify", params.flag("verify_peer", http.verify_peer));
+  http.verify_peer = params.flag(device.pick("tls_verify"), http.verify_peer);
   http.ca_file = params.text("ca_file", "");
   const std::string fingerprint = params.text("tls_fingerprint", "");
   if (!fingerprint.empty())
@@ -156,27 +220,82 @@ void readHttpLink(const ParamReader& params, LinkConfig& link)
     readCredentialsFile(credentials_file, http);
   }
   http.request_timeout = params.number("request_timeout", http.request_timeout, 0.05, 60.0);
-  link.connect_timeout = params.number("connect_timeout", link.connect_timeout, 0.05, 60.0);
-  readReconnect(params, link);
 }
 
-void readSerialLink(const ParamReader& params, const char* path_name, LinkConfig& link)
+void readLink(const DeviceParams& device, const LinkChoices& choices, LinkConfig& link)
 {
-  link.kind = LinkKind::SERIAL;
-  link.path = params.text(path_name, "/dev/ttyUSB0");
-  const int baud = params.integer("baud", 9600, 1200, 921600);
-  if (!standardBaud(baud))
+  const ParamReader& params = device.params;
+  std::vector<std::string> allowed = device.transports;
+  if (allowed.empty())
   {
-    throw ConfigError("parameter " + params.resolve("baud") + " = " + std::to_string(baud) +
-                      " is not a standard rate (1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400, "
-                      "460800, 921600)");
+    for (const TransportChoice& choice : choices.transports)
+    {
+      allowed.push_back(transportName(choice.kind));
+      if (choice.kind == LinkKind::HTTP)
+      {
+        allowed.push_back("https");
+      }
+    }
   }
-  link.baud = static_cast<unsigned>(baud);
-  readReconnect(params, link);
+  const std::string transport = params.choice(
+      "transport", device.default_transport.empty() ? allowed.front() : device.default_transport, allowed);
+  link.kind = linkKind(transport);
+  std::uint16_t default_port = link.port;
+  for (const TransportChoice& choice : choices.transports)
+  {
+    if (choice.kind == link.kind && choice.default_port != 0)
+    {
+      default_port = choice.default_port;
+    }
+  }
+  if (link.kind == LinkKind::SERIAL)
+  {
+    // port is the device path here (mavlink_gimbal called it serial_port)
+    const std::string path_name = device.pick("port", { "serial_port" }, isText);
+    link.path = params.text(path_name, link.path.empty() ? "/dev/ttyUSB0" : link.path);
+    const int baud = params.integer("baud", static_cast<int>(link.baud), 1200, 921600);
+    if (!standardBaud(baud))
+    {
+      throw ConfigError("parameter " + params.resolve("baud") + " = " + std::to_string(baud) +
+                        " is not a standard rate (1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400, "
+                        "460800, 921600)");
+    }
+    link.baud = static_cast<unsigned>(baud);
+  }
+  else if (link.kind == LinkKind::HTTP)
+  {
+    readHttpLink(device, transport == "https", link);
+  }
+  else
+  {
+    link.host = params.text(device.pick("host"), link.host);
+    // port is the port number here (pantilt_udp called it device_port, serial tcp_port or udp_port)
+    const std::string port_name =
+        device.pick("port", { "device_port", link.kind == LinkKind::TCP ? "tcp_port" : "udp_port" }, isInteger);
+    // The serial plugin's YAML holds port: /dev/ttyUSB0 whatever the transport: a path there is no port number.
+    const bool serial_path = device.old_plugin == "serial" && port_name == "port" && isText(params, "port");
+    link.port =
+        static_cast<std::uint16_t>(serial_path ? default_port : params.integer(port_name, default_port, 1, 65535));
+    if (link.kind == LinkKind::UDP)
+    {
+      link.local_host = params.text("local_host", link.local_host);
+      link.local_port = static_cast<std::uint16_t>(params.integer("local_port", link.local_port, 0, 65535));
+    }
+  }
+  if (link.kind == LinkKind::TCP || link.kind == LinkKind::HTTP)
+  {
+    link.connect_timeout = params.number("connect_timeout", link.connect_timeout, 0.05, 60.0);
+  }
+  link.reconnect_min = params.number("reconnect_min", link.reconnect_min, 0.01, 10.0);
+  link.reconnect_max = params.number("reconnect_max", link.reconnect_max, link.reconnect_min, 60.0);
 }
 
-void readSessionTiming(const ParamReader& params, DeviceSessionConfig& session)
+void readSession(const DeviceParams& device, const LinkChoices& choices, DeviceSessionConfig& session)
 {
+  const ParamReader& params = device.params;
+  session.state_timeout =
+      params.number(device.pick("state_timeout"), session.state_timeout, choices.state_timeout_min, 60.0);
+  session.poll_period = params.number("poll_period", session.poll_period, choices.poll_period_min, 1.0);
   session.startup_timeout = params.number("startup_timeout", session.startup_timeout, 0.1, 600.0);
   session.settle_window = params.number("settle_window", session.settle_window, 0.0, 5.0);
 }

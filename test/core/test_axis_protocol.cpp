@@ -32,9 +32,9 @@ namespace
 {
 constexpr double WAIT = 15.0;
 
-AxisConfig configFor(std::uint16_t port, const std::string& password = "pass")
+DeviceConfig<AxisProtocol> configFor(std::uint16_t port, const std::string& password = "pass")
 {
-  AxisConfig config;
+  DeviceConfig<AxisProtocol> config;
   config.link.port = port;
   config.link.http.username = "root";
   config.link.http.password = password;
@@ -218,8 +218,8 @@ TEST(AxisBackend, ReadsTheLimitsTheCommandsAndTheCamerasZoomStepsAtStart)
 {
   AxisCameraEmulator camera{ AxisCameraEmulatorConfig() };
   Warnings warnings;
-  AxisConfig config = configFor(camera.port());
-  auto backend = makeAxisBackend(config);
+  DeviceConfig<AxisProtocol> config = configFor(camera.port());
+  auto backend = makeDeviceBackend<AxisProtocol>(config);
   backend->start();
   const Capabilities capabilities = backend->capabilities();
   EXPECT_NEAR(capabilities.axes[PAN].range.min, toRadians(-170.0), 1e-9);
@@ -259,8 +259,8 @@ TEST(AxisBackend, AFieldCameraWithoutAttributesGetsItsModelFamilysZoomAsAGuessWa
 {
   AxisCameraEmulator camera(fieldCamera("Q6155-E"));
   Warnings warnings;
-  AxisConfig config = configFor(camera.port());
-  std::shared_ptr<DeviceBackend> backend = makeAxisBackend(config);
+  DeviceConfig<AxisProtocol> config = configFor(camera.port());
+  std::shared_ptr<DeviceBackend> backend = makeDeviceBackend<AxisProtocol>(config);
   backend->start();
   EXPECT_EQ(zoomSource(*backend), AxisZoomSource::MODEL_GUESS);
   const AxisCapability zoom = backend->capabilities().axes[ZOOM];
@@ -302,9 +302,9 @@ TEST(AxisBackend, WithoutAnyZoomTableTheZoomIsADeclaredMissingCapabilityNeverASi
     // A model without a family default; and a known family with guessing turned off.
     AxisCameraEmulator camera(fieldCamera(guess ? "Q8665-E" : "Q6155-E"));
     Warnings warnings;
-    AxisConfig config = configFor(camera.port());
-    config.axis.zoom_guess = guess;
-    std::shared_ptr<DeviceBackend> backend = makeAxisBackend(config);
+    DeviceConfig<AxisProtocol> config = configFor(camera.port());
+    config.settings.zoom_guess = guess;
+    std::shared_ptr<DeviceBackend> backend = makeDeviceBackend<AxisProtocol>(config);
     backend->start();
     EXPECT_EQ(zoomSource(*backend), AxisZoomSource::UNKNOWN);
     const AxisCapability zoom = backend->capabilities().axes[ZOOM];
@@ -346,8 +346,8 @@ TEST(AxisBackend, ACameraWhoseLimitsGiveNoZoomHasNone)
   camera_config.zoom_table.clear();
   AxisCameraEmulator camera(camera_config);
   Warnings warnings;
-  AxisConfig config = configFor(camera.port());
-  std::shared_ptr<DeviceBackend> backend = makeAxisBackend(config);
+  DeviceConfig<AxisProtocol> config = configFor(camera.port());
+  std::shared_ptr<DeviceBackend> backend = makeDeviceBackend<AxisProtocol>(config);
   backend->start();
   EXPECT_EQ(zoomSource(*backend), AxisZoomSource::NO_ZOOM);
   const AxisCapability zoom = backend->capabilities().axes[ZOOM];
@@ -369,9 +369,9 @@ TEST(AxisBackend, AConfiguredTableOrOpticalZoomWinsOverTheCameraAndIsNoGuess)
 {
   {
     AxisCameraEmulator camera{ AxisCameraEmulatorConfig() };
-    AxisConfig configured = configFor(camera.port());
-    configured.axis.zoom_table = "1:1,9999:20";
-    auto backend = makeAxisBackend(configured);
+    DeviceConfig<AxisProtocol> configured = configFor(camera.port());
+    configured.settings.zoom_table = "1:1,9999:20";
+    auto backend = makeDeviceBackend<AxisProtocol>(configured);
     EXPECT_NEAR(backend->capabilities().axes[ZOOM].range.max, 20.0, 1e-9);  // known before the start
     backend->start();
     EXPECT_EQ(zoomSource(*backend), AxisZoomSource::CONFIGURED_TABLE);
@@ -382,9 +382,9 @@ TEST(AxisBackend, AConfiguredTableOrOpticalZoomWinsOverTheCameraAndIsNoGuess)
   {
     AxisCameraEmulator camera(fieldCamera("Q8665-E"));
     Warnings warnings;
-    AxisConfig configured = configFor(camera.port());
-    configured.axis.zoom_max_factor = 30.0;
-    std::shared_ptr<DeviceBackend> backend = makeAxisBackend(configured);
+    DeviceConfig<AxisProtocol> configured = configFor(camera.port());
+    configured.settings.zoom_max_factor = 30.0;
+    std::shared_ptr<DeviceBackend> backend = makeDeviceBackend<AxisProtocol>(configured);
     backend->start();
     EXPECT_EQ(zoomSource(*backend), AxisZoomSource::CONFIGURED_MAXIMUM);
     const AxisCapability zoom = backend->capabilities().axes[ZOOM];
@@ -396,13 +396,13 @@ TEST(AxisBackend, AConfiguredTableOrOpticalZoomWinsOverTheCameraAndIsNoGuess)
     EXPECT_EQ(runGoal(backend, goal_supervisor_test::positionGoal(-0.2, 0.0, 12.0)).rfind("SUCCEEDED: reached", 0), 0u);
     EXPECT_NEAR(camera.sample().position[ZOOM], 12.0, 0.02);
   }
-  AxisConfig both = configFor(1);
-  both.axis.zoom_table = "1:1,9999:20";
-  both.axis.zoom_max_factor = 20.0;
-  EXPECT_THROW(makeAxisBackend(both), ConfigError);
-  AxisConfig flat = configFor(1);
-  flat.axis.zoom_max_factor = 1.0;
-  EXPECT_THROW(makeAxisBackend(flat), ConfigError);
+  DeviceConfig<AxisProtocol> both = configFor(1);
+  both.settings.zoom_table = "1:1,9999:20";
+  both.settings.zoom_max_factor = 20.0;
+  EXPECT_THROW(makeDeviceBackend<AxisProtocol>(both), ConfigError);
+  DeviceConfig<AxisProtocol> flat = configFor(1);
+  flat.settings.zoom_max_factor = 1.0;
+  EXPECT_THROW(makeDeviceBackend<AxisProtocol>(flat), ConfigError);
 }
 
 /// A camera answering each request by the first of \p answers whose key its target contains (else `Error:`).
@@ -433,7 +433,7 @@ TEST(AxisBackend, TheCamerasOpticalMaximumAndAPositionWithoutZoomAreTakenAsTheyA
       { { "query=limits", CANNED_LIMITS },
         { "query=attributes", { 200, "text/plain", "Attributes for camera 1\r\nmaxOpticalZoomMag=20\r\n" } },
         { "query=position", { 200, "text/plain", "pan=0\r\ntilt=0\r\nzoom=5000\r\n" } } });
-  std::shared_ptr<DeviceBackend> backend = makeAxisBackend(configFor(camera->port()));
+  std::shared_ptr<DeviceBackend> backend = makeDeviceBackend<AxisProtocol>(configFor(camera->port()));
   backend->start();
   EXPECT_EQ(zoomSource(*backend), AxisZoomSource::CAMERA_MAXIMUM);
   Capabilities capabilities = backend->capabilities();
@@ -448,8 +448,8 @@ TEST(AxisBackend, TheCamerasOpticalMaximumAndAPositionWithoutZoomAreTakenAsTheyA
                               { "query=attributes", { 200, "text/plain", "maxOpticalZoomMag=20\r\n" } },
                               { "query=position", { 200, "text/plain", "pan=0\r\ntilt=0\r\n" } } });
   Warnings warnings;
-  AxisConfig config = configFor(blind->port());
-  backend = makeAxisBackend(config);
+  DeviceConfig<AxisProtocol> config = configFor(blind->port());
+  backend = makeDeviceBackend<AxisProtocol>(config);
   backend->start();
   const AxisCapability zoom = backend->capabilities().axes[ZOOM];
   EXPECT_TRUE(zoom.present && zoom.velocity);
@@ -464,7 +464,7 @@ TEST(AxisBackendStartup, UnreadableZoomAttributesAreNamed)
       cannedCamera({ { "query=limits", CANNED_LIMITS },
                      { "query=attributes", { 200, "text/plain", "zoomSteps=value=1 | zoom=2,value=2 | zoom=1\r\n" } },
                      { "query=position", { 200, "text/plain", "pan=0\r\ntilt=0\r\nzoom=1\r\n" } } });
-  EXPECT_EQ(startupError(*makeAxisBackend(configFor(camera->port()))),
+  EXPECT_EQ(startupError(*makeDeviceBackend<AxisProtocol>(configFor(camera->port()))),
             "an Axis camera on http://127.0.0.1:" + std::to_string(camera->port()) +
                 ": query=attributes&group=zoom: point 2 '2:1': values and X must increase (set axis/zoom_table or "
                 "axis/zoom_max_factor to override it)");
@@ -473,7 +473,7 @@ TEST(AxisBackendStartup, UnreadableZoomAttributesAreNamed)
 TEST(AxisBackend, VelocityGoalsAreContinuousMovesScaledByTheCamerasSpeeds)
 {
   AxisCameraEmulator camera{ AxisCameraEmulatorConfig() };
-  auto backend = makeAxisBackend(configFor(camera.port()));
+  auto backend = makeDeviceBackend<AxisProtocol>(configFor(camera.port()));
   backend->start();
   backend->moveAtVelocity({ 0.3, -0.2, 4.0 });
   ASSERT_TRUE(waitUntil([&] { return !targets(camera.server(), "continuouspantiltmove").empty(); }, WAIT));
@@ -489,7 +489,7 @@ TEST(AxisBackend, VelocityGoalsAreContinuousMovesScaledByTheCamerasSpeeds)
 TEST(AxisBackend, AThousandGoalsTravelOverOneConnectionWithOneChallenge)
 {
   AxisCameraEmulator camera{ AxisCameraEmulatorConfig() };
-  auto backend = makeAxisBackend(configFor(camera.port()));
+  auto backend = makeDeviceBackend<AxisProtocol>(configFor(camera.port()));
   backend->start();
   for (int index = 0; index < 1000; ++index)
   {
@@ -505,7 +505,7 @@ TEST(AxisBackend, AThousandGoalsTravelOverOneConnectionWithOneChallenge)
 TEST(AxisBackend, AnHttpErrorDuringAGoalIsItsFault)
 {
   AxisCameraEmulator camera{ AxisCameraEmulatorConfig() };
-  auto backend = makeAxisBackend(configFor(camera.port()));
+  auto backend = makeDeviceBackend<AxisProtocol>(configFor(camera.port()));
   backend->start();
   camera.server().setErrorStatus(500);
   backend->goTo({ 0.5, 0.0, 1.0 });
@@ -518,7 +518,7 @@ TEST(AxisBackend, AnHttpErrorDuringAGoalIsItsFault)
 TEST(AxisBackendStartup, AWrongPasswordIsNamedWithoutThePassword)
 {
   AxisCameraEmulator camera{ AxisCameraEmulatorConfig() };
-  const std::string error = startupError(*makeAxisBackend(configFor(camera.port(), "hunter2")));
+  const std::string error = startupError(*makeDeviceBackend<AxisProtocol>(configFor(camera.port(), "hunter2")));
   EXPECT_EQ(error, "an Axis camera on http://127.0.0.1:" + std::to_string(camera.port()) +
                        ": HTTP 401 Unauthorized: the camera refused the credentials of user 'root' for 'query=limits'");
   EXPECT_EQ(error.find("hunter2"), std::string::npos);
@@ -543,7 +543,7 @@ TEST(AxisBackendStartup, ForbiddenMissingErrorAndNonsenseAreNamed)
   for (const Case& tried : cases)
   {
     auto server = serverAnswering(tried.answer);
-    const std::string error = startupError(*makeAxisBackend(configFor(server->port())));
+    const std::string error = startupError(*makeDeviceBackend<AxisProtocol>(configFor(server->port())));
     EXPECT_EQ(error, "an Axis camera on http://127.0.0.1:" + std::to_string(server->port()) + ": " + tried.expected);
   }
 }
@@ -555,9 +555,9 @@ TEST(AxisBackendStartup, NobodyThereEndsInTheStartupTimeoutWithTheLinksError)
     AxisCameraEmulator camera{ AxisCameraEmulatorConfig() };
     port = camera.port();
   }
-  AxisConfig config = configFor(port);
+  DeviceConfig<AxisProtocol> config = configFor(port);
   config.session.startup_timeout = 0.5;
-  const std::string error = startupError(*makeAxisBackend(config));
+  const std::string error = startupError(*makeDeviceBackend<AxisProtocol>(config));
   EXPECT_EQ(error.rfind("no answer from an Axis camera on http://127.0.0.1:" + std::to_string(port) +
                             " within 0.5 s: http://127.0.0.1:" + std::to_string(port) +
                             ": GET /axis-cgi/com/ptz.cgi?camera=1&query=limits: ",

@@ -214,12 +214,12 @@ protected:
     OnvifCameraEmulatorConfig camera;
     ASSERT_TRUE(camera.applyMode(mode)) << mode;
     camera_ = std::make_unique<OnvifCameraEmulator>(camera);
-    OnvifConfig config;
+    DeviceConfig<OnvifProtocol> config;
     config.link.port = camera_->port();
-    config.link.http.username = config.onvif.username = camera.username;
-    config.link.http.password = config.onvif.password = camera.password;
+    config.link.http.username = config.settings.username = camera.username;
+    config.link.http.password = config.settings.password = camera.password;
     config.session.state_timeout = 1.0;
-    device_ = std::shared_ptr<PtzBackend>(makeOnvifBackend(config));
+    device_ = std::shared_ptr<PtzBackend>(makeDeviceBackend<OnvifProtocol>(config));
     backend_ = withClosedLoop(device_, GoalMonitorConfig().tolerance);
     backend_->setSampleListener([] {});
     backend_->start();

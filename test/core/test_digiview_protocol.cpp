@@ -28,13 +28,13 @@ namespace
 {
 constexpr double WAIT = 10.0;
 
-DigiViewConfig backendConfig(std::uint16_t port, Format format, LinkKind transport = LinkKind::TCP)
+DeviceConfig<DigiViewProtocol> backendConfig(std::uint16_t port, Format format, LinkKind transport = LinkKind::TCP)
 {
-  DigiViewConfig config;
+  DeviceConfig<DigiViewProtocol> config;
   config.link.port = port;
   config.link.kind = transport;
-  config.digiview.wire.format = format;
-  config.digiview.acceleration = 4.0;  // as the emulator turns
+  config.settings.wire.format = format;
+  config.settings.acceleration = 4.0;  // as the emulator turns
   config.session.startup_timeout = WAIT;
   config.session.state_timeout = 1.0;  // generous: a busy test machine may starve the I/O threads
   return config;
@@ -158,7 +158,7 @@ class DigiViewBackend : public ::testing::TestWithParam<Format>
 TEST_P(DigiViewBackend, StartupSubscribesToTheViewAndLearnsTheStream)
 {
   DigiViewEmulator emulator(emulatorConfig(GetParam()));
-  auto backend = makeDigiViewBackend(backendConfig(emulator.port(), GetParam()));
+  auto backend = makeDeviceBackend<DigiViewProtocol>(backendConfig(emulator.port(), GetParam()));
   backend->start();
   ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
   EXPECT_TRUE(emulator.received().waitFor(is(MessageType::GET_PARAMETERS, digiview::ParamType::VIDEO_OUTPUT), WAIT));
@@ -193,7 +193,7 @@ TEST_P(DigiViewBackend, QuitIsSentAtShutdownAndClosesTheConnection)
 {
   DigiViewEmulator emulator(emulatorConfig(GetParam()));
   {
-    auto backend = makeDigiViewBackend(backendConfig(emulator.port(), GetParam()));
+    auto backend = makeDeviceBackend<DigiViewProtocol>(backendConfig(emulator.port(), GetParam()));
     backend->start();
     ASSERT_TRUE(waitUntil([&] { return emulator.connections() == 1; }, WAIT));
     emulator.received().clear();
@@ -208,9 +208,9 @@ TEST_P(DigiViewBackend, LearnsTheNumberOfViewsFromThePublishedVideoOutput)
 {
   // Camera 3 exists only if the backend reads num_user_views = 4 from its own byte @15 of the published reply.
   PublishedDigiView digiview(GetParam());
-  DigiViewConfig config = backendConfig(digiview.port(), GetParam());
-  config.digiview.cam_id = 3;
-  auto backend = makeDigiViewBackend(config);
+  DeviceConfig<DigiViewProtocol> config = backendConfig(digiview.port(), GetParam());
+  config.settings.cam_id = 3;
+  auto backend = makeDeviceBackend<DigiViewProtocol>(config);
   ASSERT_EQ(startupError(*backend), "");
   EXPECT_EQ(backend->protocol<DigiViewProtocol>().numUserViews(), 4);
   EXPECT_EQ(backend->protocol<DigiViewProtocol>().counters().bad[static_cast<std::size_t>(UnpackError::BAD_CHECKSUM)],
@@ -222,9 +222,9 @@ TEST_P(DigiViewBackend, ACameraTheStreamDoesNotHaveFailsAtStart)
   DigiViewEmulatorConfig emulator_config = emulatorConfig(GetParam());
   emulator_config.layout_mode = 0;  // one user view
   DigiViewEmulator emulator(emulator_config);
-  DigiViewConfig config = backendConfig(emulator.port(), GetParam());
-  config.digiview.cam_id = 1;
-  auto backend = makeDigiViewBackend(config);
+  DeviceConfig<DigiViewProtocol> config = backendConfig(emulator.port(), GetParam());
+  config.settings.cam_id = 1;
+  auto backend = makeDeviceBackend<DigiViewProtocol>(config);
   const std::string text = startupError(*backend);
   EXPECT_NE(text.find("DigiView view 'main' camera 1 on tcp 127.0.0.1:"), std::string::npos) << text;
   EXPECT_NE(text.find("stream 'main' has 1 user view(s), so cam_id 1 does not exist"), std::string::npos) << text;
@@ -242,7 +242,7 @@ TEST_P(DigiViewBackend, ADigiViewOfAFormatOfAnotherSizeFailsAtStartSayingSo)
     for (LinkKind transport : { LinkKind::TCP, LinkKind::UDP })
     {
       DigiViewEmulator emulator(emulatorConfig(other, transport));
-      auto backend = makeDigiViewBackend(backendConfig(emulator.port(), GetParam(), transport));
+      auto backend = makeDeviceBackend<DigiViewProtocol>(backendConfig(emulator.port(), GetParam(), transport));
       const std::string text = startupError(*backend);
       const std::string expected =
           formatText("DigiView speaks format %s (%zu-byte messages), but format is set to "
@@ -257,7 +257,7 @@ TEST_P(DigiViewBackend, ADigiViewOfAFormatOfAnotherSizeFailsAtStartSayingSo)
 TEST_P(DigiViewBackend, AimsInDirectionalModeAndInOneOneNamesNoDetection)
 {
   DigiViewEmulator emulator(emulatorConfig(GetParam()));
-  auto backend = makeDigiViewBackend(backendConfig(emulator.port(), GetParam()));
+  auto backend = makeDeviceBackend<DigiViewProtocol>(backendConfig(emulator.port(), GetParam()));
   backend->start();
   ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
   backend->goTo(AxisValues{ { 0.3, -0.2, 2.0 } });
@@ -296,18 +296,18 @@ TEST_P(DigiViewBackend, ADigiViewThatLeavesTheChecksumZeroIsUsedOnlyWhenTheSetti
   emulator_config.fill_checksum = false;
   DigiViewEmulator emulator(emulator_config);
 
-  DigiViewConfig config = backendConfig(emulator.port(), GetParam());
+  DeviceConfig<DigiViewProtocol> config = backendConfig(emulator.port(), GetParam());
   config.session.startup_timeout = 2.0;
-  auto strict = makeDigiViewBackend(config);
+  auto strict = makeDeviceBackend<DigiViewProtocol>(config);
   EXPECT_NE(startupError(*strict).find("no answer from DigiView"), std::string::npos);
   EXPECT_GT(strict->protocol<DigiViewProtocol>().counters().bad[static_cast<std::size_t>(UnpackError::BAD_CHECKSUM)],
             0u);
   EXPECT_EQ(strict->protocol<DigiViewProtocol>().counters().unverified, 0u);
   strict.reset();
 
-  config.digiview.wire.checksum = ChecksumRule::ZERO_ACCEPTED;
+  config.settings.wire.checksum = ChecksumRule::ZERO_ACCEPTED;
   config.session.startup_timeout = WAIT;
-  auto lenient = makeDigiViewBackend(config);
+  auto lenient = makeDeviceBackend<DigiViewProtocol>(config);
   ASSERT_EQ(startupError(*lenient), "");
   EXPECT_TRUE(waitUntil([&] { return lenient->sample().link_up; }, WAIT));
   EXPECT_GT(lenient->protocol<DigiViewProtocol>().counters().unverified, 0u);

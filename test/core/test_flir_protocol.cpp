@@ -96,11 +96,11 @@ protected:
     emulator_config.port.link = uniqueLink("flir");
     const unsigned baud = emulator_config.port.baud;
     emulator_ = std::make_unique<FlirPtuEmulator>(emulator_config);
-    FlirConfig config;
-    config.flir = settings;
+    DeviceConfig<FlirProtocol> config;
+    config.settings = settings;
     config.link = serialLink(emulator_config.port.link, baud);
     config.session.state_timeout = LINE_TEST_STATE_TIMEOUT;
-    backend_ = makeFlirBackend(config);
+    backend_ = makeDeviceBackend<FlirProtocol>(config);
     backend_->start();
     ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT));
   }
@@ -300,11 +300,11 @@ TEST(FlirTcp, AnEseriesUnitIsSetUpAfterItsBannerOnEveryConnection)
   FlirPtuEmulatorConfig emulator_config;
   emulator_config.port.kind = DevicePortConfig::Kind::TCP;
   FlirPtuEmulator emulator(emulator_config);
-  FlirConfig config;
+  DeviceConfig<FlirProtocol> config;
   config.link.kind = LinkKind::TCP;
   config.link.port = emulator.port().tcpPort();
   config.session.state_timeout = LINE_TEST_STATE_TIMEOUT;
-  auto backend = makeFlirBackend(config);
+  auto backend = makeDeviceBackend<FlirProtocol>(config);
   backend->start();
   ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
   // The banner's `Initializing...*` is no reply: it must not have been taken for FT's.

@@ -40,9 +40,9 @@ AxisCameraEmulatorConfig tlsAxisCamera(std::uint16_t port = 0)
 }
 
 /// An Axis backend for the TLS camera on \p port, verification as the caller sets it.
-AxisConfig axisConfig(std::uint16_t port)
+DeviceConfig<AxisProtocol> axisConfig(std::uint16_t port)
 {
-  AxisConfig config;
+  DeviceConfig<AxisProtocol> config;
   config.link.port = port;
   config.link.http.tls = true;
   config.link.http.username = "root";
@@ -65,9 +65,9 @@ std::string refusedAtOnce(std::unique_ptr<DeviceBackend> backend)
 }
 
 /// axisConfig() with a start-up time no test waits for.
-AxisConfig patientAxisConfig(std::uint16_t port)
+DeviceConfig<AxisProtocol> patientAxisConfig(std::uint16_t port)
 {
-  AxisConfig config = axisConfig(port);
+  DeviceConfig<AxisProtocol> config = axisConfig(port);
   config.session.startup_timeout = 60.0;
   return config;
 }
@@ -122,9 +122,9 @@ TEST(HttpTls, TheEmulatorMakesACertificateAndCountsPlainHttpSentToIt)
 
   // A plain-http client (tls off) is answered 400 and counted, never served: the counter the tests below read
   // to see that no request went out over plain http.
-  AxisConfig config = axisConfig(camera.port());
+  DeviceConfig<AxisProtocol> config = axisConfig(camera.port());
   config.link.http.tls = false;
-  const std::string error = startupError(*makeAxisBackend(config));
+  const std::string error = startupError(*makeDeviceBackend<AxisProtocol>(config));
   EXPECT_NE(error.find("HTTP 400"), std::string::npos) << error;
   EXPECT_GE(camera.server().counters().plain_requests.value(), 1u);
   EXPECT_EQ(camera.server().counters().requests.value(), 0u);
@@ -133,10 +133,10 @@ TEST(HttpTls, TheEmulatorMakesACertificateAndCountsPlainHttpSentToIt)
 TEST(HttpTls, APinnedFingerprintReachesTheCameraOverTls)
 {
   AxisCameraEmulator camera(tlsAxisCamera());
-  AxisConfig config = axisConfig(camera.port());
+  DeviceConfig<AxisProtocol> config = axisConfig(camera.port());
   // As a user copies it from a browser, in lower case without colons: the same pin.
   config.link.http.fingerprint = parseCertificateFingerprint(camera.server().fingerprint());
-  std::unique_ptr<DeviceBackend> backend = makeAxisBackend(config);
+  std::unique_ptr<DeviceBackend> backend = makeDeviceBackend<AxisProtocol>(config);
   backend->start();
   EXPECT_TRUE(backend->takeWarnings().empty());
   ASSERT_TRUE(reaches(*backend, 0.3));
@@ -155,15 +155,15 @@ TEST(HttpTls, TheCertificateAsCaFileIsTrustedByAnOnvifBackend)
   TemporaryFile ca_file;
   camera.server().writeCertificate(ca_file.path);
 
-  OnvifConfig config;
+  DeviceConfig<OnvifProtocol> config;
   config.link.port = camera.port();
   config.link.http.tls = true;
   config.link.http.ca_file = ca_file.path;  // the chain and the name (127.0.0.1) are checked against it
-  config.onvif.username = camera_config.username;
-  config.onvif.password = camera_config.password;
+  config.settings.username = camera_config.username;
+  config.settings.password = camera_config.password;
   config.session.startup_timeout = 5.0;
   config.session.state_timeout = 1.0;
-  std::unique_ptr<DeviceBackend> backend = makeOnvifBackend(config);
+  std::unique_ptr<DeviceBackend> backend = makeDeviceBackend<OnvifProtocol>(config);
   backend->start();
   EXPECT_TRUE(backend->takeWarnings().empty());
   ASSERT_TRUE(reaches(*backend, -0.2));
@@ -174,9 +174,9 @@ TEST(HttpTls, TheCertificateAsCaFileIsTrustedByAnOnvifBackend)
 TEST(HttpTls, AWrongPinIsRefusedNamingBothFingerprintsAndNothingGoesOutInPlain)
 {
   AxisCameraEmulator camera(tlsAxisCamera());
-  AxisConfig config = patientAxisConfig(camera.port());
+  DeviceConfig<AxisProtocol> config = patientAxisConfig(camera.port());
   config.link.http.fingerprint = parseCertificateFingerprint(OTHER_PIN);
-  const std::string error = refusedAtOnce(makeAxisBackend(config));
+  const std::string error = refusedAtOnce(makeDeviceBackend<AxisProtocol>(config));
   EXPECT_NE(error.find("https://127.0.0.1:" + std::to_string(camera.port()) + ": GET /axis-cgi/"), std::string::npos)
       << error;
   EXPECT_NE(error.find("TLS refused: the camera's certificate has SHA-256 " + camera.server().fingerprint() +
@@ -193,7 +193,8 @@ TEST(HttpTls, AWrongPinIsRefusedNamingBothFingerprintsAndNothingGoesOutInPlain)
 TEST(HttpTls, AnUntrustedCertificateIsRefusedWithWhatToDo)
 {
   AxisCameraEmulator camera(tlsAxisCamera());
-  const std::string error = refusedAtOnce(makeAxisBackend(patientAxisConfig(camera.port())));  // the system's CAs
+  const std::string error =
+      refusedAtOnce(makeDeviceBackend<AxisProtocol>(patientAxisConfig(camera.port())));  // the system's CAs
   EXPECT_NE(error.find("TLS refused: the camera's certificate is not trusted by the system's CAs ("), std::string::npos)
       << error;
   EXPECT_NE(error.find("give its CA in ca_file, or pin its SHA-256 in tls_fingerprint"), std::string::npos) << error;
@@ -205,9 +206,9 @@ TEST(HttpTls, AnUntrustedCertificateIsRefusedWithWhatToDo)
   AxisCameraEmulator other(tlsAxisCamera());
   TemporaryFile ca_file;
   other.server().writeCertificate(ca_file.path);
-  AxisConfig config = patientAxisConfig(camera.port());
+  DeviceConfig<AxisProtocol> config = patientAxisConfig(camera.port());
   config.link.http.ca_file = ca_file.path;
-  const std::string with_ca = refusedAtOnce(makeAxisBackend(config));
+  const std::string with_ca = refusedAtOnce(makeDeviceBackend<AxisProtocol>(config));
   EXPECT_NE(with_ca.find("not trusted by ca_file " + ca_file.path), std::string::npos) << with_ca;
   EXPECT_EQ(camera.server().counters().requests.value(), 0u);
 }
@@ -217,14 +218,14 @@ TEST(HttpTls, AnOnvifCameraWithAnotherCertificateThanThePinnedOneFailsStartUpAtO
   OnvifCameraEmulatorConfig camera_config;
   camera_config.http.tls = true;
   OnvifCameraEmulator camera(camera_config);
-  OnvifConfig config;
+  DeviceConfig<OnvifProtocol> config;
   config.link.port = camera.port();
   config.link.http.tls = true;
   config.link.http.fingerprint = parseCertificateFingerprint(OTHER_PIN);
-  config.onvif.username = camera_config.username;
-  config.onvif.password = camera_config.password;
+  config.settings.username = camera_config.username;
+  config.settings.password = camera_config.password;
   config.session.startup_timeout = 60.0;
-  const std::string error = refusedAtOnce(makeOnvifBackend(config));
+  const std::string error = refusedAtOnce(makeDeviceBackend<OnvifProtocol>(config));
   EXPECT_NE(error.find("TLS refused: the camera's certificate has SHA-256 " + camera.server().fingerprint() +
                        ", not the pinned tls_fingerprint " + OTHER_PIN),
             std::string::npos)
@@ -236,9 +237,9 @@ TEST(HttpTls, AnOnvifCameraWithAnotherCertificateThanThePinnedOneFailsStartUpAtO
 TEST(HttpTls, VerificationOffWorksAndWarnsOnce)
 {
   AxisCameraEmulator camera(tlsAxisCamera());
-  AxisConfig config = axisConfig(camera.port());
+  DeviceConfig<AxisProtocol> config = axisConfig(camera.port());
   config.link.http.verify_peer = false;
-  std::unique_ptr<DeviceBackend> backend = makeAxisBackend(config);
+  std::unique_ptr<DeviceBackend> backend = makeDeviceBackend<AxisProtocol>(config);
   backend->start();
   ASSERT_TRUE(reaches(*backend, 0.2));
   // The link is lost and comes back (a new connection, a new handshake): still the one warning.
@@ -263,9 +264,9 @@ TEST(HttpTls, VerificationOffWorksAndWarnsOnce)
 TEST(HttpTls, ACertificateThatChangesLaterLosesTheLinkWithTheReasonAndNeverFallsBackToPlain)
 {
   AxisCameraEmulator camera(tlsAxisCamera());
-  AxisConfig config = axisConfig(camera.port());
+  DeviceConfig<AxisProtocol> config = axisConfig(camera.port());
   config.link.http.fingerprint = parseCertificateFingerprint(camera.server().fingerprint());
-  std::unique_ptr<DeviceBackend> backend = makeAxisBackend(config);
+  std::unique_ptr<DeviceBackend> backend = makeDeviceBackend<AxisProtocol>(config);
   backend->start();
   ASSERT_TRUE(reaches(*backend, 0.1));
   const std::uint64_t requests = camera.server().counters().requests.value();

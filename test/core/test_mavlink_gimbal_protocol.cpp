@@ -44,7 +44,7 @@ protected:
   }
   void startBackend()
   {
-    backend_ = makeMavlinkGimbalBackend(config_);
+    backend_ = makeDeviceBackend<MavlinkGimbalProtocol>(config_);
     backend_->start();
   }
   /// The text start() fails with ("" if it does not).
@@ -191,7 +191,7 @@ protected:
 
   MavlinkGimbalEmulatorConfig emulator_config_;
   std::unique_ptr<MavlinkGimbalEmulator> emulator_;
-  MavlinkGimbalConfig config_;
+  DeviceConfig<MavlinkGimbalProtocol> config_;
   std::unique_ptr<DeviceBackend> backend_;
   std::vector<std::string> warnings_;
 };
@@ -331,7 +331,7 @@ TEST_F(MavlinkGimbalTest, AManagerThatRefusesControlFailsTheStartWithItsResult)
 {
   startEmulator();
   emulator_->setRefuse(true);
-  backend_ = makeMavlinkGimbalBackend(config_);
+  backend_ = makeDeviceBackend<MavlinkGimbalProtocol>(config_);
   try
   {
     backend_->start();
@@ -348,7 +348,7 @@ TEST_F(MavlinkGimbalTest, AnotherControllerHoldingControlIsNamedInTheStartError)
 {
   startEmulator();
   emulator_->giveControlTo(3, 190);
-  backend_ = makeMavlinkGimbalBackend(config_);
+  backend_ = makeDeviceBackend<MavlinkGimbalProtocol>(config_);
   try
   {
     backend_->start();
@@ -408,7 +408,7 @@ TEST_F(MavlinkGimbalTest, RatesRepeatedTooSlowlyTimeOutAtTheManager)
 {
   // The emulator's rate timeout, seen by repeating slower than it: the repeats above are what keep a gimbal going.
   emulator_config_.rate_timeout = 0.2;
-  config_.gimbal.rate_period = 0.6;
+  config_.settings.rate_period = 0.6;
   startBoth();
   backend_->moveAtVelocity(AxisValues{ { 0.5, 0.0, 0.0 } });
   EXPECT_TRUE(waitUntil([&] { return emulator_->counters().rate_timeouts > 0; }, WAIT));
@@ -443,7 +443,7 @@ TEST_F(MavlinkGimbalTest, AnAttitudeInTheEarthFrameIsTurnedIntoTheVehicles)
 TEST_F(MavlinkGimbalTest, YawLockAimsRelativeToNorth)
 {
   emulator_config_.vehicle_yaw = 0.5;
-  config_.gimbal.yaw_lock = true;
+  config_.settings.yaw_lock = true;
   startBoth();
   backend_->goTo(AxisValues{ { 0.8, 0.0, 1.0 } });
   ASSERT_TRUE(waitUntil([&] { return reached(0.8, 0.0); }, WAIT)) << backend_->sample().position[PAN];
@@ -527,7 +527,7 @@ TEST_F(MavlinkGimbalTest, TwoGimbalsThatAreTheirOwnManagersAreToldApartByTheirCo
   EXPECT_NE(error.find("gimbal_device_id 1 of the gimbal manager 1/155"), std::string::npos) << error;
   EXPECT_NE(error.find("target_component"), std::string::npos) << error;
 
-  config_.gimbal.target_component = 155;
+  config_.settings.target_component = 155;
   startBackend();
   EXPECT_EQ(emulator_->primaryController(1).second, 191);
   EXPECT_EQ(emulator_->primaryController(0).second, 0);
@@ -539,7 +539,7 @@ TEST_F(MavlinkGimbalTest, TwoGimbalsThatAreTheirOwnManagersAreToldApartByTheirCo
 TEST_F(MavlinkGimbalTest, OfTwoGimbalsBehindOneManagerOnlyTheChosenOneIsTakenDrivenReportedAndReleased)
 {
   setGimbals({ 1, 2 }, 1.0, -0.5);
-  config_.gimbal.gimbal_device_id = 2;
+  config_.settings.gimbal_device_id = 2;
   startEmulator();
   emulator_->giveControlTo(3, 190, true, 0);  // the other gimbal is someone else's
   startBackend();
@@ -552,7 +552,7 @@ TEST_F(MavlinkGimbalTest, OfTwoGimbalDevicesOnlyTheChosenOneIsTakenDrivenReporte
   // The autopilot manages the MAVLink gimbal devices 1/154 and 1/171; 154 sends its attitude with gimbal_device_id 0
   // from its own component, which the node once took for its gimbal's.
   setGimbals({ MAV_COMP_ID_GIMBAL, MAV_COMP_ID_GIMBAL2 }, 1.0, -0.5);
-  config_.gimbal.gimbal_device_id = MAV_COMP_ID_GIMBAL2;
+  config_.settings.gimbal_device_id = MAV_COMP_ID_GIMBAL2;
   startEmulator();
   emulator_->giveControlTo(3, 190, true, 0);
   startBackend();
@@ -576,7 +576,7 @@ TEST_F(MavlinkGimbalTest, TheOnlyGimbalDeviceBehindAnAutopilotIsChosenByItself)
 
 TEST_F(MavlinkGimbalTest, AGimbalNamedThatIsNotThereFailsTheStartNamingThoseThatAre)
 {
-  config_.gimbal.gimbal_device_id = 3;
+  config_.settings.gimbal_device_id = 3;
   startEmulator();
   const std::string error = startFailure();
   EXPECT_NE(error.find("no gimbal found matches"), std::string::npos) << error;
@@ -599,10 +599,10 @@ TEST_F(MavlinkGimbalTest, TakingControlFromAnotherControllerIsWarnedOnceNamingIt
 
 TEST_F(MavlinkGimbalTest, ANameInFullNeedsNoDiscoveryWait)
 {
-  config_.gimbal.target_system = 1;
-  config_.gimbal.target_component = 1;
-  config_.gimbal.gimbal_device_id = 1;
-  config_.gimbal.discovery_time = 30.0;  // would outlast the start-up timeout
+  config_.settings.target_system = 1;
+  config_.settings.target_component = 1;
+  config_.settings.gimbal_device_id = 1;
+  config_.settings.discovery_time = 30.0;  // would outlast the start-up timeout
   startBoth();
   EXPECT_EQ(protocol().gimbal().device_id, 1);
 }

@@ -28,24 +28,24 @@ namespace
 {
 constexpr double WAIT = 15.0;
 
-OnvifConfig configFor(const OnvifCameraEmulator& camera, const std::string& password = "admin")
+DeviceConfig<OnvifProtocol> configFor(const OnvifCameraEmulator& camera, const std::string& password = "admin")
 {
-  OnvifConfig config;
+  DeviceConfig<OnvifProtocol> config;
   config.link.port = camera.port();
   config.link.http.username = "admin";
   config.link.http.password = password;
-  config.onvif.username = "admin";
-  config.onvif.password = password;
+  config.settings.username = "admin";
+  config.settings.password = password;
   config.session.startup_timeout = 5.0;
   config.session.state_timeout = 1.0;
   return config;
 }
 
-std::string startupError(const OnvifConfig& config)
+std::string startupError(const DeviceConfig<OnvifProtocol>& config)
 {
   try
   {
-    makeOnvifBackend(config)->start();
+    makeDeviceBackend<OnvifProtocol>(config)->start();
   }
   catch (const BackendError& error)
   {
@@ -69,7 +69,7 @@ TEST(OnvifBackend, BringsUpInTheCamerasClockAndKeepsTheConfiguredHost)
   OnvifCameraEmulatorConfig camera_config;
   camera_config.clock_offset = 3600.0;  // tokens stamped in our clock would be an hour off and refused
   OnvifCameraEmulator camera(camera_config);
-  auto backend = makeOnvifBackend(configFor(camera));
+  auto backend = makeDeviceBackend<OnvifProtocol>(configFor(camera));
   backend->start();
   EXPECT_EQ(camera.refusedTokens(), 0u);
   const Capabilities capabilities = backend->capabilities();
@@ -94,9 +94,9 @@ TEST(OnvifBackend, BringsUpInTheCamerasClockAndKeepsTheConfiguredHost)
 TEST(OnvifBackend, AContinuousMoveIsResentBeforeItsTimeout)
 {
   OnvifCameraEmulator camera{ OnvifCameraEmulatorConfig() };
-  OnvifConfig config = configFor(camera);
-  config.onvif.velocity_timeout = 1;
-  auto backend = makeOnvifBackend(config);
+  DeviceConfig<OnvifProtocol> config = configFor(camera);
+  config.settings.velocity_timeout = 1;
+  auto backend = makeDeviceBackend<OnvifProtocol>(config);
   backend->start();
   backend->moveAtVelocity({ 0.3, 0.0, 0.0 });
   const auto& protocol = backend->protocol<OnvifProtocol>();
@@ -122,14 +122,14 @@ TEST(OnvifBackendStartup, AWrongPasswordIsTheCamerasFaultWithoutThePassword)
 TEST(OnvifBackendStartup, AMissingProfileAndAnUnacceptableTimeoutAreNamed)
 {
   OnvifCameraEmulator camera{ OnvifCameraEmulatorConfig() };
-  OnvifConfig config = configFor(camera);
-  config.onvif.profile = "nope";
+  DeviceConfig<OnvifProtocol> config = configFor(camera);
+  config.settings.profile = "nope";
   EXPECT_EQ(startupError(config), "an ONVIF camera on http://127.0.0.1:" + std::to_string(camera.port()) +
                                       ": GetProfiles answered no profile 'nope' with a PTZConfiguration (profiles: "
                                       "profile_0, "
                                       "profile_1)");
-  config.onvif.profile.clear();
-  config.onvif.velocity_timeout = 100;
+  config.settings.profile.clear();
+  config.settings.velocity_timeout = 100;
   EXPECT_EQ(startupError(config), "an ONVIF camera on http://127.0.0.1:" + std::to_string(camera.port()) +
                                       ": velocity_timeout 100 s is outside the camera's PTZTimeout range [1, 60] s");
 }
@@ -141,7 +141,7 @@ TEST(OnvifBackendStartup, ACameraThatDemandsHttpDigestTooIsServed)
   camera_config.http.username = "admin";
   camera_config.http.password = "admin";
   OnvifCameraEmulator camera(camera_config);
-  auto backend = makeOnvifBackend(configFor(camera));
+  auto backend = makeDeviceBackend<OnvifProtocol>(configFor(camera));
   backend->start();
   EXPECT_TRUE(backend->sample().link_up);
   // The first POST goes without HTTP authentication (a camera may want none) and meets the one challenge; its
@@ -300,9 +300,9 @@ void playTheFieldCamera(ScriptedCamera& camera)
   camera.set("AbsoluteMove", "<tptz:AbsoluteMoveResponse/>");
 }
 
-OnvifConfig configForScripted(const ScriptedCamera& camera)
+DeviceConfig<OnvifProtocol> configForScripted(const ScriptedCamera& camera)
 {
-  OnvifConfig config;
+  DeviceConfig<OnvifProtocol> config;
   config.link.port = camera.port();
   config.session.startup_timeout = 5.0;
   config.session.state_timeout = 1.0;
@@ -323,10 +323,10 @@ TEST(OnvifFieldCameras, ACameraThatListsDegreesButReportsGenericStartsAndTrustsI
 {
   ScriptedCamera camera;
   playTheFieldCamera(camera);
-  OnvifConfig config = configForScripted(camera);
-  ASSERT_TRUE(config.onvif.prefer_degrees);  // the default, with which this camera never started
+  DeviceConfig<OnvifProtocol> config = configForScripted(camera);
+  ASSERT_TRUE(config.settings.prefer_degrees);  // the default, with which this camera never started
   std::vector<std::string> told;
-  auto backend = makeOnvifBackend(config);
+  auto backend = makeDeviceBackend<OnvifProtocol>(config);
   backend->start();
   const auto& protocol = backend->protocol<OnvifProtocol>();
   // The status is read in the space it names and converted.
@@ -406,7 +406,7 @@ TEST(OnvifFieldCameras, AStatusWithoutASpaceIsInTheConfigurationsDefaultElseTheG
   camera.set("GetStatus", statusReply("<tt:PanTilt x=\"-45\" y=\"10\"/>"));
   camera.set("GetProfiles", profilesWithDefault(onvif::DEGREE_SPACE));
   {
-    auto backend = makeOnvifBackend(configForScripted(camera));
+    auto backend = makeDeviceBackend<OnvifProtocol>(configForScripted(camera));
     backend->start();
     EXPECT_NEAR(backend->sample().position[PAN], toRadians(-45.0), 1e-9);
     EXPECT_NEAR(backend->sample().position[TILT], toRadians(10.0), 1e-9);
@@ -415,7 +415,7 @@ TEST(OnvifFieldCameras, AStatusWithoutASpaceIsInTheConfigurationsDefaultElseTheG
   }
   camera.set("GetStatus", statusReply("<tt:PanTilt x=\"0.5\" y=\"-0.5\"/>"));
   camera.set("GetProfiles", profilesWithDefault(""));
-  auto backend = makeOnvifBackend(configForScripted(camera));
+  auto backend = makeDeviceBackend<OnvifProtocol>(configForScripted(camera));
   backend->start();
   EXPECT_NEAR(backend->sample().position[PAN], M_PI / 2.0, 1e-9);  // the generic space, through pan/scale
   EXPECT_NEAR(backend->sample().position[TILT], -M_PI / 4.0, 1e-9);
@@ -426,7 +426,7 @@ TEST(OnvifFieldCameras, AStatusInASpaceThisBackendCannotConvertIsNoFeedbackNamin
   ScriptedCamera camera;
   playTheFieldCamera(camera);
   camera.set("GetStatus", statusReply("<tt:PanTilt x=\"3\" y=\"4\" space=\"urn:vendor:PixelSpace\"/>"));
-  auto backend = makeOnvifBackend(configForScripted(camera));
+  auto backend = makeDeviceBackend<OnvifProtocol>(configForScripted(camera));
   backend->start();
   EXPECT_TRUE(backend->sample().link_up);
   const Capabilities capabilities = backend->capabilities();
@@ -438,7 +438,7 @@ TEST(OnvifFieldCameras, AStatusInASpaceThisBackendCannotConvertIsNoFeedbackNamin
   EXPECT_EQ(findUnsupported(capabilities, PAN, AxisRequest::VELOCITY), "");
 }
 
-OnvifConfig configForMode(const std::string& mode, std::unique_ptr<OnvifCameraEmulator>& camera)
+DeviceConfig<OnvifProtocol> configForMode(const std::string& mode, std::unique_ptr<OnvifCameraEmulator>& camera)
 {
   OnvifCameraEmulatorConfig camera_config;
   EXPECT_TRUE(camera_config.applyMode(mode)) << mode;
@@ -449,7 +449,7 @@ OnvifConfig configForMode(const std::string& mode, std::unique_ptr<OnvifCameraEm
 TEST(OnvifFieldCameras, ContinuousOnlyDeclaresSpeedAndPositionButNoGoToAndSendsNoAbsoluteMove)
 {
   std::unique_ptr<OnvifCameraEmulator> camera;
-  auto backend = makeOnvifBackend(configForMode("continuous-only", camera));
+  auto backend = makeDeviceBackend<OnvifProtocol>(configForMode("continuous-only", camera));
   backend->start();
   const Capabilities capabilities = backend->capabilities();
   for (Axis axis : { PAN, TILT })
@@ -489,7 +489,7 @@ TEST(OnvifFieldCameras, ContinuousOnlyDeclaresSpeedAndPositionButNoGoToAndSendsN
 TEST(OnvifFieldCameras, ACameraThatRefusesAbsoluteMoveFaultsTheGoalWithItsWordsAndIsContinuousOnlyFromThen)
 {
   std::unique_ptr<OnvifCameraEmulator> camera;
-  auto backend = makeOnvifBackend(configForMode("refuse-absolute-move", camera));
+  auto backend = makeDeviceBackend<OnvifProtocol>(configForMode("refuse-absolute-move", camera));
   backend->start();
   backend->goTo({ 0.5, 0.0, 1.0 });
   ASSERT_TRUE(waitUntil([&] { return backend->sample().fault_count == 1u; }, WAIT));
@@ -520,7 +520,7 @@ TEST(OnvifFieldCameras, ACameraThatRefusesAbsoluteMoveFaultsTheGoalWithItsWordsA
 TEST(OnvifFieldCameras, NoPositionKeepsTheLinkOnItsAnswersAndDoesSpeedsAndCancel)
 {
   std::unique_ptr<OnvifCameraEmulator> camera;
-  auto backend = makeOnvifBackend(configForMode("no-position", camera));
+  auto backend = makeDeviceBackend<OnvifProtocol>(configForMode("no-position", camera));
   backend->start();
   const Capabilities capabilities = backend->capabilities();
   for (Axis axis : { PAN, TILT, ZOOM })
@@ -557,14 +557,14 @@ TEST(OnvifFieldCameras, PresetsHomeAndRelativeMovesAreDeclaredAsTheCameraAnswers
 {
   std::unique_ptr<OnvifCameraEmulator> camera;
   {
-    auto backend = makeOnvifBackend(configForMode("standard", camera));
+    auto backend = makeDeviceBackend<OnvifProtocol>(configForMode("standard", camera));
     backend->start();
     EXPECT_TRUE(backend->capabilities().device_presets);
     EXPECT_TRUE(backend->capabilities().device_home);
     EXPECT_TRUE(backend->capabilities().relative_moves);
   }
   {
-    auto backend = makeOnvifBackend(configForMode("no-presets", camera));
+    auto backend = makeDeviceBackend<OnvifProtocol>(configForMode("no-presets", camera));
     backend->start();  // GetPresets refused: never a start-up failure
     EXPECT_FALSE(backend->capabilities().device_presets);
     std::vector<DiagnosticValue> values;
@@ -575,7 +575,7 @@ TEST(OnvifFieldCameras, PresetsHomeAndRelativeMovesAreDeclaredAsTheCameraAnswers
                                                                  "not supported")),
               values.end());
   }
-  auto backend = makeOnvifBackend(configForMode("no-relative", camera));
+  auto backend = makeDeviceBackend<OnvifProtocol>(configForMode("no-relative", camera));
   backend->start();
   EXPECT_FALSE(backend->capabilities().relative_moves);
 }
@@ -583,8 +583,8 @@ TEST(OnvifFieldCameras, PresetsHomeAndRelativeMovesAreDeclaredAsTheCameraAnswers
 TEST(OnvifFieldCameras, TheWrongGenericRangeIsToldOnceAndTheCameraGoesWhereItsStatusShowsItCan)
 {
   std::unique_ptr<OnvifCameraEmulator> camera;
-  OnvifConfig config = configForMode("wrong-generic-range", camera);
-  auto backend = makeOnvifBackend(config);
+  DeviceConfig<OnvifProtocol> config = configForMode("wrong-generic-range", camera);
+  auto backend = makeDeviceBackend<OnvifProtocol>(config);
   backend->start();
   EXPECT_NEAR(backend->capabilities().axes[PAN].range.min, -M_PI, 1e-9);
   const AxisValues target{ { -0.5, 0.1, 2.0 } };
@@ -600,7 +600,7 @@ TEST(OnvifFieldCameras, TheWrongGenericRangeIsToldOnceAndTheCameraGoesWhereItsSt
 TEST(OnvifFieldCameras, AGoalLeavesAnAxisGivenAsNaNWhereItIs)
 {
   std::unique_ptr<OnvifCameraEmulator> camera;
-  auto backend = makeOnvifBackend(configForMode("standard", camera));
+  auto backend = makeDeviceBackend<OnvifProtocol>(configForMode("standard", camera));
   backend->start();
   const double nan = std::numeric_limits<double>::quiet_NaN();
   camera->server().received().clear();
@@ -614,7 +614,7 @@ TEST(OnvifFieldCameras, AGoalLeavesAnAxisGivenAsNaNWhereItIs)
 TEST(OnvifFieldCameras, DegreesListedButAGenericStatusMovesInTheGenericSpaceAndIsReached)
 {
   std::unique_ptr<OnvifCameraEmulator> camera;
-  auto backend = makeOnvifBackend(configForMode("generic-status", camera));
+  auto backend = makeDeviceBackend<OnvifProtocol>(configForMode("generic-status", camera));
   backend->start();
   backend->goTo({ 0.4, -0.1, 3.0 });
   ASSERT_TRUE(waitUntil(

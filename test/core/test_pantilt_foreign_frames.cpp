@@ -232,13 +232,13 @@ TEST_P(PanTiltForeignFramesTest, TheBackendCountsThemAndTakesNoStateFromThem)
   emulator_config.state_period = 0.05;
   auto emulator = std::make_unique<PanTiltEmulator>(emulator_config);
   const std::uint16_t device_port = emulator->endpoint().port();
-  PanTiltConfig config;
-  config.pantilt.format = receiver();
+  DeviceConfig<PanTiltProtocol> config;
+  config.settings.format = receiver();
   config.link.port = device_port;
   config.link.local_host = "127.0.0.1";
   config.link.local_port = freeLocalPort();  // known, so that the test can send to the backend
   config.session.state_timeout = 1.0;
-  std::unique_ptr<DeviceBackend> backend = makePanTiltBackend(config);
+  std::unique_ptr<DeviceBackend> backend = makeDeviceBackend<PanTiltProtocol>(config);
   backend->start();
   ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, 10.0)) << "the link never came up";
 
@@ -285,8 +285,8 @@ TEST_P(PanTiltForeignFramesTest, ABackendAndADeviceOfDifferentFormatsNeverWorkTo
   PanTiltEmulatorConfig emulator_config;
   emulator_config.format = sender();
   PanTiltEmulator device(emulator_config);
-  PanTiltConfig config;
-  config.pantilt.format = receiver();
+  DeviceConfig<PanTiltProtocol> config;
+  config.settings.format = receiver();
   config.link.port = device.endpoint().port();
   config.link.local_host = "127.0.0.1";
   // The seed and v1.0 share their version bytes, so each answers the other's state request, and the backend gives
@@ -294,7 +294,7 @@ TEST_P(PanTiltForeignFramesTest, ABackendAndADeviceOfDifferentFormatsNeverWorkTo
   // the device drops them all and answers nothing, so the backend waits its whole start-up time.
   const bool device_answers = receiver() != WireFormat::V1_1 && sender() != WireFormat::V1_1;
   config.session.startup_timeout = device_answers ? 30.0 : 1.0;
-  std::unique_ptr<DeviceBackend> backend = makePanTiltBackend(config);
+  std::unique_ptr<DeviceBackend> backend = makeDeviceBackend<PanTiltProtocol>(config);
   try
   {
     backend->start();

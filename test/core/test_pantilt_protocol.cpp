@@ -60,14 +60,14 @@ protected:
     device_config.format = GetParam();
     device_config.state_period = 0.05;
     device_ = std::make_unique<PanTiltEmulator>(device_config);
-    PanTiltConfig config;
-    config.pantilt.format = GetParam();
+    DeviceConfig<PanTiltProtocol> config;
+    config.settings.format = GetParam();
     config.link.port = device_->endpoint().port();
     config.link.local_host = "127.0.0.1";
     config.link.local_port = localPort();
     config.session.state_timeout = 1.0;  // generous: a busy test machine may starve the I/O threads
     local_port_ = config.link.local_port;
-    backend_ = makePanTiltBackend(config);
+    backend_ = makeDeviceBackend<PanTiltProtocol>(config);
     backend_->start();
     ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, 10.0)) << "the link never came up";
     // The link is up at the device's first frame, which can leave before the last start-up datagram (the state

@@ -31,11 +31,11 @@ protected:
     emulator_config.port.link = uniqueLink("pelco");
     emulator_config.address = 7;
     emulator_ = std::make_unique<PelcoDEmulator>(emulator_config);
-    PelcoConfig config;
+    DeviceConfig<PelcoProtocol> config;
     config.link = serialLink(emulator_config.port.link, 9600);
     config.session.state_timeout = STATE_TIMEOUT;
-    config.pelco.address = 7;
-    backend_ = makePelcoBackend(config);
+    config.settings.address = 7;
+    backend_ = makeDeviceBackend<PelcoProtocol>(config);
     backend_->start();
     ASSERT_TRUE(waitUntil([&] { return backend_->sample().link_up; }, WAIT));
   }
@@ -103,12 +103,12 @@ TEST(PelcoTurbo, OnlyAConfiguredTurboByteGoesFasterThan0x3F)
     }
     return pelco::Frame();
   };
-  PelcoConfig config;
+  DeviceConfig<PelcoProtocol> config;
   config.link = serialLink(emulator_config.port.link, 9600);
   config.session.state_timeout = STATE_TIMEOUT;
   {
     // No turbo configured: the fastest goal is the speed at 0x3F, and nothing faster goes out.
-    auto backend = makePelcoBackend(config);
+    auto backend = makeDeviceBackend<PelcoProtocol>(config);
     backend->start();
     EXPECT_DOUBLE_EQ(backend->capabilities().axes[PAN].max_speed, 1.5);
     backend->moveAtVelocity({ 2.5, 0.0, 0.0 });
@@ -117,9 +117,9 @@ TEST(PelcoTurbo, OnlyAConfiguredTurboByteGoesFasterThan0x3F)
     backend->stop();
   }
   emulator.received().clear();
-  config.pelco.turbo_byte = 0xFF;
-  config.pelco.turbo_speed = 3.0;
-  auto backend = makePelcoBackend(config);
+  config.settings.turbo_byte = 0xFF;
+  config.settings.turbo_speed = 3.0;
+  auto backend = makeDeviceBackend<PelcoProtocol>(config);
   backend->start();
   EXPECT_DOUBLE_EQ(backend->capabilities().axes[PAN].max_speed, 3.0);
   backend->moveAtVelocity({ -2.5, 0.0, 0.0 });
@@ -137,11 +137,11 @@ TEST(PelcoGeneralReplies, CommandsAreAcknowledged)
   emulator_config.port.link = uniqueLink("pelco_general");
   emulator_config.general_reply = true;
   PelcoDEmulator emulator(emulator_config);
-  PelcoConfig config;
+  DeviceConfig<PelcoProtocol> config;
   config.link = serialLink(emulator_config.port.link, 9600);
   config.session.state_timeout = STATE_TIMEOUT;
-  config.pelco.general_reply = true;
-  auto backend = makePelcoBackend(config);
+  config.settings.general_reply = true;
+  auto backend = makeDeviceBackend<PelcoProtocol>(config);
   backend->start();
   backend->goTo({ -0.3, 0.1, 2.0 });
   EXPECT_TRUE(waitUntil([&] { return atRest(*backend, -0.3, 0.1); }, WAIT));
@@ -153,10 +153,10 @@ TEST(PelcoGeneralReplies, CommandsAreAcknowledged)
 
 TEST(SerialBackend, StartFailsWithAClearReasonWhenNoDeviceAnswers)
 {
-  FlirConfig config;
+  DeviceConfig<FlirProtocol> config;
   config.link = serialLink("/tmp/ptz_no_such_port", 9600);
   config.session.startup_timeout = 0.3;
-  auto backend = makeFlirBackend(config);
+  auto backend = makeDeviceBackend<FlirProtocol>(config);
   try
   {
     backend->start();
@@ -174,11 +174,11 @@ TEST(SerialBackend, StartFailsWithAClearReasonWhenNoDeviceAnswers)
 
 TEST(SerialBackend, StartOverTcpFailsWithTheConnectionsReason)
 {
-  PelcoConfig config;
+  DeviceConfig<PelcoProtocol> config;
   config.link.kind = LinkKind::TCP;
   config.link.port = 9;  // discard: nothing listens there on 127.0.0.1
   config.session.startup_timeout = 0.5;
-  auto backend = makePelcoBackend(config);
+  auto backend = makeDeviceBackend<PelcoProtocol>(config);
   try
   {
     backend->start();

@@ -30,7 +30,7 @@ protected:
     emulator_config.port.link = uniqueLink("visca");
     emulator_config.framing = framing;
     emulator_ = std::make_unique<ViscaEmulator>(emulator_config);
-    ViscaConfig config;
+    DeviceConfig<ViscaProtocol> config;
     if (kind == DevicePortConfig::Kind::PTY)
     {
       config.link = serialLink(emulator_config.port.link, 9600);
@@ -43,10 +43,10 @@ protected:
     }
     config.session.state_timeout = LINE_TEST_STATE_TIMEOUT;
     config.session.startup_timeout = 5.0;
-    config.visca.framing = framing;
-    config.visca.address = backend_address;
-    model_ = config.visca.model;
-    backend_ = makeViscaBackend(config);
+    config.settings.framing = framing;
+    config.settings.address = backend_address;
+    model_ = config.settings.model;
+    backend_ = makeDeviceBackend<ViscaProtocol>(config);
   }
   void startAndWaitUp(DevicePortConfig::Kind kind, ViscaFraming framing)
   {

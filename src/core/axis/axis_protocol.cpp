@@ -16,7 +16,7 @@ int percentOf(double value, double full)
 }
 }  // namespace
 
-LinkConfig AxisConfig::defaultLink()
+LinkConfig AxisProtocol::defaultLink()
 {
   LinkConfig link;
   link.kind = LinkKind::HTTP;
@@ -492,13 +492,12 @@ void AxisProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
                       { "malformed answers", counters_.malformed } });
 }
 
-std::unique_ptr<DeviceBackend> makeAxisBackend(const AxisConfig& config, std::shared_ptr<const Clock> clock)
+void AxisProtocol::validate(const DeviceConfig<AxisProtocol>& config)
 {
   if (config.link.kind != LinkKind::HTTP)
   {
     throw ConfigError("an Axis camera is reached over HTTP");
   }
-  return makeDeviceBackend<AxisProtocol>(config.link, config.session, config.axis, std::move(clock));
 }
 
 }  // namespace ptz_action_server

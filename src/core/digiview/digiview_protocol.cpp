@@ -449,9 +449,4 @@ void DigiViewProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
   }
 }
 
-std::unique_ptr<DeviceBackend> makeDigiViewBackend(const DigiViewConfig& config, std::shared_ptr<const Clock> clock)
-{
-  return makeDeviceBackend<DigiViewProtocol>(config.link, config.session, config.digiview, std::move(clock));
-}
-
 }  // namespace ptz_action_server

@@ -389,9 +389,4 @@ void FlirProtocol::onTimeout(const TransactionChannel::Request& lost)
   }
 }
 
-std::unique_ptr<DeviceBackend> makeFlirBackend(const FlirConfig& config, std::shared_ptr<const Clock> clock)
-{
-  return makeDeviceBackend<FlirProtocol>(config.link, config.session, config.flir, std::move(clock));
-}
-
 }  // namespace ptz_action_server

@@ -401,10 +401,4 @@ void MavlinkGimbalProtocol::diagnostics(std::vector<DiagnosticValue>& values) co
   }
 }
 
-std::unique_ptr<DeviceBackend> makeMavlinkGimbalBackend(const MavlinkGimbalConfig& config,
-                                                        std::shared_ptr<const Clock> clock)
-{
-  return makeDeviceBackend<MavlinkGimbalProtocol>(config.link, config.session, config.gimbal, std::move(clock));
-}
-
 }  // namespace ptz_action_server

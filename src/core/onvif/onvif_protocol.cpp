@@ -53,7 +53,7 @@ AxisRange radians(const onvif::Range& range)
 }
 }  // namespace
 
-LinkConfig OnvifConfig::defaultLink()
+LinkConfig OnvifProtocol::defaultLink()
 {
   LinkConfig link;
   link.kind = LinkKind::HTTP;
@@ -756,17 +756,16 @@ void OnvifProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
                       { "commands the camera cannot do (not sent)", counters_.refused_locally } });
 }
 
-std::unique_ptr<DeviceBackend> makeOnvifBackend(const OnvifConfig& config, std::shared_ptr<const Clock> clock)
+void OnvifProtocol::validate(const DeviceConfig<OnvifProtocol>& config)
 {
   if (config.link.kind != LinkKind::HTTP)
   {
     throw ConfigError("an ONVIF camera is reached over HTTP");
   }
-  if (config.onvif.zoom_max <= 1.0 || config.onvif.velocity_timeout < 1)
+  if (config.settings.zoom_max <= 1.0 || config.settings.velocity_timeout < 1)
   {
     throw ConfigError("ONVIF zoom_max must be > 1 and velocity_timeout >= 1 s");
   }
-  return makeDeviceBackend<OnvifProtocol>(config.link, config.session, config.onvif, std::move(clock));
 }
 
 }  // namespace ptz_action_server

@@ -225,9 +225,4 @@ void PanTiltProtocol::send(const std::uint8_t* frame, std::size_t size)
   session_.write(framed_.data(), framed_.size());
 }
 
-std::unique_ptr<DeviceBackend> makePanTiltBackend(const PanTiltConfig& config, std::shared_ptr<const Clock> clock)
-{
-  return makeDeviceBackend<PanTiltProtocol>(config.link, config.session, config.pantilt, std::move(clock));
-}
-
 }  // namespace ptz_action_server

@@ -251,9 +251,4 @@ void PelcoProtocol::handle(const pelco::FrameParser::Event& event)
   answered_in_round_ = 0;
 }
 
-std::unique_ptr<DeviceBackend> makePelcoBackend(const PelcoConfig& config, std::shared_ptr<const Clock> clock)
-{
-  return makeDeviceBackend<PelcoProtocol>(config.link, config.session, config.pelco, std::move(clock));
-}
-
 }  // namespace ptz_action_server

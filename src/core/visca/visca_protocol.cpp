@@ -434,9 +434,4 @@ void ViscaProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
   channel_.diagnostics(values);
 }
 
-std::unique_ptr<DeviceBackend> makeViscaBackend(const ViscaConfig& config, std::shared_ptr<const Clock> clock)
-{
-  return makeDeviceBackend<ViscaProtocol>(config.link, config.session, config.visca, std::move(clock));
-}
-
 }  // namespace ptz_action_server

@@ -37,7 +37,7 @@ public:
 
   std::unique_ptr<DeviceBackend> makeBackend() override
   {
-    return makeAxisBackend(config_);
+    return makeDeviceBackend<AxisProtocol>(config_);
   }
   std::vector<DeviceCommand> commands() const override
   {
@@ -110,7 +110,7 @@ private:
 
   const vapix::ZoomTable backend_table_;
   std::unique_ptr<AxisCameraEmulator> emulator_;
-  AxisConfig config_;
+  DeviceConfig<AxisProtocol> config_;
 };
 
 /// The camera of issue 21, as it answered in the field: no `query=attributes` (info=1 does not list it, asking answers

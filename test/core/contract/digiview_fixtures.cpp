@@ -27,14 +27,14 @@ public:
     emulator_config_.port = emulator_->port();
     config_.link.kind = transport;
     config_.link.port = emulator_->port();
-    config_.digiview.wire.format = format;
-    config_.digiview.acceleration = 4.0;  // as the emulator turns
+    config_.settings.wire.format = format;
+    config_.settings.acceleration = 4.0;  // as the emulator turns
     config_.session.state_timeout = TEST_STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override
   {
-    return makeDigiViewBackend(config_);
+    return makeDeviceBackend<DigiViewProtocol>(config_);
   }
   std::vector<DeviceCommand> commands() const override
   {
@@ -71,7 +71,7 @@ public:
   PtzSample deviceState() const override
   {
     PtzSample view = emulator_->view("main", 0);
-    view.position[ZOOM] = config_.digiview.fov_wide / view.position[ZOOM];  // the model's zoom slot is the fov
+    view.position[ZOOM] = config_.settings.fov_wide / view.position[ZOOM];  // the model's zoom slot is the fov
     return view;
   }
   void setSilent(bool silent) override
@@ -155,7 +155,7 @@ public:
       {
         CamOpticsAndControl optics;
         ASSERT_EQ(unpackOptics(item.message, optics), UnpackError::NONE);
-        EXPECT_NEAR(optics.fov, config_.digiview.fov_wide / target[ZOOM], 1e-3);
+        EXPECT_NEAR(optics.fov, config_.settings.fov_wide / target[ZOOM], 1e-3);
         ++optics_seen;
       }
     }
@@ -173,7 +173,7 @@ public:
 private:
   DigiViewEmulatorConfig emulator_config_;
   std::unique_ptr<DigiViewEmulator> emulator_;
-  DigiViewConfig config_;
+  DeviceConfig<DigiViewProtocol> config_;
 };
 
 const DeviceFixtureRegistration DIGIVIEW_FIXTURES({

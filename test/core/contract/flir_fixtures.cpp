@@ -24,7 +24,7 @@ public:
 
   std::unique_ptr<DeviceBackend> makeBackend() override
   {
-    return makeFlirBackend(config_);
+    return makeDeviceBackend<FlirProtocol>(config_);
   }
   std::vector<DeviceCommand> commands() const override
   {
@@ -70,7 +70,7 @@ public:
   }
 
 private:
-  FlirConfig config_;
+  DeviceConfig<FlirProtocol> config_;
 };
 
 using PortKind = DevicePortConfig::Kind;

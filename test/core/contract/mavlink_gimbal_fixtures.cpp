@@ -53,7 +53,7 @@ public:
 
   std::unique_ptr<DeviceBackend> makeBackend() override
   {
-    return makeMavlinkGimbalBackend(config_);
+    return makeDeviceBackend<MavlinkGimbalProtocol>(config_);
   }
   std::vector<DeviceCommand> commands() const override
   {
@@ -204,7 +204,7 @@ public:
 private:
   MavlinkGimbalEmulatorConfig emulator_config_;
   std::unique_ptr<MavlinkGimbalEmulator> emulator_;
-  MavlinkGimbalConfig config_;
+  DeviceConfig<MavlinkGimbalProtocol> config_;
 };
 
 const DeviceFixtureRegistration MAVLINK_GIMBAL_FIXTURES({

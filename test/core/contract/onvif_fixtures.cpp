@@ -71,15 +71,15 @@ public:
     config_.link.http.password = camera.password;
     config_.link.http.request_timeout = 2.0;
     pinIfTls(emulator_->server(), config_.link);
-    config_.onvif.username = camera.username;
-    config_.onvif.password = camera.password;
+    config_.settings.username = camera.username;
+    config_.settings.password = camera.password;
     config_.session.state_timeout = TEST_STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override
   {
     skipIfUnsupported(unsupported_);
-    return makeOnvifBackend(config_);
+    return makeDeviceBackend<OnvifProtocol>(config_);
   }
   std::vector<DeviceCommand> commands() const override
   {
@@ -148,7 +148,7 @@ private:
 
   Unsupported unsupported_;
   std::unique_ptr<OnvifCameraEmulator> emulator_;
-  OnvifConfig config_;
+  DeviceConfig<OnvifProtocol> config_;
 };
 
 /// The contract cases the continuous-only and the no-position cameras cannot run, and why.

@@ -40,13 +40,13 @@ public:
       config_.link.port = emulator_config_.port;
       config_.link.local_host = "127.0.0.1";
     }
-    config_.pantilt.format = format;
+    config_.settings.format = format;
     config_.session.state_timeout = TEST_STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override
   {
-    return makePanTiltBackend(config_);
+    return makeDeviceBackend<PanTiltProtocol>(config_);
   }
   std::vector<DeviceCommand> commands() const override
   {
@@ -187,7 +187,7 @@ public:
 private:
   PanTiltEmulatorConfig emulator_config_;
   std::unique_ptr<PanTiltEmulator> emulator_;
-  PanTiltConfig config_;
+  DeviceConfig<PanTiltProtocol> config_;
 };
 
 const DeviceFixtureRegistration PANTILT_FIXTURES({

@@ -22,14 +22,14 @@ public:
     config.address = 7;
     config.tilt_encoding = encoding;
     startEmulator(config, kind, "pelco", config_.link);
-    config_.pelco.address = 7;
-    config_.pelco.tilt_encoding = encoding;
+    config_.settings.address = 7;
+    config_.settings.tilt_encoding = encoding;
     config_.session.state_timeout = TEST_STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override
   {
-    return makePelcoBackend(config_);
+    return makeDeviceBackend<PelcoProtocol>(config_);
   }
   std::vector<DeviceCommand> commands() const override
   {
@@ -70,12 +70,12 @@ public:
     EXPECT_EQ(sent[0].text, text(pelco::withValue(7, pelco::SET_PAN, pelco::encodePan(toDegrees(target[PAN])))));
     EXPECT_EQ(sent[1].text,
               text(pelco::withValue(7, pelco::SET_TILT,
-                                    pelco::encodeTilt(toDegrees(target[TILT]), config_.pelco.tilt_encoding))));
-    EXPECT_EQ(sent[2].text, text(pelco::withValue(7, pelco::SET_ZOOM, config_.pelco.zoomToPosition(target[ZOOM]))));
+                                    pelco::encodeTilt(toDegrees(target[TILT]), config_.settings.tilt_encoding))));
+    EXPECT_EQ(sent[2].text, text(pelco::withValue(7, pelco::SET_ZOOM, config_.settings.zoomToPosition(target[ZOOM]))));
   }
 
 private:
-  PelcoConfig config_;
+  DeviceConfig<PelcoProtocol> config_;
 };
 
 using PortKind = DevicePortConfig::Kind;

@@ -38,15 +38,15 @@ public:
       link.local_host = "127.0.0.1";
       emulator_config_.port.port = link.port;  // a restart takes the same port
     }
-    config_.visca.address = 2;
-    config_.visca.framing = framing;
-    config_.visca.model = emulator_config_.model;
+    config_.settings.address = 2;
+    config_.settings.framing = framing;
+    config_.settings.model = emulator_config_.model;
     config_.session.state_timeout = TEST_STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override
   {
-    return makeViscaBackend(config_);
+    return makeDeviceBackend<ViscaProtocol>(config_);
   }
   std::vector<DeviceCommand> commands() const override
   {
@@ -135,7 +135,7 @@ public:
   std::string prepareRefusal(AxisValues& goal) override
   {
     goal = AxisValues{ { 3.0, 0.0, 2.0 } };  // beyond the EVI-D70's 170 degrees: illegal parameters
-    const visca::ViscaModel& model = config_.visca.model;
+    const visca::ViscaModel& model = config_.settings.model;
     return "the VISCA camera refused '" +
            visca::toHex(visca::panTiltPosition(2, 0x18, 0x17, model.toSteps(PAN, 3.0), model.toSteps(TILT, 0.0))) +
            "': syntax error";
@@ -146,7 +146,7 @@ public:
   }
   void expectGoalCommands(const std::vector<DeviceCommand>& commands, const AxisValues& target) const override
   {
-    const visca::ViscaModel& model = config_.visca.model;
+    const visca::ViscaModel& model = config_.settings.model;
     std::vector<std::string> texts;
     for (const DeviceCommand& command : withoutQueries(commands))
     {
@@ -161,7 +161,7 @@ public:
 
 private:
   ViscaEmulatorConfig emulator_config_;
-  ViscaConfig config_;
+  DeviceConfig<ViscaProtocol> config_;
   std::unique_ptr<ViscaEmulator> emulator_;
 };
 

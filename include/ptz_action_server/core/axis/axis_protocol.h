@@ -35,18 +35,6 @@ struct AxisSettings
   bool zoom_guess = true;
 };
 
-/// Everything an Axis backend is built from.
-struct AxisConfig
-{
-  /// kind HTTP, port 80 (443 with TLS), Digest.
-  LinkConfig link = defaultLink();
-  /// State is `query=position` every 100 ms; no answer for 0.5 s drops the link.
-  DeviceSessionConfig session{ 0.5, 0.1, 10.0, 0.15, 0.5 };
-  AxisSettings axis;
-
-  static LinkConfig defaultLink();
-};
-
 /// Counters for diagnostics.
 struct AxisCounters
 {
@@ -87,6 +75,18 @@ enum class AxisZoomSource
 class AxisProtocol : public DeviceProtocol
 {
 public:
+  /// DeviceConfig<AxisProtocol> (device_backend.h): these settings, and the defaults of the link and the session.
+  using Settings = AxisSettings;
+  /// kind HTTP, port 80 (443 with TLS), Digest.
+  static LinkConfig defaultLink();
+  /// State is `query=position` every 100 ms; no answer for 0.5 s drops the link.
+  static DeviceSessionConfig defaultSession()
+  {
+    return { 0.5, 0.1, 10.0, 0.15, 0.5 };
+  }
+  /// Throws ConfigError for a config this protocol cannot run (not over HTTP, ...).
+  static void validate(const DeviceConfig<AxisProtocol>& config);
+
   AxisProtocol(const AxisSettings& settings, DeviceSession& session);
 
   std::string name() const override
@@ -164,9 +164,5 @@ private:
 
 /// "camera table", "model guess", ... for messages and diagnostics.
 const char* zoomSourceName(AxisZoomSource source);
-
-/// An Axis backend: AxisProtocol on a DeviceSession over HTTP.
-std::unique_ptr<DeviceBackend> makeAxisBackend(const AxisConfig& config,
-                                               std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
 
 }  // namespace ptz_action_server

@@ -7,6 +7,8 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "ptz_action_server/core/backend.h"
@@ -95,6 +97,45 @@ std::unique_ptr<DeviceBackend> makeDeviceBackend(const LinkConfig& link, const D
   return std::make_unique<DeviceBackend>(
       link, session, [&settings](DeviceSession& owner) { return std::make_unique<Protocol>(settings, owner); },
       std::move(clock));
+}
+
+/**
+ * \brief Everything a device backend is built from: its link, its session's timing, its protocol's settings.
+ *
+ * The defaults are the protocol's (`Protocol::defaultLink()`, `Protocol::defaultSession()`), its settings are
+ * `Protocol::Settings`: DeviceConfig<FlirProtocol> is a FLIR PTU on /dev/ttyUSB0 with a 0.25 s reply deadline.
+ */
+template <class Protocol>
+struct DeviceConfig
+{
+  LinkConfig link = Protocol::defaultLink();
+  DeviceSessionConfig session = Protocol::defaultSession();
+  typename Protocol::Settings settings;
+};
+
+namespace detail
+{
+template <class Protocol, class = void>
+struct HasValidate : std::false_type
+{
+};
+template <class Protocol>
+struct HasValidate<Protocol, std::void_t<decltype(Protocol::validate(std::declval<const DeviceConfig<Protocol>&>()))>>
+  : std::true_type
+{
+};
+}  // namespace detail
+
+/// A DeviceBackend running \p Protocol as \p config says (checked first by `Protocol::validate`, where it has one).
+template <class Protocol>
+std::unique_ptr<DeviceBackend> makeDeviceBackend(const DeviceConfig<Protocol>& config,
+                                                 std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>())
+{
+  if constexpr (detail::HasValidate<Protocol>::value)
+  {
+    Protocol::validate(config);
+  }
+  return makeDeviceBackend<Protocol>(config.link, config.session, config.settings, std::move(clock));
 }
 
 }  // namespace ptz_action_server

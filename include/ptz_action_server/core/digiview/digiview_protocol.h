@@ -38,21 +38,6 @@ struct DigiViewSettings
   }
 };
 
-/// Everything a DigiView backend is built from.
-struct DigiViewConfig
-{
-  DigiViewConfig()
-  {
-    link.kind = LinkKind::TCP;
-    link.port = 5500;
-    link.reconnect_min = 0.1;
-  }
-  LinkConfig link;  ///< tcp (the default: a connection, which QUIT closes) or udp (one message per datagram)
-  /// No CURRENT_PARAMETERS of the view for 0.5 s drops the link (they come every 100 ms).
-  DeviceSessionConfig session{ 0.5, 0.1, 10.0, 0.25, 0.5 };
-  DigiViewSettings digiview;
-};
-
 struct DigiViewCounters
 {
   Counter messages;
@@ -78,6 +63,23 @@ struct DigiViewCounters
 class DigiViewProtocol : public DeviceProtocol
 {
 public:
+  /// DeviceConfig<DigiViewProtocol> (device_backend.h): these settings, and the defaults of the link and the session.
+  using Settings = DigiViewSettings;
+  /// tcp (the default: a connection, which QUIT closes) or udp (one message per datagram)
+  static LinkConfig defaultLink()
+  {
+    LinkConfig link;
+    link.kind = LinkKind::TCP;
+    link.port = 5500;
+    link.reconnect_min = 0.1;
+    return link;
+  }
+  /// No CURRENT_PARAMETERS of the view for 0.5 s drops the link (they come every 100 ms).
+  static DeviceSessionConfig defaultSession()
+  {
+    return { 0.5, 0.1, 10.0, 0.25, 0.5 };
+  }
+
   DigiViewProtocol(const DigiViewSettings& settings, DeviceSession& session);
 
   std::string name() const override
@@ -163,9 +165,5 @@ private:
   AxisValues velocity_origin_{};
   TimePoint velocity_started_{};
 };
-
-/// A digiview backend: DigiViewProtocol on a DeviceSession.
-std::unique_ptr<DeviceBackend>
-makeDigiViewBackend(const DigiViewConfig& config, std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
 
 }  // namespace ptz_action_server

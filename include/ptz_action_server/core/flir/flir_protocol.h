@@ -23,15 +23,6 @@ struct FlirSettings
   double banner_timeout = 3.0;
 };
 
-/// Everything a FLIR backend is built from.
-struct FlirConfig
-{
-  LinkConfig link;  ///< serial (D46, E46) or tcp (E-series, port 4000)
-  /// A missing reply for 0.25 s drops the link; the position is polled every 50 ms.
-  DeviceSessionConfig session{ 0.25, 0.05, 10.0, 0.1, 0.5 };
-  FlirSettings flir;
-};
-
 /// Counters for diagnostics (reply timeouts and late replies are the channel's).
 struct FlirCounters
 {
@@ -67,6 +58,19 @@ struct FlirCounters
 class FlirProtocol : public DeviceProtocol
 {
 public:
+  /// DeviceConfig<FlirProtocol> (device_backend.h): these settings, and the defaults of the link and the session.
+  using Settings = FlirSettings;
+  /// serial (D46, E46) or tcp (E-series, port 4000)
+  static LinkConfig defaultLink()
+  {
+    return LinkConfig();
+  }
+  /// A missing reply for 0.25 s drops the link; the position is polled every 50 ms.
+  static DeviceSessionConfig defaultSession()
+  {
+    return { 0.25, 0.05, 10.0, 0.1, 0.5 };
+  }
+
   FlirProtocol(const FlirSettings& settings, DeviceSession& session);
 
   std::string name() const override
@@ -163,9 +167,5 @@ private:
   long limits_[4] = { 0, 0, 0, 0 };  ///< PN, PX, TN, TX (positions)
   long speed_max_[2] = { 0, 0 };     ///< PU, TU (positions/s)
 };
-
-/// A FLIR backend: FlirProtocol on a DeviceSession.
-std::unique_ptr<DeviceBackend> makeFlirBackend(const FlirConfig& config,
-                                               std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
 
 }  // namespace ptz_action_server

@@ -73,21 +73,6 @@ struct MavlinkGimbalSettings
   AxisCapability tilt = fullAxis({ -M_PI / 2.0, M_PI / 4.0 }, 1.0, 0.0);
 };
 
-/// Everything a mavlink_gimbal backend is built from.
-struct MavlinkGimbalConfig
-{
-  MavlinkGimbalConfig()
-  {
-    link.kind = LinkKind::UDP;
-    link.port = 14550;
-    link.reconnect_min = 0.1;
-  }
-  LinkConfig link;  ///< udp (the default) or serial
-  /// No attitude for 1 s drops the link (asked for every 50 ms).
-  DeviceSessionConfig session{ 1.0, 0.05, 10.0, 0.15, 0.5 };
-  MavlinkGimbalSettings gimbal;
-};
-
 struct MavlinkGimbalCounters
 {
   Counter frames;              ///< good MAVLink 2 frames
@@ -128,6 +113,24 @@ struct MavlinkGimbalCounters
 class MavlinkGimbalProtocol : public DeviceProtocol
 {
 public:
+  /// DeviceConfig<MavlinkGimbalProtocol> (device_backend.h): these settings, and the defaults of the link and the
+  /// session.
+  using Settings = MavlinkGimbalSettings;
+  /// udp (the default) or serial
+  static LinkConfig defaultLink()
+  {
+    LinkConfig link;
+    link.kind = LinkKind::UDP;
+    link.port = 14550;
+    link.reconnect_min = 0.1;
+    return link;
+  }
+  /// No attitude for 1 s drops the link (asked for every 50 ms).
+  static DeviceSessionConfig defaultSession()
+  {
+    return { 1.0, 0.05, 10.0, 0.15, 0.5 };
+  }
+
   MavlinkGimbalProtocol(const MavlinkGimbalSettings& settings, DeviceSession& session);
 
   std::string name() const override
@@ -285,9 +288,5 @@ private:
   TimePoint setpoint_sent_at_{};
   TimePoint stop_until_{};
 };
-
-/// A mavlink_gimbal backend: MavlinkGimbalProtocol on a DeviceSession.
-std::unique_ptr<DeviceBackend> makeMavlinkGimbalBackend(
-    const MavlinkGimbalConfig& config, std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
 
 }  // namespace ptz_action_server

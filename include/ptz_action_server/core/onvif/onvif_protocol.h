@@ -46,16 +46,6 @@ struct OnvifSettings
   int velocity_timeout = 2;     ///< s of a ContinuousMove's Timeout (whole seconds); re-sent at half of it
 };
 
-/// Everything an ONVIF backend is built from.
-struct OnvifConfig
-{
-  LinkConfig link = defaultLink();
-  DeviceSessionConfig session{ 0.5, 0.1, 10.0, 0.15, 0.5 };
-  OnvifSettings onvif;
-
-  static LinkConfig defaultLink();
-};
-
 struct OnvifCounters
 {
   Counter statuses;  ///< GetStatus replies read
@@ -89,6 +79,16 @@ struct OnvifCounters
 class OnvifProtocol : public DeviceProtocol
 {
 public:
+  /// DeviceConfig<OnvifProtocol> (device_backend.h): these settings, and the defaults of the link and the session.
+  using Settings = OnvifSettings;
+  static LinkConfig defaultLink();
+  static DeviceSessionConfig defaultSession()
+  {
+    return { 0.5, 0.1, 10.0, 0.15, 0.5 };
+  }
+  /// Throws ConfigError for a config this protocol cannot run (not over HTTP, ...).
+  static void validate(const DeviceConfig<OnvifProtocol>& config);
+
   OnvifProtocol(const OnvifSettings& settings, DeviceSession& session);
 
   std::string name() const override
@@ -195,8 +195,5 @@ private:
   std::string velocity_body_;  ///< the ContinuousMove in force ("" when none)
   TimePoint velocity_sent_at_{};
 };
-
-std::unique_ptr<DeviceBackend> makeOnvifBackend(const OnvifConfig& config,
-                                                std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
 
 }  // namespace ptz_action_server

@@ -26,20 +26,6 @@ struct PanTiltSettings
                                         fullAxis({ -M_PI / 2.0, M_PI / 2.0 }, 1.0, 3.0) } };
 };
 
-/// Everything a PanTilt backend is built from.
-struct PanTiltConfig
-{
-  PanTiltConfig()
-  {
-    link.kind = LinkKind::UDP;
-    link.port = 5000;
-  }
-  LinkConfig link;  ///< udp: the device controller's address; local_host/local_port where its frames arrive
-  /// No valid params frame for 0.5 s drops the link; positions 50 ms apart that agree mean "settled".
-  DeviceSessionConfig session{ 0.5, 0.05, 10.0, 0.05, 0.5 };
-  PanTiltSettings pantilt;
-};
-
 /// Why frames from the device were dropped; each is counted under exactly one reason. (Datagrams from anyone
 /// else are the link's `foreign_datagrams`.)
 struct PanTiltCounters
@@ -72,6 +58,22 @@ struct PanTiltCounters
 class PanTiltProtocol : public DeviceProtocol
 {
 public:
+  /// DeviceConfig<PanTiltProtocol> (device_backend.h): these settings, and the defaults of the link and the session.
+  using Settings = PanTiltSettings;
+  /// udp: the device controller's address; local_host/local_port where its frames arrive
+  static LinkConfig defaultLink()
+  {
+    LinkConfig link;
+    link.kind = LinkKind::UDP;
+    link.port = 5000;
+    return link;
+  }
+  /// No valid params frame for 0.5 s drops the link; positions 50 ms apart that agree mean "settled".
+  static DeviceSessionConfig defaultSession()
+  {
+    return { 0.5, 0.05, 10.0, 0.05, 0.5 };
+  }
+
   PanTiltProtocol(const PanTiltSettings& settings, DeviceSession& session);
 
   std::string name() const override
@@ -128,9 +130,5 @@ private:
   TimePoint last_frame_at_{};
   TimePoint last_request_at_{};
 };
-
-/// A pantilt_udp backend: PanTiltProtocol on a DeviceSession.
-std::unique_ptr<DeviceBackend> makePanTiltBackend(const PanTiltConfig& config,
-                                                  std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
 
 }  // namespace ptz_action_server

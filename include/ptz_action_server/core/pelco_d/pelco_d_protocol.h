@@ -34,14 +34,6 @@ struct PelcoSettings
   double positionToZoom(std::uint16_t position) const;
 };
 
-/// Everything a Pelco-D backend is built from.
-struct PelcoConfig
-{
-  LinkConfig link;  ///< serial, or tcp to a serial-to-Ethernet server
-  DeviceSessionConfig session{ 0.25, 0.05, 10.0, 0.1, 0.5 };
-  PelcoSettings pelco;
-};
-
 /// Counters for diagnostics (reply timeouts and late replies are the channel's).
 struct PelcoCounters
 {
@@ -63,6 +55,18 @@ struct PelcoCounters
 class PelcoProtocol : public DeviceProtocol
 {
 public:
+  /// DeviceConfig<PelcoProtocol> (device_backend.h): these settings, and the defaults of the link and the session.
+  using Settings = PelcoSettings;
+  /// serial, or tcp to a serial-to-Ethernet server
+  static LinkConfig defaultLink()
+  {
+    return LinkConfig();
+  }
+  static DeviceSessionConfig defaultSession()
+  {
+    return { 0.25, 0.05, 10.0, 0.1, 0.5 };
+  }
+
   PelcoProtocol(const PelcoSettings& settings, DeviceSession& session);
 
   std::string name() const override
@@ -123,9 +127,5 @@ private:
   int answered_in_round_ = 0;
   std::vector<pelco::FrameParser::Event> events_;  ///< reused for every read
 };
-
-/// A Pelco-D backend: PelcoProtocol on a DeviceSession.
-std::unique_ptr<DeviceBackend> makePelcoBackend(const PelcoConfig& config,
-                                                std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
 
 }  // namespace ptz_action_server

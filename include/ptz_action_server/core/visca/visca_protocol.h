@@ -36,14 +36,6 @@ struct ViscaSettings
   double reply_timeout = 0.0;  ///< s for an ACK or an answer; 0: the exchange's wire time plus 100 ms
 };
 
-/// Everything a VISCA backend is built from.
-struct ViscaConfig
-{
-  LinkConfig link;  ///< serial, tcp, or udp (port 52381 for Sony's VISCA over IP)
-  DeviceSessionConfig session{ 0.25, 0.05, 10.0, 0.1, 0.5 };
-  ViscaSettings visca;
-};
-
 /// Counters for diagnostics (reply timeouts and late replies are the channel's).
 struct ViscaCounters
 {
@@ -73,6 +65,18 @@ struct ViscaCounters
 class ViscaProtocol : public DeviceProtocol
 {
 public:
+  /// DeviceConfig<ViscaProtocol> (device_backend.h): these settings, and the defaults of the link and the session.
+  using Settings = ViscaSettings;
+  /// serial, tcp, or udp (port 52381 for Sony's VISCA over IP)
+  static LinkConfig defaultLink()
+  {
+    return LinkConfig();
+  }
+  static DeviceSessionConfig defaultSession()
+  {
+    return { 0.25, 0.05, 10.0, 0.1, 0.5 };
+  }
+
   ViscaProtocol(const ViscaSettings& settings, DeviceSession& session);
 
   std::string name() const override
@@ -148,9 +152,5 @@ private:
   bool pan_tilt_answered_ = false;      ///< polled_'s pan and tilt answer this round's inquiry (the zoom completes it)
   std::vector<visca::Packet> packets_;  ///< reused for every read
 };
-
-/// A VISCA backend: ViscaProtocol on a DeviceSession.
-std::unique_ptr<DeviceBackend> makeViscaBackend(const ViscaConfig& config,
-                                                std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
 
 }  // namespace ptz_action_server

@@ -1,11 +1,15 @@
-#include "visca_params.h"
-
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
 
+#include "device_plugin.h"
+#include "ptz_action_server/core/visca/visca_protocol.h"
+
 namespace ptz_action_server
 {
+namespace
+{
+/// "0x0000:1, 0x4000:18" (zoom position, decimal or hex, then X) -> \p table; false if it does not read.
 bool parseZoomTable(const std::string& text, std::vector<visca::ZoomPoint>& table)
 {
   std::vector<visca::ZoomPoint> rows;
@@ -37,6 +41,7 @@ bool parseZoomTable(const std::string& text, std::vector<visca::ZoomPoint>& tabl
   return true;
 }
 
+/// address, model (a preset) and its overrides (pan/..., tilt/..., zoom/...) under \p params.
 void readViscaSettings(const ParamReader& params, ViscaSettings& visca)
 {
   visca.address = static_cast<std::uint8_t>(params.integer("address", visca.address, 1, 7));
@@ -73,6 +78,7 @@ void readViscaSettings(const ParamReader& params, ViscaSettings& visca)
   }
 }
 
+/// framing under \p params: sony_ip by default on UDP, raw otherwise; sony_ip on anything but UDP is an error.
 ViscaFraming readViscaFraming(const ParamReader& params, LinkKind kind)
 {
   ViscaFraming framing = ViscaFraming::RAW;
@@ -84,5 +90,33 @@ ViscaFraming readViscaFraming(const ParamReader& params, LinkKind kind)
   }
   return framing;
 }
+}  // namespace
+
+/**
+ * \brief A VISCA camera: ~visca/..., on a serial port, or over TCP (raw VISCA, port 5678) or UDP (Sony's VISCA over
+ * IP on port 52381 by default, or raw VISCA).
+ */
+struct ViscaPlugin
+{
+  using Protocol = ViscaProtocol;
+  static constexpr const char* NAME = "visca";
+
+  static LinkChoices links()
+  {
+    return { { { LinkKind::SERIAL }, { LinkKind::TCP, 5678 }, { LinkKind::UDP, visca::SONY_IP_PORT } } };
+  }
+
+  static void read(const DeviceParams& device, const BackendContext& /*context*/, DeviceConfig<ViscaProtocol>& config)
+  {
+    // Diagnostics keep the name the backend was loaded by.
+    config.settings.backend_name =
+        device.old_plugin == "serial" ? "serial/visca" : (device.old_plugin.empty() ? NAME : device.old_plugin);
+    readViscaSettings(device.own, config.settings);
+    config.settings.framing = readViscaFraming(device.own, config.link.kind);
+    config.settings.reply_timeout = device.params.number("reply_timeout", 0.0, 0.0, 10.0);
+  }
+};
 
 }  // namespace ptz_action_server
+
+PTZ_DEVICE_PLUGIN(ViscaPlugin, ViscaBackendPlugin)
