@@ -24,16 +24,16 @@ BenchParam emulatorLink(const std::string& name)
   return BenchParam{ name, XmlRpc::XmlRpcValue(), BenchParam::Source::EMULATOR_LINK };
 }
 
-/// ~serial/... for \p protocol on the emulator's pseudo-terminal at \p baud, or over TCP (\p baud 0).
-std::vector<BenchParam> serialParams(const char* protocol, unsigned baud)
+/// ~<protocol>/... on the emulator's pseudo-terminal at \p baud, or over TCP (\p baud 0).
+std::vector<BenchParam> serialParams(const std::string& protocol, unsigned baud)
 {
   if (baud == 0)
   {
-    return { value("serial/protocol", protocol), value("serial/transport", "tcp"), value("serial/host", "127.0.0.1"),
-             emulatorPort("serial/tcp_port") };
+    return { value(protocol + "/transport", "tcp"), value(protocol + "/host", "127.0.0.1"),
+             emulatorPort(protocol + "/port") };
   }
-  return { value("serial/protocol", protocol), value("serial/transport", "serial"), emulatorLink("serial/port"),
-           value("serial/baud", static_cast<int>(baud)) };
+  return { value(protocol + "/transport", "serial"), emulatorLink(protocol + "/port"),
+           value(protocol + "/baud", static_cast<int>(baud)) };
 }
 
 DeviceRow serialRow(const char* protocol, unsigned baud)
@@ -41,7 +41,7 @@ DeviceRow serialRow(const char* protocol, unsigned baud)
   const PortKind kind = baud == 0 ? PortKind::TCP : PortKind::PTY;
   DeviceRow row;
   row.name = std::string(protocol) + (baud == 0 ? "_tcp" : "_serial_" + std::to_string(baud));
-  row.plugin = "serial";
+  row.plugin = protocol;
   row.params = serialParams(protocol, baud);
   row.emulator = std::string(protocol) == "flir" ? flirEmulator(kind, baud) : pelcoEmulator(kind, baud);
   row.goals = baud == 0 ? 1000 : 300;
@@ -126,9 +126,10 @@ const std::vector<DeviceRow>& deviceTable()
 
     DeviceRow pantilt;
     pantilt.name = "pantilt_udp";
-    pantilt.plugin = "pantilt_udp";
-    pantilt.params = { value("pantilt_udp/device_host", "127.0.0.1"), emulatorPort("pantilt_udp/device_port"),
-                       value("pantilt_udp/local_host", "127.0.0.1"), value("pantilt_udp/format", "seed") };
+    pantilt.plugin = "pantilt";
+    pantilt.params = { value("pantilt/transport", "udp"), value("pantilt/host", "127.0.0.1"),
+                       emulatorPort("pantilt/port"), value("pantilt/local_host", "127.0.0.1"),
+                       value("pantilt/format", "seed") };
     pantilt.emulator = panTiltEmulator();
     table.push_back(pantilt);
 
@@ -173,7 +174,7 @@ const std::vector<DeviceRow>& deviceTable()
 
     DeviceRow visca_serial;
     visca_serial.name = "visca_serial_9600";
-    visca_serial.plugin = "serial";
+    visca_serial.plugin = "visca";
     visca_serial.params = serialParams("visca", 9600);
     visca_serial.emulator = viscaEmulator(PortKind::PTY, 9600);
     visca_serial.goals = 300;
@@ -181,9 +182,9 @@ const std::vector<DeviceRow>& deviceTable()
 
     DeviceRow visca_udp;
     visca_udp.name = "visca_udp";
-    visca_udp.plugin = "visca_ip";
-    visca_udp.params = { value("visca_ip/host", "127.0.0.1"), emulatorPort("visca_ip/port"),
-                         value("visca_ip/local_host", "127.0.0.1"), value("visca_ip/framing", "sony_ip") };
+    visca_udp.plugin = "visca";
+    visca_udp.params = { value("visca/transport", "udp"), value("visca/host", "127.0.0.1"), emulatorPort("visca/port"),
+                         value("visca/local_host", "127.0.0.1"), value("visca/framing", "sony_ip") };
     visca_udp.emulator = viscaEmulator(PortKind::UDP, 0);
     table.push_back(visca_udp);
     return table;
