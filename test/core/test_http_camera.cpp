@@ -45,7 +45,7 @@ public:
     std::promise<HttpReply> done;
     boost::asio::post(context_, [&] {
       HttpRequest request{ path, body, body.empty() ? "" : "application/soap+xml; charset=utf-8" };
-      done.set_value(dynamic_cast<HttpLink&>(*link_).perform(request));
+      done.set_value(link_->http()->request(request));
     });
     return done.get_future().get();
   }
@@ -61,7 +61,7 @@ public:
   }
   const HttpCounters& counters() const
   {
-    return dynamic_cast<const HttpLink&>(*link_).httpCounters();
+    return link_->http()->httpCounters();
   }
 
 private:

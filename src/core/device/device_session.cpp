@@ -7,6 +7,7 @@
 #include <boost/asio/post.hpp>
 
 #include "ptz_action_server/core/device/device_protocol.h"
+#include "ptz_action_server/core/transport/http_link.h"
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
 
@@ -36,9 +37,9 @@ DeviceSession::~DeviceSession()
   stop();
 }
 
-HttpLink& DeviceSession::http()
+HttpChannel& DeviceSession::http()
 {
-  auto* http = dynamic_cast<HttpLink*>(link_.get());
+  HttpChannel* http = link_->http();
   if (http == nullptr)
   {
     throw std::logic_error(protocol_->name() + " needs an HTTP link, not " + link_->config().describe());
@@ -46,9 +47,20 @@ HttpLink& DeviceSession::http()
   return *http;
 }
 
+ByteLink& DeviceSession::bytes()
+{
+  ByteLink* bytes = link_->bytes();
+  if (bytes == nullptr)
+  {
+    throw std::logic_error(protocol_->name() + " writes bytes to " + link_->config().describe() +
+                           ", which carries none");
+  }
+  return *bytes;
+}
+
 const HttpCounters* DeviceSession::httpCounters() const
 {
-  const auto* http = dynamic_cast<const HttpLink*>(link_.get());
+  const HttpChannel* http = link_->http();
   return http == nullptr ? nullptr : &http->httpCounters();
 }
 
@@ -347,14 +359,13 @@ void DeviceSession::onLinkBytes(const std::uint8_t* data, std::size_t size)
 
 void DeviceSession::onLinkDown(const std::string& reason)
 {
-  // A certificate refused before the device was ever up is refused again on every retry: start-up ends now, with
+  // A loss that repeats on every retry (a refused certificate) before the device was ever up ends start-up now, with
   // that reason, instead of at startup_timeout.
-  const auto* http = dynamic_cast<const HttpLink*>(link_.get());
-  const bool certificate_refused = http != nullptr && http->certificateRefused();
+  const bool refused_for_good = link_->refusedForGood();
   {
     std::lock_guard<std::mutex> lock(mutex_);
     supervisor_.disconnected(reason);
-    if (certificate_refused && !supervisor_.everUp() && supervisor_.startupProblem().empty())
+    if (refused_for_good && !supervisor_.everUp() && supervisor_.startupProblem().empty())
     {
       // "https://host:port: GET ...: TLS refused: ..." without the address start() names already.
       const std::string address = link_->config().describe() + ": ";

@@ -21,7 +21,7 @@
 #include "ptz_action_server/core/device/link_supervisor.h"
 #include "ptz_action_server/core/device/state_plausibility.h"
 #include "ptz_action_server/core/motion_estimator.h"
-#include "ptz_action_server/core/transport/http_link.h"
+#include "ptz_action_server/core/transport/http_channel.h"
 #include "ptz_action_server/core/transport/link.h"
 
 namespace ptz_action_server
@@ -134,7 +134,7 @@ public:
   {
     return link_->config();
   }
-  /// The HTTP link's counters, or nullptr on another link.
+  /// The HTTP channel's counters, or nullptr on another link.
   const HttpCounters* httpCounters() const;
 
   // ---------------------------------------------------------------- for the protocol: I/O thread only
@@ -166,16 +166,18 @@ public:
   {
     return link_->carriesDatagrams();
   }
+  /// Bytes for the device (a link that carries bytes: serial, TCP, UDP). Throws std::logic_error over HTTP.
   void write(const std::uint8_t* data, std::size_t size)
   {
-    link_->write(data, size);
+    bytes().write(data, size);
   }
   void write(const std::string& bytes)
   {
-    link_->write(bytes);
+    this->bytes().write(bytes);
   }
-  /// The link as an HTTP link, for protocols over HTTP (LinkKind::HTTP). Throws std::logic_error on another link.
-  HttpLink& http();
+  /// The link's requests and answers, for protocols over HTTP (LinkKind::HTTP). Throws std::logic_error on another
+  /// link.
+  HttpChannel& http();
   /// Gives up on this connection (it reopens after the link's backoff).
   void disconnect(const std::string& reason)
   {
@@ -214,6 +216,7 @@ public:
   void warn(const std::string& text);
 
 private:
+  ByteLink& bytes();
   void onLinkUp() override;
   void onLinkBytes(const std::uint8_t* data, std::size_t size) override;
   void onLinkDown(const std::string& reason) override;
