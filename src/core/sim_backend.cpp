@@ -1,12 +1,26 @@
 #include "ptz_action_server/core/sim_backend.h"
 
+#include <limits>
+
 #include "ptz_action_server/core/text.h"
 
 namespace ptz_action_server
 {
 SimBackend::SimBackend(const SimDeviceConfig& config, std::shared_ptr<const Clock> clock)
-  : clock_(std::move(clock)), capabilities_(config.capabilities()), model_(config, clock_->now())
+  : clock_(std::move(clock))
+  , capabilities_(config.capabilities())
+  , model_(config, clock_->now())
+  , supervisor_(std::numeric_limits<double>::infinity(), clock_)  // the model never falls silent by itself
 {
+  answers();
+}
+
+void SimBackend::answers()
+{
+  supervisor_.connected();
+  supervisor_.ready();
+  supervisor_.stateReported();
+  supervisor_.refresh();
 }
 
 Capabilities SimBackend::capabilities() const
@@ -108,7 +122,7 @@ PtzSample SimBackend::sample() const
     return frozen_sample_;
   }
   PtzSample sample = model_.sample(clock_->now());
-  sample.link_losses = link_losses_;
+  sample.link_losses = supervisor_.losses();
   return sample;
 }
 
@@ -120,7 +134,7 @@ std::string SimBackend::lastFault() const
 std::string SimBackend::lastLinkLoss() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  return link_losses_ > 0 ? "the simulated device dropped out" : "";
+  return supervisor_.lastLoss();
 }
 
 void SimBackend::diagnostics(std::vector<DiagnosticValue>& values) const
@@ -149,10 +163,14 @@ void SimBackend::setFaults(const SimFaults& faults, bool dropout)
   model_.setFaults(faults, now);
   if (dropout && !dropout_)
   {
-    ++link_losses_;
+    supervisor_.disconnected("the simulated device dropped out");
     frozen_sample_ = model_.sample(now);
     frozen_sample_.link_up = false;
-    frozen_sample_.link_losses = link_losses_;
+    frozen_sample_.link_losses = supervisor_.losses();
+  }
+  else if (!dropout && dropout_)
+  {
+    answers();
   }
   dropout_ = dropout;
   planChanged();

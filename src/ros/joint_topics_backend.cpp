@@ -23,8 +23,12 @@ JointTopicsBackend::JointTopicsBackend(const JointTopicsConfig& config, const ro
   , node_handle_(node_handle)
   , setpoint_(config.setpoint, clock_->now())
   , estimator_(config.settle_window)
+  , supervisor_(config.state_timeout, clock_)
 {
   node_handle_.setCallbackQueue(&queue_);
+  supervisor_.name(stateSource(), stateSource());  // topics have no connection: "connected" and ready from the start
+  supervisor_.connected();
+  supervisor_.ready();
 }
 
 JointTopicsBackend::~JointTopicsBackend()
@@ -48,11 +52,6 @@ std::string JointTopicsBackend::stateSource() const
          node_handle_.resolveName(config_.state_topic);
 }
 
-std::string JointTopicsBackend::silenceReason() const
-{
-  return formatText("no %s for %.2f s", stateSource().c_str(), config_.state_timeout);
-}
-
 void JointTopicsBackend::start()
 {
   for (Axis axis : JOINT_AXES)
@@ -65,8 +64,7 @@ void JointTopicsBackend::start()
   thread_ = std::thread([this] { run(); });
 
   std::unique_lock<std::mutex> lock(mutex_);
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(config_.startup_timeout);
-  if (!first_state_.wait_until(lock, deadline, [this] { return have_state_; }))
+  if (!supervisor_.waitForStartup(lock, config_.startup_timeout))
   {
     const std::uint64_t foreign = states_without_joints_;
     lock.unlock();
@@ -120,7 +118,7 @@ void JointTopicsBackend::run()
     const TimePoint now = clock_->now();
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      superviseLink(now);
+      supervisor_.check();
     }
     const double wait = publishSetpoints(now, false);
     queue_.callAvailable(ros::WallDuration(wait));
@@ -182,39 +180,24 @@ void JointTopicsBackend::recordJointState(const std::array<double, 2>& positions
 {
   const TimePoint now = clock_->now();
   std::lock_guard<std::mutex> lock(mutex_);
-  superviseLink(now);  // a silence the thread has not noticed yet still counts
   ++states_received_;
   measured_[PAN] = positions[PAN];
   measured_[TILT] = positions[TILT];
-  last_state_at_ = now;
-  if (!link_up_)
+  supervisor_.stateReported();  // a silence the thread has not noticed yet still counts
+  const LinkSupervisor::Rise rise = supervisor_.refresh();
+  if (rise != LinkSupervisor::Rise::NONE)
   {
-    link_up_ = true;
     estimator_.clear();  // positions from before a loss say nothing about the motion now
-    if (have_state_)
-    {
-      // Back after a loss: hold the joints where they are; the old goal is not resumed.
-      setpoint_ = restingAtMeasured(now);
-      setpoint_moving_ = true;
-      next_setpoint_at_ = now;
-    }
+  }
+  if (rise == LinkSupervisor::Rise::RECOVERED)
+  {
+    // Back after a loss: hold the joints where they are; the old goal is not resumed. This runs on the queue that
+    // serves the commands too, so a command sent on seeing the link up comes after it.
+    setpoint_ = restingAtMeasured(now);
+    setpoint_moving_ = true;
+    next_setpoint_at_ = now;
   }
   estimator_.add(now, measured_);
-  if (!have_state_)
-  {
-    have_state_ = true;
-    first_state_.notify_all();
-  }
-}
-
-void JointTopicsBackend::superviseLink(TimePoint now)
-{
-  if (link_up_ && secondsBetween(last_state_at_, now) > config_.state_timeout)
-  {
-    link_up_ = false;
-    ++link_losses_;
-    last_link_loss_ = silenceReason();
-  }
 }
 
 SimDeviceModel JointTopicsBackend::restingAtMeasured(TimePoint now) const
@@ -229,28 +212,23 @@ SimDeviceModel JointTopicsBackend::restingAtMeasured(TimePoint now) const
 
 PtzSample JointTopicsBackend::sample() const
 {
-  const TimePoint now = clock_->now();
   std::lock_guard<std::mutex> lock(mutex_);
   PtzSample sample;
   estimator_.fill(sample);
   sample.position[ZOOM] = 1.0;
   sample.moving = sample.moving || setpoint_moving_;
   // A silence counts from the moment it is over the timeout, even before the backend's thread has noticed it.
-  const bool silent = link_up_ && secondsBetween(last_state_at_, now) > config_.state_timeout;
-  sample.link_up = link_up_ && !silent;
-  sample.link_losses = link_losses_ + (silent ? 1 : 0);
+  supervisor_.check();
+  sample.link_up = supervisor_.up();
+  sample.link_losses = supervisor_.losses();
   return sample;
 }
 
 std::string JointTopicsBackend::lastLinkLoss() const
 {
-  const TimePoint now = clock_->now();
   std::lock_guard<std::mutex> lock(mutex_);
-  if (link_up_ && secondsBetween(last_state_at_, now) > config_.state_timeout)
-  {
-    return silenceReason();
-  }
-  return last_link_loss_;
+  supervisor_.check();
+  return supervisor_.lastLoss();
 }
 
 void JointTopicsBackend::diagnostics(std::vector<DiagnosticValue>& values) const

@@ -45,7 +45,7 @@ public:
     std::promise<HttpReply> done;
     boost::asio::post(context_, [&] {
       HttpRequest request{ path, body, body.empty() ? "" : "application/soap+xml; charset=utf-8" };
-      done.set_value(dynamic_cast<HttpLink&>(*link_).perform(request));
+      done.set_value(link_->http()->request(request));
     });
     return done.get_future().get();
   }
@@ -59,9 +59,13 @@ public:
     std::lock_guard<std::mutex> lock(mutex_);
     return losses_;
   }
+  Link& link()
+  {
+    return *link_;
+  }
   const HttpCounters& counters() const
   {
-    return dynamic_cast<const HttpLink&>(*link_).httpCounters();
+    return link_->http()->httpCounters();
   }
 
 private:
@@ -213,6 +217,40 @@ TEST(HttpLink, ACameraThatIsNotThereIsNamed)
             0u)
       << client.losses()[0];
   EXPECT_EQ(client.counters().transport_errors, 1u);
+  EXPECT_FALSE(client.link().refusedForGood()) << "a camera that is away may come back";
+}
+
+/// Listens to nothing: a link that is never opened.
+class Deaf : public Link::Listener
+{
+  void onLinkUp() override
+  {
+  }
+  void onLinkBytes(const std::uint8_t*, std::size_t) override
+  {
+  }
+  void onLinkDown(const std::string&) override
+  {
+  }
+};
+
+TEST(HttpLink, CarriesRequestsNotBytesAndAUdpLinkTheOpposite)
+{
+  boost::asio::io_context context;
+  Deaf deaf;
+  LinkConfig http;
+  http.kind = LinkKind::HTTP;
+  http.port = 80;
+  const std::unique_ptr<Link> http_link = Link::create(context, http, deaf);
+  EXPECT_EQ(http_link->bytes(), nullptr);
+  EXPECT_NE(http_link->http(), nullptr);
+  LinkConfig udp;
+  udp.kind = LinkKind::UDP;
+  udp.port = 9;
+  const std::unique_ptr<Link> udp_link = Link::create(context, udp, deaf);
+  EXPECT_NE(udp_link->bytes(), nullptr);
+  EXPECT_EQ(udp_link->http(), nullptr);
+  EXPECT_FALSE(udp_link->refusedForGood());
 }
 
 }  // namespace

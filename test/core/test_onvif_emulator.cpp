@@ -78,7 +78,7 @@ public:
     std::promise<HttpReply> done;
     boost::asio::post(context_, [&] {
       HttpRequest request{ path, xml, SOAP_CONTENT_TYPE };
-      done.set_value(dynamic_cast<HttpLink&>(*link_).perform(request));
+      done.set_value(link_->http()->request(request));
     });
     const HttpReply reply = done.get_future().get();
     EXPECT_TRUE(reply.delivered);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ptz_action_server/core/backend.h"
+#include "ptz_action_server/core/device/link_supervisor.h"
 #include "ptz_action_server/core/sim_device_model.h"
 #include "ptz_action_server/core/timer_thread.h"
 
@@ -57,6 +58,8 @@ private:
   void planChanged();
   /// The event deadline's work: calls the listener if the event is still due.
   void reportEvent();
+  /// The device answers (again): the link is up. Call with mutex_ held (or from the constructor).
+  void answers();
 
   SampleListener listener_;  ///< set before start()
   std::shared_ptr<TimerThread> timer_;
@@ -68,7 +71,7 @@ private:
   mutable SimDeviceModel model_;  ///< mutable: sampling applies commands whose lag has passed
   bool dropout_ = false;
   TimePoint next_event_ = TimePoint::max();  ///< the model's next event, as last planned
-  std::uint64_t link_losses_ = 0;            ///< dropouts so far
+  LinkSupervisor supervisor_;                ///< a dropout is a loss; no deadline (the model never falls silent)
   PtzSample frozen_sample_;                  ///< what the device last said before it dropped out
   std::uint64_t commands_received_ = 0;
   std::uint64_t commands_lost_ = 0;

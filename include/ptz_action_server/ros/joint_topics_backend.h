@@ -9,7 +9,6 @@
 
 #include <array>
 #include <atomic>
-#include <condition_variable>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -22,6 +21,7 @@
 #include <sensor_msgs/JointState.h>
 
 #include "ptz_action_server/core/backend.h"
+#include "ptz_action_server/core/device/link_supervisor.h"
 #include "ptz_action_server/core/motion_estimator.h"
 #include "ptz_action_server/core/sim_device_model.h"
 
@@ -56,7 +56,8 @@ struct JointTopicsConfig
  *
  * The state is the latest JointState that names both joints; velocity and "settled" are estimated from the
  * positions (the setpoint still moving also counts as moving). The link is up while such states come within
- * state_timeout; after a loss the first state holds the joints where they are.
+ * state_timeout (LinkSupervisor, as for every device backend); after a loss the first state holds the joints where
+ * they are.
  *
  * Threads: the backend's own thread serves its callback queue (joint states, and the commands, which the PtzBackend
  * calls post there) and publishes the setpoints; sample() and diagnostics() read the snapshot under the mutex.
@@ -102,16 +103,12 @@ private:
   void onJointState(const sensor_msgs::JointState::ConstPtr& message);
   /// Takes a joint state's pan and tilt into the snapshot (and brings the link up).
   void recordJointState(const std::array<double, 2>& positions);
-  /// Declares the link lost once states stop; call with mutex_ held.
-  void superviseLink(TimePoint now);
   /// A setpoint model resting at the measured position; call with mutex_ held.
   SimDeviceModel restingAtMeasured(TimePoint now) const;
   /// Publishes the setpoint if due (or \p now_anyway); returns the seconds until the next one is due.
   double publishSetpoints(TimePoint now, bool now_anyway);
   /// "joint states naming <pan> and <tilt> on <topic>"
   std::string stateSource() const;
-  /// Why the link is lost after a silence.
-  std::string silenceReason() const;
 
   const JointTopicsConfig config_;
   const std::shared_ptr<const Clock> clock_;
@@ -124,17 +121,13 @@ private:
   SampleListener listener_;  ///< set before start(); called on thread_
 
   mutable std::mutex mutex_;  ///< guards everything below
-  std::condition_variable first_state_;
   SimDeviceModel setpoint_;
   bool setpoint_moving_ = false;
   TimePoint next_setpoint_at_{};
   MotionEstimator estimator_;
   AxisValues measured_{ { 0.0, 0.0, 1.0 } };
-  bool have_state_ = false;
-  bool link_up_ = false;
-  TimePoint last_state_at_{};
-  std::uint64_t link_losses_ = 0;
-  std::string last_link_loss_;
+  /// The state deadline, losses and the start-up wait. Mutable: sample() counts a silence the thread missed.
+  mutable LinkSupervisor supervisor_;
   std::uint64_t states_received_ = 0;
   std::uint64_t states_without_joints_ = 0;
   std::uint64_t setpoints_published_ = 0;

@@ -165,7 +165,7 @@ AxisZoomSource AxisProtocol::zoomSource() const
 bool AxisProtocol::exchange(const std::string& path, const std::string& what, std::string& body, std::string& problem)
 {
   request_.path = path;
-  const HttpReply& answer = http_.perform(request_);
+  const HttpReply& answer = http_.request(request_);
   problem.clear();
   if (!answer.delivered)
   {
@@ -178,11 +178,12 @@ bool AxisProtocol::exchange(const std::string& path, const std::string& what, st
       body = answer.body;
       return true;
     case 401:
-      problem = "HTTP 401 Unauthorized: the camera refused the credentials of user '" + http_.config().http.username +
-                "' for " + what;
+      problem = "HTTP 401 Unauthorized: the camera refused the credentials of user '" +
+                session_.linkConfig().http.username + "' for " + what;
       break;
     case 403:
-      problem = "HTTP 403 Forbidden: user '" + http_.config().http.username + "' may not control PTZ (" + what + ")";
+      problem =
+          "HTTP 403 Forbidden: user '" + session_.linkConfig().http.username + "' may not control PTZ (" + what + ")";
       break;
     case 404:
       problem = "HTTP 404 Not Found: " + path.substr(0, path.find('?')) + " (no VAPIX PTZ at this address?)";
@@ -276,7 +277,7 @@ bool AxisProtocol::findZoomTable(const vapix::Limits& limits)
         return false;
       }
     }
-    else if (!http_.isOpen())
+    else if (!session_.connected())
     {
       return false;
     }
@@ -304,7 +305,7 @@ bool AxisProtocol::findZoomTable(const vapix::Limits& limits)
           model = product.full_name.empty() ? "AXIS " + product.number : product.full_name;
         }
       }
-      else if (!http_.isOpen())
+      else if (!session_.connected())
       {
         return false;
       }
@@ -368,7 +369,7 @@ void AxisProtocol::onConnected()
   {
     commands = vapix::readCommandList(body_);
   }
-  else if (!http_.isOpen())
+  else if (!session_.connected())
   {
     return;
   }
@@ -477,7 +478,7 @@ void AxisProtocol::stop()
 void AxisProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   values.emplace_back("camera", std::to_string(settings_.camera));
-  values.emplace_back("user", http_.config().http.username);  // never the password
+  values.emplace_back("user", session_.linkConfig().http.username);  // never the password
   {
     std::lock_guard<std::mutex> lock(facts_mutex_);
     values.emplace_back("zoom X-factor", zoom_text_.empty() ? "not asked yet" : zoom_text_);

@@ -7,6 +7,7 @@
 #include <boost/asio/post.hpp>
 
 #include "ptz_action_server/core/device/device_protocol.h"
+#include "ptz_action_server/core/transport/http_link.h"
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
 
@@ -21,6 +22,7 @@ DeviceSession::DeviceSession(const LinkConfig& link, const DeviceSessionConfig& 
   , link_(Link::create(io_.context(), link, *this))
   , tick_timer_(io_.context())
   , grace_timer_(io_.context())
+  , supervisor_(config.state_timeout, clock_)
   , motion_(config.settle_window)
 {
   const std::string link_warning = HttpLink::configWarning(link);  // TLS without verification, once
@@ -35,9 +37,9 @@ DeviceSession::~DeviceSession()
   stop();
 }
 
-HttpLink& DeviceSession::http()
+HttpChannel& DeviceSession::http()
 {
-  auto* http = dynamic_cast<HttpLink*>(link_.get());
+  HttpChannel* http = link_->http();
   if (http == nullptr)
   {
     throw std::logic_error(protocol_->name() + " needs an HTTP link, not " + link_->config().describe());
@@ -45,9 +47,20 @@ HttpLink& DeviceSession::http()
   return *http;
 }
 
+ByteLink& DeviceSession::bytes()
+{
+  ByteLink* bytes = link_->bytes();
+  if (bytes == nullptr)
+  {
+    throw std::logic_error(protocol_->name() + " writes bytes to " + link_->config().describe() +
+                           ", which carries none");
+  }
+  return *bytes;
+}
+
 const HttpCounters* DeviceSession::httpCounters() const
 {
-  const auto* http = dynamic_cast<const HttpLink*>(link_.get());
+  const HttpChannel* http = link_->http();
   return http == nullptr ? nullptr : &http->httpCounters();
 }
 
@@ -56,6 +69,7 @@ void DeviceSession::attach(DeviceProtocol& protocol)
   protocol_ = &protocol;
   std::lock_guard<std::mutex> lock(mutex_);
   capabilities_ = protocol.capabilities();
+  supervisor_.name("state from " + protocol.deviceName(), "states from " + protocol.deviceName());
 }
 
 void DeviceSession::start()
@@ -73,14 +87,12 @@ void DeviceSession::start()
     });
   }
   std::unique_lock<std::mutex> lock(mutex_);
-  const bool settled = startup_changed_.wait_for(lock, toDuration(config_.startup_timeout),
-                                                 [this] { return ever_up_ || !startup_problem_.empty(); });
-  if (settled && startup_problem_.empty())
+  if (supervisor_.waitForStartup(lock, config_.startup_timeout))
   {
     return;
   }
-  const std::string problem = startup_problem_;
-  const std::string impossible = impossible_state_;
+  const std::string problem = supervisor_.startupProblem();
+  const std::string impossible = supervisor_.impossibleReason();
   lock.unlock();
   const std::string device = protocol_->deviceName() + " on " + link_->config().describe();
   const std::string link_error = link_->lastError();
@@ -187,14 +199,14 @@ PtzSample DeviceSession::sample() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
   const TimePoint now = clock_->now();
-  checkLinkLocked(now);
+  checkLinkLocked();
   PtzSample sample;
   sample.stamp = now;
   sample.position = last_position_;
   motion_.fill(sample);
-  sample.link_up = linkUpLocked(now);
+  sample.link_up = supervisor_.up();
   sample.fault_count = fault_count_;
-  sample.link_losses = counters_.link_losses;
+  sample.link_losses = supervisor_.losses();
   return sample;
 }
 
@@ -245,15 +257,15 @@ void DeviceSession::warn(const std::string& text)
 std::string DeviceSession::lastLinkLoss() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  checkLinkLocked(clock_->now());
-  return last_link_loss_;
+  checkLinkLocked();
+  return supervisor_.lastLoss();
 }
 
 void DeviceSession::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   link_->diagnostics(values);
   addCounts(values, { { "state reports", counters_.state_reports },
-                      { "link losses", counters_.link_losses },
+                      { "link losses", supervisor_.losses() },
                       { "recoveries (device held after a loss)", counters_.recoveries },
                       { "faults of replaced commands (ignored)", counters_.stale_faults },
                       { "impossible states dropped", counters_.impossible_states },
@@ -272,19 +284,16 @@ void DeviceSession::reportState(const AxisValues& position)
   {
     std::lock_guard<std::mutex> lock(mutex_);
     const TimePoint now = clock_->now();
-    checkLinkLocked(now);  // a report after a silence ends that silence as a loss first
+    checkLinkLocked();  // a report after a silence ends that silence as a loss first
     std::string impossible = plausibility_.judge(position, now, capabilities_);
     if (!impossible.empty())
     {
       ++counters_.impossible_states;
-      impossible_state_ = std::move(impossible);
+      supervisor_.impossibleReported(impossible);
       return;
     }
     ++counters_.state_reports;
-    impossible_state_.clear();
-    last_state_at_ = now;
-    last_position_at_ = now;
-    has_state_ = true;
+    supervisor_.stateReported();
     last_position_ = position;
     motion_.add(now, position);
   }
@@ -299,10 +308,8 @@ void DeviceSession::reportAlive()
 {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    const TimePoint now = clock_->now();
-    checkLinkLocked(now);
-    last_state_at_ = now;
-    has_state_ = true;
+    checkLinkLocked();
+    supervisor_.aliveReported();
   }
   refreshLink();
 }
@@ -323,7 +330,7 @@ void DeviceSession::ready()
 {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    ready_ = true;
+    supervisor_.ready();
   }
   refreshLink();
 }
@@ -331,20 +338,16 @@ void DeviceSession::ready()
 void DeviceSession::failStartup(const std::string& reason)
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  startup_problem_ = reason;
-  startup_changed_.notify_all();
+  supervisor_.failStartup(reason);
 }
 
 void DeviceSession::onLinkUp()
 {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    connected_ = true;
-    ready_ = false;
-    has_state_ = false;
+    supervisor_.connected();
     motion_.clear();  // old positions say nothing about the device behind a new connection
     plausibility_.forget();
-    impossible_state_.clear();
   }
   protocol_->onConnected();
 }
@@ -356,25 +359,17 @@ void DeviceSession::onLinkBytes(const std::uint8_t* data, std::size_t size)
 
 void DeviceSession::onLinkDown(const std::string& reason)
 {
-  // A certificate refused before the device was ever up is refused again on every retry: start-up ends now, with
+  // A loss that repeats on every retry (a refused certificate) before the device was ever up ends start-up now, with
   // that reason, instead of at startup_timeout.
-  const auto* http = dynamic_cast<const HttpLink*>(link_.get());
-  const bool certificate_refused = http != nullptr && http->certificateRefused();
+  const bool refused_for_good = link_->refusedForGood();
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (link_was_up_)
-    {
-      recordLossLocked(reason);
-    }
-    connected_ = false;
-    ready_ = false;
-    has_state_ = false;
-    if (certificate_refused && !ever_up_ && startup_problem_.empty())
+    supervisor_.disconnected(reason);
+    if (refused_for_good && !supervisor_.everUp() && supervisor_.startupProblem().empty())
     {
       // "https://host:port: GET ...: TLS refused: ..." without the address start() names already.
       const std::string address = link_->config().describe() + ": ";
-      startup_problem_ = reason.rfind(address, 0) == 0 ? reason.substr(address.size()) : reason;
-      startup_changed_.notify_all();
+      supervisor_.failStartup(reason.rfind(address, 0) == 0 ? reason.substr(address.size()) : reason);
     }
   }
   protocol_->onDisconnected();
@@ -391,7 +386,7 @@ void DeviceSession::tick()
   const auto started = std::chrono::steady_clock::now();
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    checkLinkLocked(clock_->now());
+    checkLinkLocked();
   }
   if (link_->isOpen())
   {
@@ -406,66 +401,28 @@ void DeviceSession::tick()
   });
 }
 
-bool DeviceSession::linkUpLocked(TimePoint now) const
+void DeviceSession::checkLinkLocked() const
 {
-  return connected_ && ready_ && has_state_ && secondsBetween(last_state_at_, now) <= config_.state_timeout &&
-         !onlyImpossibleLocked(now);
-}
-
-bool DeviceSession::onlyImpossibleLocked(TimePoint now) const
-{
-  return !impossible_state_.empty() && secondsBetween(last_position_at_, now) > config_.state_timeout;
-}
-
-void DeviceSession::checkLinkLocked(TimePoint now) const
-{
-  if (!link_was_up_ || linkUpLocked(now))
+  if (supervisor_.check() == LinkSupervisor::Loss::IMPOSSIBLE)
   {
-    return;
-  }
-  if (onlyImpossibleLocked(now))
-  {
-    recordLossLocked(formatText("only impossible states from %s for %.2f s (%s)", protocol_->deviceName().c_str(),
-                                config_.state_timeout, impossible_state_.c_str()));
     // A device that goes on reporting the same new place is believed from its next report on (it may have been
     // moved by hand, or re-homed): the loss has ended the goal that relied on the old one.
     plausibility_.forget();
   }
-  else
-  {
-    recordLossLocked(formatText("no state from %s for %.2f s", protocol_->deviceName().c_str(), config_.state_timeout));
-  }
-}
-
-void DeviceSession::recordLossLocked(const std::string& reason) const
-{
-  link_was_up_ = false;
-  recovery_owed_ = true;
-  ++counters_.link_losses;
-  last_link_loss_ = reason;
 }
 
 void DeviceSession::refreshLink()
 {
-  bool recover = false;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (link_was_up_ || !linkUpLocked(clock_->now()))
+    if (supervisor_.refresh() != LinkSupervisor::Rise::RECOVERED)
     {
       return;
     }
-    link_was_up_ = true;
-    ever_up_ = true;
-    recover = recovery_owed_;
-    recovery_owed_ = false;
-    startup_changed_.notify_all();
   }
-  if (recover)
-  {
-    // Same handler as the report that brought the link up: no command the node sends on seeing it up can come first.
-    ++counters_.recoveries;
-    protocol_->hold();
-  }
+  // Same handler as the report that brought the link up: no command the node sends on seeing it up can come first.
+  ++counters_.recoveries;
+  protocol_->hold();
 }
 
 }  // namespace ptz_action_server

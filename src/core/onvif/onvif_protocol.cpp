@@ -177,7 +177,7 @@ bool OnvifProtocol::call(const std::string& path, const std::string& body, bool 
   {
     request_.body = onvif::envelope(body);
   }
-  const HttpReply& reply = http_.perform(request_);
+  const HttpReply& reply = http_.request(request_);
   if (!reply.delivered)
   {
     return false;
@@ -193,8 +193,8 @@ bool OnvifProtocol::call(const std::string& path, const std::string& body, bool 
   }
   if (reply.status == 401)
   {
-    problem = "HTTP 401 Unauthorized: the camera refused the credentials of user '" + http_.config().http.username +
-              "' for " + operation;
+    problem = "HTTP 401 Unauthorized: the camera refused the credentials of user '" +
+              session_.linkConfig().http.username + "' for " + operation;
   }
   else if (reply.status == 403 || reply.status == 404 || reply.status >= 400 || reply.status < 200)
   {

@@ -295,17 +295,7 @@ void HttpLink::closeHandle()
   curl_easy_setopt(curl_, CURLOPT_FRESH_CONNECT, 1L);
 }
 
-void HttpLink::startWrite(const std::vector<std::uint8_t>&)
-{
-  throw std::logic_error("bytes written to the HTTP link " + base_url_ + ": protocols call perform()");
-}
-
-std::string HttpLink::describe(const HttpRequest& request)
-{
-  return (request.body.empty() ? "GET " : "POST ") + request.path;
-}
-
-const HttpReply& HttpLink::perform(const HttpRequest& request)
+const HttpReply& HttpLink::request(const HttpRequest& request)
 {
   reply_.delivered = false;
   reply_.status = 0;

@@ -76,22 +76,22 @@ void Link::close()
   ++connection_;
   closeHandle();
   open_ = false;
-  write_queue_.clear();
+  dropQueued();
   runWhenWritten();
 }
 
-void Link::write(const std::string& bytes)
+void ByteLink::write(const std::string& bytes)
 {
   write(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
 }
 
-void Link::write(const std::uint8_t* data, std::size_t size)
+void ByteLink::write(const std::uint8_t* data, std::size_t size)
 {
   if (size == 0)
   {
     return;
   }
-  if (!open_)
+  if (!isOpen())
   {
     ++counters_.writes_dropped;
     return;
@@ -111,7 +111,7 @@ void Link::disconnect(const std::string& reason)
 void Link::whenWritten(std::function<void()> done)
 {
   when_written_.push_back(std::move(done));
-  if (write_queue_.empty())
+  if (!writesPending())
   {
     runWhenWritten();
   }
@@ -152,7 +152,7 @@ void Link::opened(bool proven)
   listener_.onLinkUp();
   if (open_ && connection == connection_)
   {
-    startRead();
+    afterOpened();
   }
 }
 
@@ -165,19 +165,19 @@ void Link::openFailed(const std::string& reason)
   scheduleReopen();
 }
 
-void Link::received(const std::uint8_t* data, std::size_t size)
+void ByteLink::received(const std::uint8_t* data, std::size_t size)
 {
   counters_.bytes_in += size;
-  const std::uint64_t connection = connection_;
-  listener_.onLinkBytes(data, size);
+  const std::uint64_t connection = this->connection();
+  listener().onLinkBytes(data, size);
   // The listener may have closed this connection (a protocol-level failure): then the next read belongs to the next.
-  if (open_ && connection == connection_)
+  if (isOpen() && connection == this->connection())
   {
     startRead();
   }
 }
 
-void Link::written(std::size_t size)
+void ByteLink::written(std::size_t size)
 {
   counters_.bytes_out += size;
   if (!write_queue_.empty())
@@ -203,7 +203,7 @@ void Link::lost(const std::string& reason)
   open_ = false;
   ++connection_;
   closeHandle();
-  write_queue_.clear();
+  dropQueued();
   ++counters_.disconnects;
   setLastError(reason);
   listener_.onLinkDown(reason);

@@ -76,11 +76,11 @@ private:
 
 /// The read and write loops of a byte-stream link (Boost.Asio serial_port or tcp::socket).
 template <class Stream>
-class StreamLink : public Link
+class StreamLink : public ByteLink
 {
 protected:
   StreamLink(boost::asio::io_context& context, const LinkConfig& config, Listener& listener)
-    : Link(context, config, listener), stream_(context)
+    : ByteLink(context, config, listener), stream_(context)
   {
   }
 

@@ -15,11 +15,11 @@ using boost::asio::ip::udp;
 /// Larger than any UDP payload (65507 bytes): a datagram is never cut.
 constexpr std::size_t MAX_DATAGRAM = 65536;
 
-class UdpLink : public Link
+class UdpLink : public ByteLink
 {
 public:
   UdpLink(boost::asio::io_context& context, const LinkConfig& config, Listener& listener)
-    : Link(context, config, listener), socket_(context), resolver_(context), buffer_(MAX_DATAGRAM)
+    : ByteLink(context, config, listener), socket_(context), resolver_(context), buffer_(MAX_DATAGRAM)
   {
   }
 

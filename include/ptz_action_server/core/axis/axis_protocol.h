@@ -140,7 +140,7 @@ private:
 
   const AxisSettings settings_;
   DeviceSession& session_;
-  HttpLink& http_;
+  HttpChannel& http_;
   AxisCounters counters_;
   vapix::ZoomTable configured_table_;  ///< from zoom_table or zoom_max_factor; empty: find out
 

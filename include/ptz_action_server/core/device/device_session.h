@@ -5,7 +5,6 @@
  */
 #pragma once
 
-#include <condition_variable>
 #include <functional>
 #include <future>
 #include <memory>
@@ -19,9 +18,10 @@
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/counter.h"
 #include "ptz_action_server/core/device/device_io_pool.h"
+#include "ptz_action_server/core/device/link_supervisor.h"
 #include "ptz_action_server/core/device/state_plausibility.h"
 #include "ptz_action_server/core/motion_estimator.h"
-#include "ptz_action_server/core/transport/http_link.h"
+#include "ptz_action_server/core/transport/http_channel.h"
 #include "ptz_action_server/core/transport/link.h"
 
 namespace ptz_action_server
@@ -42,7 +42,6 @@ struct DeviceSessionConfig
 struct DeviceSessionCounters
 {
   Counter state_reports;      ///< valid states the protocol reported
-  Counter link_losses;        ///< the link went down after being up (closed, vanished or silent past the deadline)
   Counter recoveries;         ///< the device answered again after a loss and was held where it was
   Counter stale_faults;       ///< refusals of a command the node had already replaced: counted, not reported
   Counter impossible_states;  ///< reports dropped as impossible (NaN, outside the limits, a jump): never believed
@@ -135,7 +134,7 @@ public:
   {
     return link_->config();
   }
-  /// The HTTP link's counters, or nullptr on another link.
+  /// The HTTP channel's counters, or nullptr on another link.
   const HttpCounters* httpCounters() const;
 
   // ---------------------------------------------------------------- for the protocol: I/O thread only
@@ -167,16 +166,18 @@ public:
   {
     return link_->carriesDatagrams();
   }
+  /// Bytes for the device (a link that carries bytes: serial, TCP, UDP). Throws std::logic_error over HTTP.
   void write(const std::uint8_t* data, std::size_t size)
   {
-    link_->write(data, size);
+    bytes().write(data, size);
   }
   void write(const std::string& bytes)
   {
-    link_->write(bytes);
+    this->bytes().write(bytes);
   }
-  /// The link as an HTTP link, for protocols over HTTP (LinkKind::HTTP). Throws std::logic_error on another link.
-  HttpLink& http();
+  /// The link's requests and answers, for protocols over HTTP (LinkKind::HTTP). Throws std::logic_error on another
+  /// link.
+  HttpChannel& http();
   /// Gives up on this connection (it reopens after the link's backoff).
   void disconnect(const std::string& reason)
   {
@@ -215,19 +216,16 @@ public:
   void warn(const std::string& text);
 
 private:
+  ByteLink& bytes();
   void onLinkUp() override;
   void onLinkBytes(const std::uint8_t* data, std::size_t size) override;
   void onLinkDown(const std::string& reason) override;
 
   void tick();
   /// Counts a loss if the link was up and is not any more (call with mutex_ held).
-  void checkLinkLocked(TimePoint now) const;
-  /// Nothing but impossible states came for state_timeout (call with mutex_ held).
-  bool onlyImpossibleLocked(TimePoint now) const;
-  bool linkUpLocked(TimePoint now) const;
+  void checkLinkLocked() const;
   /// Brings the link up if it now is, and runs the recovery once after a loss (I/O thread, mutex_ not held).
   void refreshLink();
-  void recordLossLocked(const std::string& reason) const;
   /// Begins the goodbye (I/O thread): the protocol's shutdown(), then finishStop() when written or at the grace time.
   void beginStop(std::shared_ptr<std::promise<void>> stopped);
   /// Closes for good (I/O thread, once): timers, link, protocol; then fulfils the promise from a fence behind them.
@@ -255,20 +253,9 @@ private:
 
   // Shared; guarded by mutex_. Mutable: sample() notices a silent link and counts the loss itself.
   mutable std::mutex mutex_;
-  std::condition_variable startup_changed_;
   Capabilities capabilities_;
-  bool connected_ = false;
-  bool ready_ = false;                      ///< the protocol's set-up is done on this connection
-  TimePoint last_state_at_{};               ///< the last valid report on this connection
-  TimePoint last_position_at_{};            ///< the last possible state on this connection
-  mutable StatePlausibility plausibility_;  ///< mutable: a loss noticed in sample() makes it forget its reference
-  std::string impossible_state_;  ///< why the reports since the last possible state were dropped ("" if none was)
-  bool has_state_ = false;        ///< a valid report arrived on this connection
-  mutable bool link_was_up_ = false;
-  bool ever_up_ = false;
-  mutable bool recovery_owed_ = false;  ///< a loss happened: hold the device when it answers again
-  mutable std::string last_link_loss_;
-  std::string startup_problem_;
+  mutable LinkSupervisor supervisor_;        ///< up or down, losses, start-up; mutable: sample() counts a silence
+  mutable StatePlausibility plausibility_;   ///< mutable: a loss noticed in sample() makes it forget its reference
   std::vector<std::string> warnings_given_;  ///< every text warn() was given, once
   std::size_t warnings_taken_ = 0;           ///< how many of them takeWarnings() has handed out
   MotionEstimator motion_;

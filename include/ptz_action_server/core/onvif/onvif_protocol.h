@@ -171,7 +171,7 @@ private:
 
   const OnvifSettings settings_;
   DeviceSession& session_;
-  HttpLink& http_;
+  HttpChannel& http_;
   OnvifCounters counters_;
   mutable std::mutex report_mutex_;
   Report report_;

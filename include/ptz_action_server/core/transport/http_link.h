@@ -1,7 +1,7 @@
 /**
  * \file
- * \brief HTTP under the device layer: a Link (kind HTTP) whose traffic is requests and answers, made with libcurl on
- * the session's I/O thread over one keep-alive connection.
+ * \brief HTTP under the device layer: a Link (kind HTTP) whose traffic is requests and answers (HttpChannel), made
+ * with libcurl on the session's I/O thread over one keep-alive connection.
  *
  * Decision (see the README, "HTTP on the device layer"): HTTP is a link like the others, so reconnection with backoff,
  * the loss reasons, the counters and the session's supervision stay in one place. A request runs to completion on the
@@ -13,42 +13,13 @@
 
 #include <string>
 
-#include "ptz_action_server/core/counter.h"
+#include "ptz_action_server/core/transport/http_channel.h"
 #include "ptz_action_server/core/transport/link.h"
 
 struct curl_slist;  // libcurl's, kept out of this header
 
 namespace ptz_action_server
 {
-/// One request. GET when body is empty, POST otherwise.
-struct HttpRequest
-{
-  std::string path;          ///< from the first '/', with the query: "/axis-cgi/com/ptz.cgi?query=position"
-  std::string body;          ///< POST body
-  std::string content_type;  ///< POST content type
-};
-
-/// What came back.
-struct HttpReply
-{
-  bool delivered = false;  ///< an HTTP answer arrived; false: the link was lost (the reason is its lastError())
-  long status = 0;         ///< HTTP status code
-  std::string body;
-};
-
-/// What an HTTP link counts beyond LinkCounters.
-struct HttpCounters
-{
-  Counter requests;           ///< requests made
-  Counter connections;        ///< TCP (or TLS) connections curl had to open: 1 while the camera keeps its connection
-  Counter error_statuses;     ///< answers with a status >= 400
-  Counter timeouts;           ///< requests that hit request_timeout
-  Counter transport_errors;   ///< refused, reset, unresolvable, TLS failures
-  Counter tls_refusals;       ///< TLS connections refused: the camera's certificate was untrusted or not the pinned one
-  Counter oversized_answers;  ///< answers past HttpLink::MAX_ANSWER (a body or envelope without end): dropped
-  Counter dropped_bytes;      ///< bytes of those answers received before they were cut
-};
-
 /// "AB:CD:..." (any case, with or without colons, spaces allowed around) as 64 lower-case hex digits; "" if \p text is
 /// not a SHA-256 fingerprint.
 std::string parseCertificateFingerprint(const std::string& text);
@@ -67,12 +38,14 @@ struct CertificatePin
  *
  * "Open" means ready to send: the connection itself is curl's to make on the first request and to keep. A request
  * that gets no answer (refused, reset, timed out) loses the link with its reason, and it reopens after the backoff;
- * the backoff starts afresh only once an answer came (provenAlive()). Bytes cannot be written to it.
+ * the backoff starts afresh only once an answer came (provenAlive()). It carries no bytes (bytes() is nullptr):
+ * protocols reach it as an HttpChannel (http()). A refused certificate is a loss for good (refusedForGood()): start-up
+ * ends.
  *
- * perform() blocks its thread for up to request_timeout, so a session over HTTP does not share the pool's I/O threads
+ * request() blocks its thread for up to request_timeout, so a session over HTTP does not share the pool's I/O threads
  * (DeviceIoPool): it gets a thread of its own, until HTTP is asynchronous.
  */
-class HttpLink : public Link
+class HttpLink : public Link, public HttpChannel
 {
 public:
   /// Bytes an answer's body (a VAPIX reply, a SOAP envelope) may have. Past it the answer is cut and dropped, counted
@@ -84,19 +57,20 @@ public:
 
   /// Makes one request (I/O thread, link open). Blocks for at most request_timeout. On a failure without an answer
   /// the link is lost (the listener hears onLinkDown() before this returns) and the reply says !delivered.
-  const HttpReply& perform(const HttpRequest& request);
+  const HttpReply& request(const HttpRequest& request) override;
 
-  /// "GET /axis-cgi/com/ptz.cgi?query=position", for messages.
-  static std::string describe(const HttpRequest& request);
-
-  const HttpCounters& httpCounters() const
+  const HttpCounters& httpCounters() const override
   {
     return http_counters_;
+  }
+  HttpChannel* http() override
+  {
+    return this;
   }
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
   /// The last request failed because its certificate was refused (untrusted, or not the pinned one): retrying the
   /// same camera will not change that. I/O thread.
-  bool certificateRefused() const
+  bool refusedForGood() const override
   {
     return certificate_refused_;
   }
@@ -107,11 +81,6 @@ public:
 protected:
   void startOpen() override;
   void closeHandle() override;
-  void startRead() override
-  {
-  }
-  /// Nothing writes bytes to an HTTP link (protocols call perform()).
-  void startWrite(const std::vector<std::uint8_t>& bytes) override;
 
 private:
   void configureHandle();

@@ -4,7 +4,9 @@
  * interface with reconnection and backoff, a write queue and counters.
  *
  * The model is ur_client_library's comm layer and industrial_core's simple_message connections: the protocol never
- * sees a socket, only bytes in, bytes out, "up" and "down".
+ * sees a socket, only bytes in, bytes out, "up" and "down". A Link is the connection (open, reopen with backoff,
+ * losses and their reasons); a ByteLink carries bytes over it (serial, TCP, UDP); the HTTP link carries requests and
+ * answers instead (HttpChannel, http_channel.h).
  */
 #pragma once
 
@@ -24,6 +26,9 @@
 
 namespace ptz_action_server
 {
+class ByteLink;
+class HttpChannel;
+
 enum class LinkKind
 {
   SERIAL,  ///< a serial port (8N1), a byte stream
@@ -99,8 +104,8 @@ struct LinkCounters
  * \brief A connection to one device, kept open with backoff, driven by its owner's io_context.
  *
  * Everything but the accessors marked "any thread" runs on the I/O thread that runs the io_context, and so do the
- * Listener's callbacks. Writes are queued and go out in order; while the link is down they are dropped (and
- * counted), because commands meant for a device that was not there must not reach it late.
+ * Listener's callbacks. What the connection carries is its kind's: bytes (bytes(), a ByteLink) or HTTP requests
+ * (http(), an HttpChannel).
  */
 class Link
 {
@@ -129,13 +134,27 @@ public:
   void open();
   /// Closes for good: no reopen, no callback.
   void close();
-  /// Queues bytes for the device; dropped (and counted) while the link is down.
-  void write(const std::uint8_t* data, std::size_t size);
-  void write(const std::string& bytes);
   /// Closes because the protocol gave up on this connection (it reopens after the backoff).
   void disconnect(const std::string& reason);
   /// Runs \p done once every queued write has gone out (at once if none is queued, or if the link is down).
   void whenWritten(std::function<void()> done);
+
+  /// The link as a carrier of bytes (serial, TCP, UDP), or nullptr (HTTP).
+  virtual ByteLink* bytes()
+  {
+    return nullptr;
+  }
+  /// The link as a carrier of HTTP requests, or nullptr.
+  virtual HttpChannel* http()
+  {
+    return nullptr;
+  }
+  /// The last loss will repeat on every reopen (a certificate refused): waiting for the device is pointless. I/O
+  /// thread.
+  virtual bool refusedForGood() const
+  {
+    return false;
+  }
 
   bool isOpen() const
   {
@@ -168,10 +187,19 @@ protected:
   virtual void startOpen() = 0;
   /// Cancels whatever is under way and closes the handle. Never calls back.
   virtual void closeHandle() = 0;
-  /// Starts one read; its completion calls received() or lost().
-  virtual void startRead() = 0;
-  /// Starts writing \p bytes (the queue's front, which stays alive until written); completion calls written().
-  virtual void startWrite(const std::vector<std::uint8_t>& bytes) = 0;
+  /// The link opened, the listener has heard of it, and it is still open on the same connection: start reading.
+  virtual void afterOpened()
+  {
+  }
+  /// The link closed: drop what was queued for it.
+  virtual void dropQueued()
+  {
+  }
+  /// Something is queued for the device: whenWritten() waits for runWhenWritten().
+  virtual bool writesPending() const
+  {
+    return false;
+  }
 
   /// The handle is open. \p proven: it has carried traffic, so the reopen backoff starts afresh (an HTTP link opens
   /// before its first request and proves itself with a reply: see provenAlive()).
@@ -182,10 +210,14 @@ protected:
     backoff_ = 0.0;
   }
   void openFailed(const std::string& reason);
-  void received(const std::uint8_t* data, std::size_t size);
-  void written(std::size_t size);
   /// The open link broke: closes it, tells the listener and schedules a reopen.
   void lost(const std::string& reason);
+  /// Runs the whenWritten() callbacks (everything queued has gone out, or was dropped).
+  void runWhenWritten();
+  Listener& listener()
+  {
+    return listener_;
+  }
 
   /// Identifies the current connection: completions of an earlier one compare unequal and are ignored.
   std::uint64_t connection() const
@@ -200,7 +232,6 @@ protected:
 private:
   void scheduleReopen();
   void setLastError(const std::string& reason);
-  void runWhenWritten();
 
   Listener& listener_;
   boost::asio::steady_timer reopen_timer_;
@@ -208,11 +239,56 @@ private:
   bool closed_ = true;  ///< close() was called, or open() never was: no reopen
   std::uint64_t connection_ = 0;
   double backoff_ = 0.0;
-  std::deque<std::vector<std::uint8_t>> write_queue_;
   std::vector<std::function<void()>> when_written_;
 
   mutable std::mutex error_mutex_;  ///< guards last_error_, read from any thread
   std::string last_error_;
+};
+
+/**
+ * \brief A link that carries bytes: a serial port, a TCP connection, a UDP peer.
+ *
+ * Writes are queued and go out in order; while the link is down they are dropped (and counted), because commands
+ * meant for a device that was not there must not reach it late.
+ */
+class ByteLink : public Link
+{
+public:
+  /// Queues bytes for the device; dropped (and counted) while the link is down.
+  void write(const std::uint8_t* data, std::size_t size);
+  void write(const std::string& bytes);
+
+  ByteLink* bytes() override
+  {
+    return this;
+  }
+
+protected:
+  using Link::Link;
+
+  /// Starts one read; its completion calls received() or lost().
+  virtual void startRead() = 0;
+  /// Starts writing \p bytes (the queue's front, which stays alive until written); completion calls written().
+  virtual void startWrite(const std::vector<std::uint8_t>& bytes) = 0;
+
+  void received(const std::uint8_t* data, std::size_t size);
+  void written(std::size_t size);
+
+  void afterOpened() override
+  {
+    startRead();
+  }
+  void dropQueued() override
+  {
+    write_queue_.clear();
+  }
+  bool writesPending() const override
+  {
+    return !write_queue_.empty();
+  }
+
+private:
+  std::deque<std::vector<std::uint8_t>> write_queue_;
 };
 
 }  // namespace ptz_action_server
