@@ -11,6 +11,10 @@ ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 # Not "build/": rosrun skips executables below <package>/build/.
 BUILD_DIR=${PTZ_BUILD_DIR:-$ROOT/_build}
 JOBS=${PTZ_JOBS:-$(nproc)}
+# The scripts' build type: RelWithDebInfo with line tables only (-g1: a backtrace keeps functions, files and lines, not
+# variables), a fifth less compile time than its -g. A build of your own keeps CMake's RelWithDebInfo.
+PTZ_CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
+  -DCATKIN_ENABLE_TESTING=ON)
 
 # Everything the package needs to build, test and run, from Debian bookworm's own packages.
 PTZ_APT_PACKAGES=(
@@ -61,7 +65,7 @@ install_dependencies() {
 build_package() {
   log "building into ${BUILD_DIR}"
   mkdir -p "$BUILD_DIR"
-  cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCATKIN_ENABLE_TESTING=ON >"$BUILD_DIR/configure.log" 2>&1 ||
+  cmake -S "$ROOT" -B "$BUILD_DIR" "${PTZ_CMAKE_ARGS[@]}" >"$BUILD_DIR/configure.log" 2>&1 ||
     { cat "$BUILD_DIR/configure.log"; return 1; }
   cmake --build "$BUILD_DIR" -j "$JOBS"
   if [ "${1:-}" = "with-tests" ]; then
@@ -80,7 +84,7 @@ build_package() {
 build_targets() {
   log "building $* into ${BUILD_DIR}"
   mkdir -p "$BUILD_DIR"
-  cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCATKIN_ENABLE_TESTING=ON >"$BUILD_DIR/configure.log" 2>&1 ||
+  cmake -S "$ROOT" -B "$BUILD_DIR" "${PTZ_CMAKE_ARGS[@]}" >"$BUILD_DIR/configure.log" 2>&1 ||
     { cat "$BUILD_DIR/configure.log"; return 1; }
   cmake --build "$BUILD_DIR" -j "$JOBS" --target "$@"
   set +u

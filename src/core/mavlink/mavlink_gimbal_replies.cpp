@@ -20,7 +20,7 @@ bool finite(float value)
   return std::isfinite(value);
 }
 
-double wrapAngle(double angle)
+double wrapGimbalAngle(double angle)
 {
   return std::remainder(angle, 2.0 * M_PI);
 }
@@ -513,7 +513,7 @@ void MavlinkGimbalProtocol::handleAttitude(const Frame& frame, const GimbalDevic
     pan += earth ? -attitude.delta_yaw : attitude.delta_yaw;
   }
   ++counters_.attitudes;
-  session_.reportState(AxisValues{ { wrapAngle(pan), angles.tilt, 1.0 } });
+  session_.reportState(AxisValues{ { wrapGimbalAngle(pan), angles.tilt, 1.0 } });
 }
 
 }  // namespace ptz_action_server
