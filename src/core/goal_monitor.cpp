@@ -15,11 +15,6 @@ constexpr double MOVEMENT_SHARE_OF_TOLERANCE = 0.25;
 /// Acceleration assumed for the timeout estimate when a device does not state one.
 constexpr double UNKNOWN_ACCELERATION = 1e3;
 
-const char* unitOf(Axis axis)
-{
-  return axis == ZOOM ? "X" : "rad";
-}
-
 /// Expected duration of a position goal: the slowest axis' closed-form trapezoid, plus braking from its speed.
 double expectedDuration(const AxisValues& target, const PtzSample& start, const Capabilities& capabilities)
 {

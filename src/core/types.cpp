@@ -7,6 +7,11 @@
 
 namespace ptz_action_server
 {
+const char* unitOf(Axis axis)
+{
+  return axis == ZOOM ? "X" : "rad";
+}
+
 const char* axisName(Axis axis)
 {
   switch (axis)

@@ -28,6 +28,8 @@ constexpr std::array<Axis, AXIS_COUNT> ALL_AXES = { PAN, TILT, ZOOM };
 
 /// Lower-case axis name for messages ("pan", "tilt", "zoom").
 const char* axisName(Axis axis);
+/// The unit of an axis' position in messages: "rad" for pan and tilt, "X" (magnification) for zoom.
+const char* unitOf(Axis axis);
 
 /// One value per axis: pan and tilt in rad (or rad/s), zoom as X-factor (or X/s).
 using AxisValues = std::array<double, AXIS_COUNT>;

@@ -9,11 +9,6 @@ namespace ptz_action_server
 {
 namespace
 {
-const char* unitOf(Axis axis)
-{
-  return axis == ZOOM ? "X" : "rad";
-}
-
 /// \p to - \p from, the short way round on a range that covers a full turn.
 double distance(double from, double to, const AxisRange& range)
 {

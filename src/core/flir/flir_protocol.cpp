@@ -11,7 +11,7 @@ namespace
 {
 /// Longest exchange: a command like "PR " with its echo and a verbose reply ("* 185.1428 seconds arc per Pan
 /// position"), or "PP-12345 " and its answer.
-constexpr std::size_t EXCHANGE_BYTES = 64;
+constexpr std::size_t FLIR_EXCHANGE_BYTES = 64;
 /// Positions of a sane unit: beyond this a "limit" is a misread (a D46 has +-3090, resolutions of a few arc-seconds).
 constexpr double MAX_POSITIONS = 1e8;
 }  // namespace
@@ -19,7 +19,7 @@ constexpr double MAX_POSITIONS = 1e8;
 FlirProtocol::FlirProtocol(const FlirSettings& settings, DeviceSession& session)
   : settings_(settings)
   , session_(session)
-  , reply_timeout_(replyTimeout(session.linkConfig(), settings.reply_timeout, EXCHANGE_BYTES))
+  , reply_timeout_(replyTimeout(session.linkConfig(), settings.reply_timeout, FLIR_EXCHANGE_BYTES))
   , channel_(
         session.context(), session.clock(), [&session](const std::string& bytes) { session.write(bytes); },
         reply_timeout_, [this](const TransactionChannel::Request& lost) { onTimeout(lost); })

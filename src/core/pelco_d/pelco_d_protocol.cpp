@@ -9,7 +9,7 @@ namespace ptz_action_server
 namespace
 {
 /// A query and its reply: two frames.
-constexpr std::size_t EXCHANGE_BYTES = 2 * pelco::FRAME_SIZE;
+constexpr std::size_t PELCO_EXCHANGE_BYTES = 2 * pelco::FRAME_SIZE;
 
 /// A speed (rad/s, X/s) as a Pelco speed byte 1..0x3F, signed; 0 stays 0.
 int speedByte(double speed, double max_speed)
@@ -49,7 +49,7 @@ PelcoProtocol::PelcoProtocol(const PelcoSettings& settings, DeviceSession& sessi
   , session_(session)
   , channel_(
         session.context(), session.clock(), [&session](const std::string& bytes) { session.write(bytes); },
-        replyTimeout(session.linkConfig(), settings.reply_timeout, EXCHANGE_BYTES),
+        replyTimeout(session.linkConfig(), settings.reply_timeout, PELCO_EXCHANGE_BYTES),
         [this](const TransactionChannel::Request&) { parser_.reset(); })
   , parser_(settings.address, settings.general_reply)
 {

@@ -5,7 +5,7 @@ namespace ptz_action_server
 namespace
 {
 /// The longest exchange: an absolute pan-tilt command (15 bytes) and its ACK (3).
-constexpr std::size_t EXCHANGE_BYTES = 18;
+constexpr std::size_t VISCA_EXCHANGE_BYTES = 18;
 
 std::string bytesOf(const visca::Packet& packet)
 {
@@ -38,7 +38,7 @@ ViscaProtocol::ViscaProtocol(const ViscaSettings& settings, DeviceSession& sessi
   , session_(session)
   , channel_(
         session.context(), session.clock(), [this](const std::string& bytes) { write(bytes); },
-        replyTimeout(session.linkConfig(), settings.reply_timeout, EXCHANGE_BYTES),
+        replyTimeout(session.linkConfig(), settings.reply_timeout, VISCA_EXCHANGE_BYTES),
         [this](const TransactionChannel::Request& lost) {
           splitter_.reset();
           if (lost.tag == ADDRESS_SET || lost.tag == IF_CLEAR || lost.tag == SEQUENCE_RESET)
