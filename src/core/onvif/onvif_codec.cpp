@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <ctime>
 
-#include "ptz_action_server/core/axis/vapix_codec.h"
 #include "ptz_action_server/core/http/crypto.h"
 #include "ptz_action_server/core/text.h"
 
@@ -18,7 +17,7 @@ namespace
 {
 bool number(const std::string& text, double& value)
 {
-  return vapix::parseNumber(text, value);
+  return parseNumber(text, value);
 }
 
 bool number(const char* text, double& value)
