@@ -123,6 +123,43 @@ void DigiViewEmulator::dropConnections()
   });
 }
 
+bool DigiViewEmulator::faultSilence(bool on)
+{
+  setSilent(on);
+  return true;
+}
+
+bool DigiViewEmulator::faultDrop(bool on)
+{
+  if (on)
+  {
+    dropConnections();
+  }
+  return true;
+}
+
+bool DigiViewEmulator::faultEndless(bool on)
+{
+  setEndless(on);
+  return true;
+}
+
+bool DigiViewEmulator::faultFlood(bool on)
+{
+  setFlood(on ? FAULT_FLOOD_COPIES : 1);
+  return true;
+}
+
+bool DigiViewEmulator::faultModel(EmulatorFault fault, const SimFaults& faults)
+{
+  if (fault != EmulatorFault::IMPOSSIBLE)
+  {
+    return false;
+  }
+  setFaults(faults);
+  return true;
+}
+
 std::size_t DigiViewEmulator::connections() const
 {
   std::lock_guard<std::mutex> lock(mutex_);

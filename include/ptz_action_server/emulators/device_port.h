@@ -81,6 +81,17 @@ public:
   {
     send(reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
   }
+  /// udp: who sent the datagram on_bytes is handling, as "host:port" (I/O thread, inside on_bytes); "" elsewhere.
+  virtual std::string sender() const
+  {
+    return std::string();
+  }
+  /// udp: one datagram to \p peer ("host:port", as sender() gives it) rather than to the last sender; elsewhere the
+  /// same as send(). Any thread.
+  virtual void sendTo(const std::string& /*peer*/, const std::uint8_t* data, std::size_t size)
+  {
+    send(data, size);
+  }
   /// The client sees its device vanish.
   virtual void unplug() = 0;
   /// The device is back (a new pseudo-terminal under the same link, or listening again on the same port).

@@ -20,6 +20,7 @@
 #include <boost/asio/ip/udp.hpp>
 
 #include "ptz_action_server/core/transport/link.h"
+#include "ptz_action_server/emulators/emulator_faults.h"
 #include "ptz_action_server/emulators/received_log.h"
 #include "ptz_action_server/core/digiview/digiview_codec.h"
 #include "ptz_action_server/core/sim_device_model.h"
@@ -65,11 +66,11 @@ struct ReceivedMessage
  * range, UNKNOWN for types it does not know or model, FORBIDDEN for SETs while told to refuse, and QUIT closes the
  * connection. Requests about an unknown stream or camera are ignored, as the seed says. Owns its I/O thread.
  */
-class DigiViewEmulator
+class DigiViewEmulator : public EmulatorFaults
 {
 public:
   explicit DigiViewEmulator(const DigiViewEmulatorConfig& config);
-  ~DigiViewEmulator();
+  ~DigiViewEmulator() override;
   DigiViewEmulator(const DigiViewEmulator&) = delete;
   DigiViewEmulator& operator=(const DigiViewEmulator&) = delete;
 
@@ -111,6 +112,13 @@ public:
   PtzSample view(const std::string& stream, std::uint8_t cam_id) const;
 
 private:
+  // Faults: no garbage mode; no slow replies (the device pushes its state).
+  bool faultSilence(bool on) override;
+  bool faultDrop(bool on) override;  ///< every TCP connection closed
+  bool faultEndless(bool on) override;
+  bool faultFlood(bool on) override;
+  bool faultModel(EmulatorFault fault, const SimFaults& faults) override;
+
   struct Subscription;
   struct Session;
   using SessionPtr = std::shared_ptr<Session>;
