@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 
+#include "ptz_action_server/core/parse_number.h"
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
 

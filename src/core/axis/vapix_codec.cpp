@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "ptz_action_server/core/parse_number.h"
 #include "ptz_action_server/core/text.h"
 
 namespace ptz_action_server

@@ -7,6 +7,7 @@
 #include <ctime>
 
 #include "ptz_action_server/core/http/crypto.h"
+#include "ptz_action_server/core/parse_number.h"
 #include "ptz_action_server/core/text.h"
 
 namespace ptz_action_server
