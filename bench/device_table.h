@@ -29,7 +29,7 @@ struct Arrival
 
 /// A misbehaviour bench/soak makes an emulator show: the emulators' own (see EmulatorFaults).
 using Fault = ptz_action_server::EmulatorFault;
-constexpr const auto& ALL_FAULTS = ptz_action_server::ALL_EMULATOR_FAULTS;
+inline constexpr const auto& ALL_FAULTS = ptz_action_server::ALL_EMULATOR_FAULTS;
 inline const char* faultName(Fault fault)
 {
   return ptz_action_server::toString(fault);

@@ -44,6 +44,8 @@ const char* const HTTP_OPTIONS_HELP = R"(HTTP options:
                          nonces, responses, cnonces; WS-Security Nonces and PasswordDigests): for leak tests
 )";
 
+}  // namespace
+
 const char* const HTTP_FAULTS_HELP = R"(Faults:
   --delay S              answer every request S seconds late
   --http-error CODE      answer every request with this status (e.g. 500)
@@ -52,8 +54,6 @@ const char* const HTTP_FAULTS_HELP = R"(Faults:
 Signals: SIGUSR1 toggles silence, SIGUSR2 drops every connection; SIGINT / SIGTERM end the program.
   --pid-file PATH        write the program's pid there (for whoever sends the signals)
 )";
-
-}  // namespace
 
 void fail(const char* program, const std::string& message, const char* usage)
 {

@@ -158,7 +158,7 @@ MavlinkGimbalEmulator::MavlinkGimbalEmulator(const MavlinkGimbalEmulatorConfig& 
 
 MavlinkGimbalEmulator::~MavlinkGimbalEmulator()
 {
-  port_.reset();  // first: its thread calls back into this
+  destroyPort(port_);  // first: its thread calls back into this
 }
 
 std::string MavlinkGimbalEmulator::address() const

@@ -51,7 +51,7 @@ PanTiltEmulator::PanTiltEmulator(const PanTiltEmulatorConfig& config, std::share
 
 PanTiltEmulator::~PanTiltEmulator()
 {
-  port_.reset();  // first: its thread calls back into this
+  destroyPort(port_);  // first: its thread calls back into this
 }
 
 std::uint16_t PanTiltEmulator::udpPort() const

@@ -23,7 +23,7 @@ enum class EmulatorFault
   SLOW,        ///< every reply FAULT_SLOW_REPLY late (request/reply protocols)
   IMPOSSIBLE,  ///< the reported pan FAULT_IMPOSSIBLE_OFFSET off: outside the device's limits
 };
-constexpr EmulatorFault ALL_EMULATOR_FAULTS[] = { EmulatorFault::SILENCE,   EmulatorFault::DROP,
+inline constexpr EmulatorFault ALL_EMULATOR_FAULTS[] = { EmulatorFault::SILENCE,   EmulatorFault::DROP,
                                                   EmulatorFault::GARBAGE,   EmulatorFault::ENDLESS,
                                                   EmulatorFault::FLOOD,     EmulatorFault::SLOW,
                                                   EmulatorFault::IMPOSSIBLE };

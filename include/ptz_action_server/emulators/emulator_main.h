@@ -129,6 +129,8 @@ struct HttpCameraOptions
   std::string certificate_file;  ///< tls: where to write the certificate ("" = nowhere)
 };
 
+/// The fault options and signals every emulated IP camera takes (the end of its usage).
+extern const char* const HTTP_FAULTS_HELP;
 /// The usage of an IP camera program: its own text, then the HTTP options with its default port, then the faults.
 std::string httpCameraUsage(const char* own, unsigned default_port);
 /// Takes \p arg if it is an HTTP or fault option.
