@@ -65,7 +65,7 @@ std::string UdpServerPort::sender() const
 
 void UdpServerPort::sendTo(const std::string& peer, const std::uint8_t* data, std::size_t size)
 {
-  if (silent() || size == 0)
+  if (silent())  // a datagram may be empty
   {
     return;
   }
