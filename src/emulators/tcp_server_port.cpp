@@ -10,28 +10,18 @@ namespace ptz_action_server
 using boost::asio::ip::tcp;
 
 TcpServerPort::TcpServerPort(const DevicePortConfig& config, Handlers handlers)
-  : SocketServerPort(config, std::move(handlers)), acceptor_(context_)
+  : SocketServerPort(config, std::move(handlers))
+  , listener_(context_, config.host, config.port)  // the port is known (and taken) before anyone asks for it
 {
-  listen();  // in the constructor: the port is known (and taken) before anyone asks for it
+  port_ = listener_.port();
 }
 
 TcpServerPort::~TcpServerPort()
 {
   stopThread([this] {
     closeAll(false);  // the owner is going: no handler runs any more
-    boost::system::error_code ignored;
-    acceptor_.close(ignored);
+    listener_.close();
   });
-}
-
-void TcpServerPort::listen()
-{
-  const tcp::endpoint endpoint(boost::asio::ip::make_address(config_.host), port_);
-  acceptor_.open(endpoint.protocol());
-  acceptor_.set_option(tcp::acceptor::reuse_address(true));
-  acceptor_.bind(endpoint);
-  acceptor_.listen();
-  port_ = acceptor_.local_endpoint().port();
 }
 
 template <class Handler>
@@ -49,33 +39,24 @@ std::string TcpServerPort::sender() const
 
 void TcpServerPort::accept()
 {
-  auto client = std::make_shared<Client>(context_);
-  acceptor_.async_accept(client->socket, [this, client](const boost::system::error_code& error) {
-    if (error == boost::asio::error::operation_aborted || !acceptor_.is_open())
+  listener_.accept([this](tcp::socket socket) {
+    if (!config_.many_clients)
     {
-      return;
+      closeAll(true);  // one client at a time: the newest wins
     }
-    if (!error)
+    auto client = std::make_shared<Client>(std::move(socket));
+    boost::system::error_code ignored;
+    const tcp::endpoint remote = client->socket.remote_endpoint(ignored);
+    client->peer = remote.address().to_string() + ":" + std::to_string(remote.port());
+    clients_.push_back(client);
+    if (handlers_.on_connect)
     {
-      if (!config_.many_clients)
-      {
-        closeAll(true);  // one client at a time: the newest wins
-      }
-      boost::system::error_code ignored;
-      client->socket.set_option(tcp::no_delay(true), ignored);
-      const tcp::endpoint remote = client->socket.remote_endpoint(ignored);
-      client->peer = remote.address().to_string() + ":" + std::to_string(remote.port());
-      clients_.push_back(client);
-      if (handlers_.on_connect)
-      {
-        on(*client, handlers_.on_connect);
-      }
-      if (client->open)
-      {
-        read(client);
-      }
+      on(*client, handlers_.on_connect);
     }
-    accept();
+    if (client->open)
+    {
+      read(client);
+    }
   });
 }
 
@@ -103,26 +84,12 @@ void TcpServerPort::read(const ClientPtr& client)
       });
 }
 
-void TcpServerPort::send(const std::uint8_t* data, std::size_t size)
-{
-  if (silent() || size == 0)
-  {
-    return;
-  }
-  post(std::vector<std::uint8_t>(data, data + size), std::string());
-}
-
-void TcpServerPort::sendTo(const std::string& peer, const std::uint8_t* data, std::size_t size)
-{
-  if (silent() || size == 0)
-  {
-    return;
-  }
-  post(std::vector<std::uint8_t>(data, data + size), peer);
-}
-
 void TcpServerPort::post(std::vector<std::uint8_t> bytes, const std::string& peer)
 {
+  if (bytes.empty())
+  {
+    return;
+  }
   boost::asio::post(context_, [this, bytes = std::move(bytes), peer]() mutable {
     const auto found = peer.empty() ? clients_.rbegin() :
                                       std::find_if(clients_.rbegin(), clients_.rend(),
@@ -207,19 +174,18 @@ void TcpServerPort::unplug()
 {
   boost::asio::post(context_, [this] {
     closeAll(true);
-    boost::system::error_code ignored;
-    acceptor_.close(ignored);
+    listener_.close();
   });
 }
 
 void TcpServerPort::replug()
 {
   boost::asio::post(context_, [this] {
-    if (acceptor_.is_open())
+    if (listener_.isOpen())
     {
       return;
     }
-    listen();
+    listener_.open();
     accept();
   });
 }

@@ -34,10 +34,7 @@ public:
   {
     return port_;
   }
-  /// To the newest client.
-  void send(const std::uint8_t* data, std::size_t size) override;
   std::string sender() const override;
-  void sendTo(const std::string& peer, const std::uint8_t* data, std::size_t size) override;
   void disconnect(const std::string& peer) override;
   void unplug() override;
   void replug() override;
@@ -46,7 +43,7 @@ private:
   /// One connection. I/O thread only.
   struct Client
   {
-    explicit Client(boost::asio::io_context& context) : socket(context)
+    explicit Client(boost::asio::ip::tcp::socket accepted) : socket(std::move(accepted))
     {
     }
     boost::asio::ip::tcp::socket socket;
@@ -61,11 +58,9 @@ private:
   {
     accept();
   }
-  void listen();
   void accept();
   void read(const ClientPtr& client);
-  /// Queues \p bytes (garbled as configured) for \p peer ("": the newest client).
-  void post(std::vector<std::uint8_t> bytes, const std::string& peer);
+  void post(std::vector<std::uint8_t> bytes, const std::string& peer) override;
   void writeNext(const ClientPtr& client);
   /// Closes \p client; \p notify: tells on_disconnect.
   void close(const ClientPtr& client, bool notify = true);
@@ -74,7 +69,7 @@ private:
   template <class Handler>
   void on(const Client& client, const Handler& handler);
 
-  boost::asio::ip::tcp::acceptor acceptor_;
+  TcpListener listener_;
   std::vector<ClientPtr> clients_;   ///< I/O thread: the open connections, the newest last
   const Client* current_ = nullptr;  ///< I/O thread: the client a handler runs for
 };

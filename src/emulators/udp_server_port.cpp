@@ -49,27 +49,9 @@ void UdpServerPort::receive()
                              });
 }
 
-void UdpServerPort::send(const std::uint8_t* data, std::size_t size)
-{
-  if (silent() || size == 0)
-  {
-    return;
-  }
-  post(std::vector<std::uint8_t>(data, data + size), std::string());
-}
-
 std::string UdpServerPort::sender() const
 {
   return sender_.address().to_string() + ":" + std::to_string(sender_.port());
-}
-
-void UdpServerPort::sendTo(const std::string& peer, const std::uint8_t* data, std::size_t size)
-{
-  if (silent())  // a datagram may be empty
-  {
-    return;
-  }
-  post(std::vector<std::uint8_t>(data, data + size), peer);
 }
 
 void UdpServerPort::post(std::vector<std::uint8_t> bytes, const std::string& to)

@@ -30,9 +30,7 @@ public:
   {
     return port_;
   }
-  void send(const std::uint8_t* data, std::size_t size) override;
   std::string sender() const override;
-  void sendTo(const std::string& peer, const std::uint8_t* data, std::size_t size) override;
   void unplug() override;
   void replug() override;
 
@@ -43,8 +41,7 @@ private:
   }
   void bind();
   void receive();
-  /// Sends \p bytes (garbled as configured) to \p to, or to the last sender when \p to is empty.
-  void post(std::vector<std::uint8_t> bytes, const std::string& to);
+  void post(std::vector<std::uint8_t> bytes, const std::string& to) override;
 
   boost::asio::ip::udp::socket socket_;
   boost::asio::ip::udp::endpoint sender_;  ///< I/O thread: where the datagram being read came from
