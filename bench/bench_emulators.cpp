@@ -25,7 +25,7 @@ public:
   }
   std::uint16_t port() const override
   {
-    return emulator_.endpoint().port();
+    return emulator_.udpPort();
   }
   std::string link() const override
   {
@@ -41,29 +41,9 @@ public:
   {
     return select(isStop);
   }
-  bool setFault(Fault fault, bool on) override
+  ptz_action_server::EmulatorFaults* faults() override
   {
-    switch (fault)
-    {
-      case Fault::SILENCE:
-        emulator_.setSilent(on);
-        return true;
-      case Fault::DROP:
-        emulator_.setDropRatio(on ? DROP_RATIO : 0.0);
-        return true;
-      case Fault::ENDLESS:
-        emulator_.setEndless(on);
-        return true;
-      case Fault::FLOOD:
-        emulator_.setFlood(on ? FLOOD_COPIES : 1);
-        return true;
-      case Fault::IMPOSSIBLE:
-        setSimFault(fault, on, faults_);
-        emulator_.panTilt().setFaults(faults_);
-        return true;
-      default:
-        return false;  // garbage: no such mode; slow: the device pushes its state
-    }
+    return &emulator_;
   }
 
 private:
@@ -90,7 +70,6 @@ private:
     return arrivals;
   }
   PanTiltEmulator emulator_;
-  SimFaults faults_;
 };
 
 class DigiViewDevice : public EmulatedDevice
@@ -116,32 +95,9 @@ public:
   {
     return targetings();
   }
-  bool setFault(Fault fault, bool on) override
+  ptz_action_server::EmulatorFaults* faults() override
   {
-    switch (fault)
-    {
-      case Fault::SILENCE:
-        emulator_.setSilent(on);
-        return true;
-      case Fault::DROP:
-        if (on)
-        {
-          emulator_.dropConnections();
-        }
-        return true;
-      case Fault::ENDLESS:
-        emulator_.setEndless(on);
-        return true;
-      case Fault::FLOOD:
-        emulator_.setFlood(on ? FLOOD_COPIES : 1);
-        return true;
-      case Fault::IMPOSSIBLE:
-        setSimFault(fault, on, faults_);
-        emulator_.setFaults(faults_);
-        return true;
-      default:
-        return false;  // garbage: no such mode; slow: the device pushes its state
-    }
+    return &emulator_;
   }
 
 private:
@@ -160,7 +116,6 @@ private:
     return arrivals;
   }
   DigiViewEmulator emulator_;
-  SimFaults faults_;
 };
 
 class FlirDevice : public EmulatedDevice
@@ -186,9 +141,9 @@ public:
     return select(isHalt);
   }
 
-  bool setFault(Fault fault, bool on) override
+  ptz_action_server::EmulatorFaults* faults() override
   {
-    return setLineFault(emulator_, faults_, fault, on);
+    return &emulator_;
   }
 
 private:
@@ -218,7 +173,6 @@ private:
     return arrivals;
   }
   mutable FlirPtuEmulator emulator_;  ///< mutable: port() is not const
-  SimFaults faults_;
 };
 
 class PelcoDevice : public EmulatedDevice
@@ -248,9 +202,9 @@ public:
     return select([](const pelco::Frame& frame) { return frame == pelco::stop(frame.address); });
   }
 
-  bool setFault(Fault fault, bool on) override
+  ptz_action_server::EmulatorFaults* faults() override
   {
-    return setLineFault(emulator_, faults_, fault, on);
+    return &emulator_;
   }
 
 private:
@@ -275,7 +229,6 @@ private:
     return arrivals;
   }
   mutable PelcoDEmulator emulator_;  ///< mutable: port() is not const
-  SimFaults faults_;
 };
 }  // namespace
 

@@ -55,7 +55,7 @@ int main(int argc, char** argv)
     emulator_config.state_period = 0.05;
     PanTiltEmulator emulator(emulator_config);
     DeviceConfig<PanTiltProtocol> config;
-    config.link.port = emulator.endpoint().port();
+    config.link.port = emulator.udpPort();
     config.link.local_host = "127.0.0.1";
     std::unique_ptr<DeviceBackend> backend = makeDeviceBackend<PanTiltProtocol>(config);
     backend->start();

@@ -44,30 +44,9 @@ public:
   {
     return static_cast<long>(emulator_.server().counters().connections);
   }
-  bool setFault(Fault fault, bool on) override
+  ptz_action_server::EmulatorFaults* faults() override
   {
-    switch (fault)
-    {
-      case Fault::SILENCE:
-        emulator_.server().setSilent(on);
-        return true;
-      case Fault::DROP:
-        if (on)
-        {
-          emulator_.server().dropConnections();
-        }
-        return true;
-      case Fault::ENDLESS:
-        emulator_.server().setEndless(on);
-        return true;
-      case Fault::SLOW:
-      case Fault::IMPOSSIBLE:
-        setSimFault(fault, on, faults_);
-        emulator_.setFaults(faults_);
-        return true;
-      default:
-        return false;  // garbage: HTTP has no such mode here; flood: the camera answers requests
-    }
+    return &emulator_;
   }
 
 private:
@@ -89,7 +68,6 @@ private:
   mutable Emulator emulator_;  ///< mutable: its server's log and counters are read from const accessors
   const std::string goal_text_;
   const std::string stop_text_;
-  SimFaults faults_;
 };
 }  // namespace
 

@@ -38,26 +38,9 @@ public:
       return std::isnan(setpoint.yaw) && setpoint.yaw_rate == 0.0f && setpoint.pitch_rate == 0.0f;
     });
   }
-  bool setFault(Fault fault, bool on) override
+  ptz_action_server::EmulatorFaults* faults() override
   {
-    switch (fault)
-    {
-      case Fault::SILENCE:
-        emulator_.setSilent(on);
-        return true;
-      case Fault::ENDLESS:
-        emulator_.setEndless(on);
-        return true;
-      case Fault::FLOOD:
-        emulator_.setFlood(on ? FLOOD_COPIES : 1);
-        return true;
-      case Fault::IMPOSSIBLE:
-        setSimFault(fault, on, faults_);
-        emulator_.setFaults(faults_);
-        return true;
-      default:
-        return false;  // drop: UDP has no connection; garbage: no such mode; slow: the gimbal pushes its state
-    }
+    return &emulator_;
   }
 
 private:
@@ -76,7 +59,6 @@ private:
     return arrivals;
   }
   MavlinkGimbalEmulator emulator_;
-  SimFaults faults_;
 };
 }  // namespace
 

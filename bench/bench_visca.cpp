@@ -43,9 +43,9 @@ public:
     return select(isHalt);
   }
 
-  bool setFault(Fault fault, bool on) override
+  ptz_action_server::EmulatorFaults* faults() override
   {
-    return setLineFault(emulator_, faults_, fault, on);
+    return &emulator_;
   }
 
 private:
@@ -71,7 +71,6 @@ private:
     return arrivals;
   }
   mutable ViscaEmulator emulator_;  ///< mutable: port() is not const
-  SimFaults faults_;
 };
 }  // namespace
 

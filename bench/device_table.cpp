@@ -78,43 +78,6 @@ std::string show(const BenchParam& param)
 }
 }  // namespace
 
-const char* faultName(Fault fault)
-{
-  switch (fault)
-  {
-    case Fault::SILENCE:
-      return "silence";
-    case Fault::DROP:
-      return "drop";
-    case Fault::GARBAGE:
-      return "garbage";
-    case Fault::ENDLESS:
-      return "endless";
-    case Fault::FLOOD:
-      return "flood";
-    case Fault::SLOW:
-      return "slow";
-    case Fault::IMPOSSIBLE:
-      return "impossible";
-  }
-  return "?";
-}
-
-bool setSimFault(Fault fault, bool on, ptz_action_server::SimFaults& faults)
-{
-  if (fault == Fault::SLOW)
-  {
-    faults.reply_delay = on ? SLOW_REPLY : 0.0;
-    return true;
-  }
-  if (fault == Fault::IMPOSSIBLE)
-  {
-    faults.report_offset[ptz_action_server::PAN] = on ? IMPOSSIBLE_OFFSET : 0.0;
-    return true;
-  }
-  return false;
-}
-
 const std::vector<DeviceRow>& deviceTable()
 {
   static const std::vector<DeviceRow> rows = [] {

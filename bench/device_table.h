@@ -16,7 +16,7 @@
 #include "ptz_action_server/core/sim_device_model.h"
 #include "ptz_action_server/core/types.h"
 #include "ptz_action_server/emulators/device_port.h"
-#include "ptz_action_server/emulators/line_emulator.h"
+#include "ptz_action_server/emulators/emulator_faults.h"
 
 namespace ptz_bench
 {
@@ -27,61 +27,12 @@ struct Arrival
   double wire = 0.0;
 };
 
-/// A misbehaviour bench/soak makes an emulator show (see EmulatedDevice::setFault()).
-enum class Fault
+/// A misbehaviour bench/soak makes an emulator show: the emulators' own (see EmulatorFaults).
+using Fault = ptz_action_server::EmulatorFault;
+inline constexpr const auto& ALL_FAULTS = ptz_action_server::ALL_EMULATOR_FAULTS;
+inline const char* faultName(Fault fault)
 {
-  SILENCE,     ///< reads everything, answers nothing
-  DROP,        ///< the link drops: a TCP connection closed, a pseudo-terminal unplugged (replugged when off), or
-               ///< half the UDP replies lost
-  GARBAGE,     ///< a share of the bytes sent replaced by random ones
-  ENDLESS,     ///< replies that never end (filler bytes that neither end nor start a message)
-  FLOOD,       ///< every state sent 100 times
-  SLOW,        ///< every reply 80 ms late (request/reply protocols)
-  IMPOSSIBLE,  ///< the reported pan 10 rad off: outside the device's limits
-};
-constexpr Fault ALL_FAULTS[] = { Fault::SILENCE, Fault::DROP, Fault::GARBAGE,   Fault::ENDLESS,
-                                 Fault::FLOOD,   Fault::SLOW, Fault::IMPOSSIBLE };
-const char* faultName(Fault fault);
-
-/// The faults' sizes.
-constexpr unsigned FLOOD_COPIES = 100;
-constexpr double GARBLE_RATIO = 0.2;
-constexpr double DROP_RATIO = 0.5;
-constexpr double SLOW_REPLY = 0.08;         ///< s: under the serial reply margin (100 ms) and half any state timeout
-constexpr double IMPOSSIBLE_OFFSET = 10.0;  ///< rad added to the reported pan
-
-/// SLOW and IMPOSSIBLE are SimFaults of the emulator's model: sets or clears the field in \p faults; false for
-/// another fault.
-bool setSimFault(Fault fault, bool on, ptz_action_server::SimFaults& faults);
-
-/// EmulatedDevice::setFault() of a FLIR, Pelco-D or VISCA emulator: the faults of its port and its model.
-template <class Item>
-bool setLineFault(ptz_action_server::LineEmulator<Item>& emulator, ptz_action_server::SimFaults& faults, Fault fault,
-                  bool on)
-{
-  switch (fault)
-  {
-    case Fault::SILENCE:
-      emulator.port().setSilent(on);
-      return true;
-    case Fault::DROP:
-      on ? emulator.unplug() : emulator.replug();
-      return true;
-    case Fault::GARBAGE:
-      emulator.port().setGarbleRatio(on ? GARBLE_RATIO : 0.0);
-      return true;
-    case Fault::ENDLESS:
-      emulator.port().setEndless(on);
-      return true;
-    case Fault::SLOW:
-    case Fault::IMPOSSIBLE:
-      setSimFault(fault, on, faults);
-      emulator.setFaults(faults);
-      return true;
-    case Fault::FLOOD:
-      break;  // the device answers requests: it has nothing to flood with
-  }
-  return false;
+  return ptz_action_server::toString(fault);
 }
 
 /// An emulator running in the bench's process, as the device figures see it. Thread-safe.
@@ -104,9 +55,17 @@ public:
   }
   /// Turns \p fault on or off (bench/soak); false, changing nothing, where the emulator has no such mode. One
   /// caller at a time.
-  virtual bool setFault(Fault /*fault*/, bool /*on*/)
+  bool setFault(Fault fault, bool on)
   {
-    return false;
+    ptz_action_server::EmulatorFaults* switches = faults();
+    return switches != nullptr && switches->setFault(fault, on);
+  }
+
+protected:
+  /// The emulator's fault switch (nullptr: none).
+  virtual ptz_action_server::EmulatorFaults* faults()
+  {
+    return nullptr;
   }
 };
 

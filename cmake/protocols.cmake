@@ -6,7 +6,7 @@ ptz_protocol(pantilt
     src/core/pantilt/pantilt_protocol.cpp
   PLUGIN src/plugins/pantilt_backend_plugin.cpp
   EMULATOR src/emulators/pantilt_emulator.cpp src/emulators/sim_pantilt.cpp
-  PROGRAM pantilt_emulator src/tools/pantilt_emulator.cpp
+  PROGRAM pantilt_emulator src/emulators/programs/pantilt_emulator_main.cpp
   TESTS test/core/test_pantilt_codec.cpp test/core/test_pantilt_foreign_frames.cpp test/core/test_pantilt_formats.cpp
     test/core/test_pantilt_params.cpp test/core/test_pantilt_protocol.cpp test/core/contract/pantilt_fixtures.cpp
   FUZZ pantilt src/core/pantilt/pantilt_codec.cpp src/core/pantilt/pantilt_params.cpp
@@ -19,7 +19,7 @@ ptz_protocol(flir
   CORE src/core/flir/flir_codec.cpp src/core/flir/flir_protocol.cpp
   PLUGIN src/plugins/flir_backend_plugin.cpp
   EMULATOR src/emulators/flir_ptu_emulator.cpp src/emulators/flir_ptu_emulator_answers.cpp
-  PROGRAM flir_ptu_emulator src/tools/flir_ptu_emulator.cpp
+  PROGRAM flir_ptu_emulator src/emulators/programs/flir_ptu_emulator_main.cpp
   TESTS test/core/test_flir_codec.cpp test/core/test_flir_emulator.cpp test/core/test_flir_protocol.cpp
     test/core/contract/flir_fixtures.cpp
   FUZZ flir_reply src/core/flir/flir_codec.cpp
@@ -30,7 +30,7 @@ ptz_protocol(pelco_d
   CORE src/core/pelco_d/pelco_d_codec.cpp src/core/pelco_d/pelco_d_protocol.cpp
   PLUGIN src/plugins/pelco_d_backend_plugin.cpp
   EMULATOR src/emulators/pelco_d_emulator.cpp
-  PROGRAM pelco_d_emulator src/tools/pelco_d_emulator.cpp
+  PROGRAM pelco_d_emulator src/emulators/programs/pelco_d_emulator_main.cpp
   TESTS test/core/test_pelco_d_codec.cpp test/core/test_pelco_d_protocol.cpp test/core/contract/pelco_d_fixtures.cpp
   FUZZ pelco_d src/core/pelco_d/pelco_d_codec.cpp
   ROSTESTS test/ros/serial_pelco_node.test
@@ -40,7 +40,7 @@ ptz_protocol(visca
   CORE src/core/visca/visca_codec.cpp src/core/visca/visca_model.cpp src/core/visca/visca_protocol.cpp
   PLUGIN src/plugins/visca_backend_plugin.cpp
   EMULATOR src/emulators/visca_emulator.cpp
-  PROGRAM visca_emulator src/tools/visca_emulator.cpp
+  PROGRAM visca_emulator src/emulators/programs/visca_emulator_main.cpp
   TESTS test/core/test_visca_codec.cpp test/core/test_visca_protocol.cpp test/core/contract/visca_fixtures.cpp
   FUZZ visca_reply src/core/visca/visca_codec.cpp
   ROSTESTS test/ros/serial_visca_node.test test/ros/visca_ip_node.test
@@ -51,7 +51,7 @@ ptz_protocol(digiview
     src/core/digiview/digiview_protocol.cpp
   PLUGIN src/plugins/digiview_backend_plugin.cpp
   EMULATOR src/emulators/digiview_emulator.cpp src/emulators/digiview_emulator_answers.cpp
-  PROGRAM digiview_emulator src/tools/digiview_emulator.cpp
+  PROGRAM digiview_emulator src/emulators/programs/digiview_emulator_main.cpp
   TESTS test/core/test_digiview_emulator.cpp test/core/test_digiview_goldens.cpp test/core/test_digiview_messages.cpp
     test/core/test_digiview_protocol.cpp test/core/contract/digiview_fixtures.cpp
   FUZZ digiview src/core/digiview/digiview_codec.cpp src/core/digiview/digiview_payloads.cpp
@@ -63,7 +63,7 @@ ptz_protocol(mavlink_gimbal
     src/core/mavlink/mavlink_gimbal_replies.cpp src/core/mavlink/mavlink_messages.cpp
   PLUGIN src/plugins/mavlink_gimbal_backend_plugin.cpp
   EMULATOR src/emulators/mavlink_gimbal_emulator.cpp
-  PROGRAM mavlink_gimbal_emulator src/tools/mavlink_gimbal_emulator.cpp
+  PROGRAM mavlink_gimbal_emulator src/emulators/programs/mavlink_gimbal_emulator_main.cpp
   TESTS test/core/test_mavlink_codec.cpp test/core/test_mavlink_gimbal_protocol.cpp
     test/core/contract/mavlink_gimbal_fixtures.cpp
   FUZZ mavlink src/core/mavlink/mavlink_codec.cpp src/core/mavlink/mavlink_messages.cpp
@@ -74,7 +74,7 @@ ptz_protocol(axis
   CORE src/core/axis/axis_protocol.cpp src/core/axis/vapix_codec.cpp
   PLUGIN src/plugins/axis_backend_plugin.cpp
   EMULATOR src/emulators/axis_camera_emulator.cpp
-  PROGRAM axis_camera_emulator src/tools/axis_camera_emulator.cpp
+  PROGRAM axis_camera_emulator src/emulators/programs/axis_camera_emulator_main.cpp
   TESTS test/core/test_axis_protocol.cpp test/core/test_vapix_codec.cpp test/core/contract/axis_fixtures.cpp
   FUZZ vapix_reply src/core/axis/vapix_codec.cpp src/core/types.cpp
   ROSTESTS test/ros/axis_node.test test/ros/axis_field_node.test
@@ -84,7 +84,7 @@ ptz_protocol(onvif
   CORE src/core/onvif/onvif_codec.cpp src/core/onvif/onvif_protocol.cpp src/core/onvif/onvif_xml.cpp
   PLUGIN src/plugins/onvif_backend_plugin.cpp
   EMULATOR src/emulators/onvif_camera_emulator.cpp
-  PROGRAM onvif_camera_emulator src/tools/onvif_camera_emulator.cpp
+  PROGRAM onvif_camera_emulator src/emulators/programs/onvif_camera_emulator_main.cpp
   TESTS test/core/test_onvif_codec.cpp test/core/test_onvif_emulator.cpp test/core/test_onvif_protocol.cpp
     test/core/contract/onvif_fixtures.cpp
   FUZZ soap_reply src/core/onvif/onvif_codec.cpp src/core/onvif/onvif_xml.cpp src/core/axis/vapix_codec.cpp

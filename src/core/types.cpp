@@ -1,8 +1,13 @@
 #include "ptz_action_server/core/types.h"
 
+#include <cctype>
+#include <cerrno>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <cstdlib>
 
+#include "ptz_action_server/core/parse_number.h"
 #include "ptz_action_server/core/text.h"
 
 namespace ptz_action_server
@@ -34,6 +39,24 @@ std::string formatText(const char* pattern, ...)
   std::vsnprintf(buffer, sizeof(buffer), pattern, args);
   va_end(args);
   return buffer;
+}
+
+bool parseNumber(const std::string& text, double& value)
+{
+  if (text.empty() || text.size() > 64 || std::isspace(static_cast<unsigned char>(text[0])))
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const double parsed = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || errno != 0 || !std::isfinite(parsed) ||
+      text.find_first_of("xXnNiI") != std::string::npos)  // no hex floats, nan or inf
+  {
+    return false;
+  }
+  value = parsed;
+  return true;
 }
 
 }  // namespace ptz_action_server

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 
+#include "ptz_action_server/core/parse_number.h"
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
 
@@ -175,8 +176,8 @@ HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::stri
   std::lock_guard<std::mutex> lock(mutex_);
   const TimePoint now = clock_->now();
   double camera = 1.0;
-  if (values.count("camera") && (!vapix::parseNumber(values["camera"], camera) || camera < 1 ||
-                                 camera > config_.cameras || camera != std::floor(camera)))
+  if (values.count("camera") && (!parseNumber(values["camera"], camera) || camera < 1 || camera > config_.cameras ||
+                                 camera != std::floor(camera)))
   {
     return errorBody("camera: invalid camera: " + values["camera"]);
   }
@@ -200,7 +201,7 @@ HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::stri
     if (values.count(name))
     {
       Move& move = numbers[name];
-      move.given = vapix::parseNumber(values[name], move.value);
+      move.given = parseNumber(values[name], move.value);
       if (!move.given)
       {
         return errorBody(std::string(name) + ": bad value: " + values[name]);
@@ -214,8 +215,8 @@ HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::stri
   {
     const std::string& text = values["continuouspantiltmove"];
     const std::size_t comma = text.find(',');
-    if (comma == std::string::npos || !vapix::parseNumber(text.substr(0, comma), pan_percent) ||
-        !vapix::parseNumber(text.substr(comma + 1), tilt_percent) || std::abs(pan_percent) > 100 ||
+    if (comma == std::string::npos || !parseNumber(text.substr(0, comma), pan_percent) ||
+        !parseNumber(text.substr(comma + 1), tilt_percent) || std::abs(pan_percent) > 100 ||
         std::abs(tilt_percent) > 100)
     {
       return errorBody("continuouspantiltmove: bad value: " + text);

@@ -5,18 +5,12 @@
 #include <cmath>
 #include <tuple>
 
-#include <boost/asio/post.hpp>
-#include <boost/asio/steady_timer.hpp>
-#include <boost/asio/write.hpp>
-
 #include "digiview_emulator_internal.h"
 
 namespace ptz_action_server
 {
 namespace
 {
-using boost::asio::ip::tcp;
-using boost::asio::ip::udp;
 using namespace digiview;
 using namespace digiview_views;
 
@@ -34,8 +28,7 @@ SimDeviceConfig viewModel(const DigiViewEmulatorConfig& config)
 }
 }  // namespace
 
-DigiViewEmulator::DigiViewEmulator(const DigiViewEmulatorConfig& config)
-  : config_(config), acceptor_(context_), udp_(context_)
+DigiViewEmulator::DigiViewEmulator(const DigiViewEmulatorConfig& config) : config_(config)
 {
   const SimDeviceConfig model = viewModel(config);
   for (const std::string& stream : config.streams)
@@ -46,43 +39,35 @@ DigiViewEmulator::DigiViewEmulator(const DigiViewEmulatorConfig& config)
                       SimDeviceModel(model, SteadyClock::now()));
     }
   }
-  const auto address = boost::asio::ip::make_address(config.host);
-  if (config.transport == LinkKind::TCP)
-  {
-    const tcp::endpoint endpoint(address, config.port);
-    acceptor_.open(endpoint.protocol());
-    acceptor_.set_option(tcp::acceptor::reuse_address(true));
-    acceptor_.bind(endpoint);
-    acceptor_.listen();
-    port_ = acceptor_.local_endpoint().port();
-    accept();
-  }
-  else
-  {
-    udp_.open(udp::v4());
-    udp_.bind(udp::endpoint(address, config.port));
-    port_ = udp_.local_endpoint().port();
-    readUdp();
-  }
-  thread_ = std::thread([this] {
-    auto work = boost::asio::make_work_guard(context_);
-    context_.run();
-  });
+  DevicePortConfig port;
+  port.kind = config.transport == LinkKind::TCP ? DevicePortConfig::Kind::TCP : DevicePortConfig::Kind::UDP;
+  port.host = config.host;
+  port.port = config.port;
+  port.many_clients = true;  // DigiView serves every client at once
+  port.tick_period = 0.01;   // the subscriptions' clock (100 ms at the least)
+  DevicePort::Handlers handlers;
+  handlers.on_bytes = [this](const std::uint8_t* data, std::size_t size, TimePoint) { received(data, size); };
+  handlers.on_connect = [this] { session(); };
+  handlers.on_disconnect = [this] {
+    const auto found = sessions_.find(port_->sender());
+    if (found != sessions_.end())
+    {
+      closeSession(found->second, false);
+    }
+  };
+  handlers.on_tick = [this] { tick(); };
+  port_ = DevicePort::create(port, handlers);
+  port_->start();
 }
 
 DigiViewEmulator::~DigiViewEmulator()
 {
-  boost::asio::post(context_, [this] {
-    boost::system::error_code ignored;
-    acceptor_.close(ignored);
-    udp_.close(ignored);
-    for (const SessionPtr& session : sessions_)
-    {
-      closeSession(session);
-    }
-    context_.stop();
-  });
-  thread_.join();
+  destroyPort(port_);  // first: its thread calls back into this
+}
+
+std::uint16_t DigiViewEmulator::port() const
+{
+  return config_.transport == LinkKind::TCP ? port_->tcpPort() : port_->udpPort();
 }
 
 void DigiViewEmulator::setSilent(bool silent)
@@ -111,117 +96,114 @@ void DigiViewEmulator::setFaults(const SimFaults& faults)
 
 void DigiViewEmulator::dropConnections()
 {
-  boost::asio::post(context_, [this] {
-    const std::vector<SessionPtr> sessions = sessions_;
-    for (const SessionPtr& session : sessions)
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const auto& entry : sessions_)
+  {
+    if (!entry.second->is_udp)
     {
-      if (!session->is_udp)
-      {
-        closeSession(session);
-      }
+      port_->disconnect(entry.first);  // its session closes when the port says it did
     }
-  });
+  }
+}
+
+bool DigiViewEmulator::faultSilence(bool on)
+{
+  setSilent(on);
+  return true;
+}
+
+bool DigiViewEmulator::faultDrop(bool on)
+{
+  if (on)
+  {
+    dropConnections();
+  }
+  return true;
+}
+
+bool DigiViewEmulator::faultEndless(bool on)
+{
+  setEndless(on);
+  return true;
+}
+
+bool DigiViewEmulator::faultFlood(bool on)
+{
+  setFlood(on ? FAULT_FLOOD_COPIES : 1);
+  return true;
+}
+
+bool DigiViewEmulator::faultModel(EmulatorFault fault, const SimFaults& faults)
+{
+  if (fault != EmulatorFault::IMPOSSIBLE)
+  {
+    return false;
+  }
+  setFaults(faults);
+  return true;
 }
 
 std::size_t DigiViewEmulator::connections() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  return static_cast<std::size_t>(
-      std::count_if(sessions_.begin(), sessions_.end(), [](const SessionPtr& session) { return session->open; }));
+  return sessions_.size();
 }
 
-void DigiViewEmulator::accept()
+DigiViewEmulator::SessionPtr DigiViewEmulator::session()
 {
-  auto session = std::make_shared<Session>(context_);
-  acceptor_.async_accept(session->socket, [this, session](const boost::system::error_code& error) {
-    if (error == boost::asio::error::operation_aborted)
-    {
-      return;
-    }
-    if (!error)
-    {
-      session->socket.set_option(tcp::no_delay(true));
-      {
-        std::lock_guard<std::mutex> lock(mutex_);
-        sessions_.push_back(session);
-      }
-      readTcp(session);
-    }
-    accept();
-  });
+  const std::string peer = port_->sender();
+  const auto found = sessions_.find(peer);
+  if (found != sessions_.end())
+  {
+    return found->second;
+  }
+  auto created = std::make_shared<Session>();
+  created->peer = peer;
+  created->is_udp = config_.transport != LinkKind::TCP;
+  std::lock_guard<std::mutex> lock(mutex_);
+  sessions_.emplace(peer, created);
+  return created;
 }
 
-void DigiViewEmulator::readTcp(const SessionPtr& session)
+void DigiViewEmulator::received(const std::uint8_t* bytes, std::size_t size)
 {
-  session->socket.async_read_some(
-      boost::asio::buffer(session->buffer.data() + session->buffered, session->buffer.size() - session->buffered),
-      [this, session](const boost::system::error_code& error, std::size_t size) {
-        if (error || !session->open)
-        {
-          closeSession(session);
-          return;
-        }
-        session->buffered += size;
-        // A stream: cut into messages of the format's size.
-        const std::size_t message_size = layoutOf(config_.wire.format).size;
-        std::size_t offset = 0;
-        while (session->open && session->buffered - offset >= message_size)
-        {
-          handle(session, session->buffer.data() + offset, message_size);
-          offset += message_size;
-        }
-        std::copy(session->buffer.begin() + offset, session->buffer.begin() + session->buffered,
-                  session->buffer.begin());
-        session->buffered -= offset;
-        if (session->open)
-        {
-          readTcp(session);
-        }
-      });
+  const SessionPtr client = session();
+  if (client->is_udp)
+  {
+    handle(client, bytes, size);  // a datagram: one message
+    return;
+  }
+  // A stream: cut into messages of the format's size.
+  const std::size_t message_size = layoutOf(config_.wire.format).size;
+  std::vector<std::uint8_t>& buffered = client->buffered;
+  buffered.insert(buffered.end(), bytes, bytes + size);
+  std::size_t offset = 0;
+  while (client->open && buffered.size() - offset >= message_size)
+  {
+    handle(client, buffered.data() + offset, message_size);
+    offset += message_size;
+  }
+  buffered.erase(buffered.begin(), buffered.begin() + static_cast<std::ptrdiff_t>(offset));
 }
 
-void DigiViewEmulator::readUdp()
-{
-  udp_.async_receive_from(boost::asio::buffer(udp_buffer_), udp_peer_,
-                          [this](const boost::system::error_code& error, std::size_t size) {
-                            if (error == boost::asio::error::operation_aborted)
-                            {
-                              return;
-                            }
-                            if (!error)
-                            {
-                              SessionPtr& session = udp_sessions_[udp_peer_];
-                              if (!session || !session->open)
-                              {
-                                session = std::make_shared<Session>(context_);
-                                session->is_udp = true;
-                                session->peer = udp_peer_;
-                                std::lock_guard<std::mutex> lock(mutex_);
-                                sessions_.push_back(session);
-                              }
-                              handle(session, udp_buffer_.data(), size);
-                            }
-                            readUdp();
-                          });
-}
-
-void DigiViewEmulator::closeSession(const SessionPtr& session)
+void DigiViewEmulator::closeSession(const SessionPtr& session, bool disconnect)
 {
   if (!session->open)
   {
     return;
   }
   session->open = false;
-  session->subscriptions.clear();  // the timers' destructors cancel them
-  session->writes.clear();
-  boost::system::error_code ignored;
-  if (!session->is_udp)
+  session->subscriptions.clear();
+  if (disconnect && !session->is_udp)
   {
-    session->socket.shutdown(tcp::socket::shutdown_both, ignored);
-    session->socket.close(ignored);
+    port_->disconnect(session->peer);
   }
   std::lock_guard<std::mutex> lock(mutex_);
-  sessions_.erase(std::remove(sessions_.begin(), sessions_.end(), session), sessions_.end());
+  const auto found = sessions_.find(session->peer);
+  if (found != sessions_.end() && found->second == session)
+  {
+    sessions_.erase(found);
+  }
 }
 
 void DigiViewEmulator::reply(const SessionPtr& session, const Message& message)
@@ -243,35 +225,7 @@ void DigiViewEmulator::reply(const SessionPtr& session, const Message& message)
   {
     bytes.assign(bytes.size() - 1, 'A');
   }
-  if (session->is_udp)
-  {
-    auto datagram = std::make_shared<Bytes>(std::move(bytes));
-    udp_.async_send_to(boost::asio::buffer(*datagram), session->peer,
-                       [datagram](const boost::system::error_code&, std::size_t) {});
-    return;
-  }
-  session->writes.push_back(std::move(bytes));
-  if (session->writes.size() == 1)
-  {
-    writeNext(session);
-  }
-}
-
-void DigiViewEmulator::writeNext(const SessionPtr& session)
-{
-  boost::asio::async_write(session->socket, boost::asio::buffer(session->writes.front()),
-                           [this, session](const boost::system::error_code& error, std::size_t) {
-                             if (error || !session->open)
-                             {
-                               closeSession(session);
-                               return;
-                             }
-                             session->writes.pop_front();
-                             if (!session->writes.empty())
-                             {
-                               writeNext(session);
-                             }
-                           });
+  port_->sendTo(session->peer, bytes.data(), bytes.size());
 }
 
 void DigiViewEmulator::subscribe(const SessionPtr& session, const IntervalRequest& request)
@@ -288,38 +242,33 @@ void DigiViewEmulator::subscribe(const SessionPtr& session, const IntervalReques
   }
   Subscription& subscription = session->subscriptions[key];
   subscription.request = request;
-  subscription.timer = std::make_unique<boost::asio::steady_timer>(context_);
-  subscription.timer->expires_after(std::chrono::milliseconds(request.interval_ms));
-  waitSubscription(session, key);
+  subscription.due = SteadyClock::now() + std::chrono::milliseconds(request.interval_ms);
 }
 
-void DigiViewEmulator::waitSubscription(const SessionPtr& session, const Session::Key& key)
+void DigiViewEmulator::tick()
 {
-  std::weak_ptr<Session> weak = session;
-  session->subscriptions.at(key).timer->async_wait([this, weak, key](const boost::system::error_code& error) {
-    const SessionPtr alive = weak.lock();
-    if (error || !alive || !alive->open)
+  const TimePoint now = SteadyClock::now();
+  for (const auto& entry : sessions_)  // only this thread changes the map
+  {
+    for (auto& keyed : entry.second->subscriptions)
     {
-      return;
-    }
-    const auto found = alive->subscriptions.find(key);
-    if (found == alive->subscriptions.end())
-    {
-      return;
-    }
-    Subscription& subscription = found->second;
-    Message message;
-    if (current(subscription.request.param, subscription.request.camera, message))
-    {
-      for (unsigned copy = 0; copy < flood_; ++copy)
+      Subscription& subscription = keyed.second;
+      if (now < subscription.due)
       {
-        reply(alive, message);
+        continue;
       }
+      Message message;
+      if (current(subscription.request.param, subscription.request.camera, message))
+      {
+        for (unsigned copy = 0; copy < flood_; ++copy)
+        {
+          reply(entry.second, message);
+        }
+      }
+      // On the subscription's beat: a late report shortens the next interval, the schedule does not drift.
+      subscription.due += std::chrono::milliseconds(subscription.request.interval_ms);
     }
-    subscription.timer->expires_at(subscription.timer->expiry() +
-                                   std::chrono::milliseconds(subscription.request.interval_ms));
-    waitSubscription(alive, key);
-  });
+  }
 }
 
 }  // namespace ptz_action_server

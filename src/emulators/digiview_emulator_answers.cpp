@@ -112,12 +112,7 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
   switch (message.message_type)
   {
     case MessageType::QUIT:
-      if (session->is_udp)
-      {
-        session->subscriptions.clear();
-        udp_sessions_.erase(session->peer);
-      }
-      closeSession(session);
+      closeSession(session, true);
       return;
     case MessageType::GET_PARAMETERS: {
       CameraId camera;

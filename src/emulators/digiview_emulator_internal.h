@@ -6,12 +6,11 @@
  */
 #pragma once
 
-#include <deque>
+#include <map>
 #include <memory>
+#include <string>
 #include <tuple>
 #include <vector>
-
-#include <boost/asio/steady_timer.hpp>
 
 #include "ptz_action_server/emulators/digiview_emulator.h"
 
@@ -45,27 +44,21 @@ inline std::vector<digiview::BoundingBox> viewsOf(std::uint8_t layout_mode)
 }
 }  // namespace digiview_views
 
-/// A subscription (0.5: GET_INTERVAL, 1.0 and 1.1: a GET with interval_ms): its request and its timer.
+/// A subscription (0.5: GET_INTERVAL, 1.0 and 1.1: a GET with interval_ms): its request and when it reports next.
 struct DigiViewEmulator::Subscription
 {
   digiview::IntervalRequest request;
-  std::unique_ptr<boost::asio::steady_timer> timer;
+  TimePoint due;
 };
 
 /// One client: a TCP connection, or a UDP peer. Lives on the I/O thread.
 struct DigiViewEmulator::Session
 {
   using Key = std::tuple<int, std::string, std::uint8_t>;  ///< param, stream, camera
-  explicit Session(boost::asio::io_context& context) : socket(context)
-  {
-  }
-  boost::asio::ip::tcp::socket socket;  ///< TCP only
+  std::string peer;                                        ///< "host:port"
   bool is_udp = false;
-  boost::asio::ip::udp::endpoint peer;
   bool open = true;
-  std::array<std::uint8_t, 2048> buffer{};
-  std::size_t buffered = 0;
-  std::deque<digiview::Bytes> writes;
+  std::vector<std::uint8_t> buffered;  ///< tcp: the start of a message not yet whole
   std::map<Key, Subscription> subscriptions;
 };
 

@@ -55,7 +55,9 @@ FlirPtuEmulator::FlirPtuEmulator(const FlirPtuEmulatorConfig& config)
   openPort(config.port, DevicePort::Handlers{ [this](const std::uint8_t* data, std::size_t size, TimePoint at) {
                                                onBytes(data, size, at);
                                              },
-                                              [this] { onTick(); }, [this] { greet(); } });
+                                              [this] { onTick(); },
+                                              [this] { greet(); },
+                                              {} });
   powerUp();
 }
 

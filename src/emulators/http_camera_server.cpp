@@ -22,6 +22,7 @@
 #include "ptz_action_server/core/transport/http_link.h"
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
+#include "socket_server.h"
 
 namespace ptz_action_server
 {
@@ -182,7 +183,7 @@ public:
     : server_(server)
     , ssl_context_(server.ssl_context_)
     , stream_(std::move(socket), *ssl_context_)
-    , delay_timer_(server.context_)
+    , delay_timer_(server.socket_server_->context())
   {
   }
 
@@ -381,75 +382,42 @@ HttpCameraServer::HttpCameraServer(const HttpCameraServerConfig& config, Handler
   , handler_(std::move(handler))
   , open_(std::move(open))
   , ssl_context_(std::make_shared<boost::asio::ssl::context>(boost::asio::ssl::context::tls_server))
-  , acceptor_(context_)
+  , socket_server_(std::make_unique<SocketServer>())
 {
   if (config.tls)
   {
     makeCertificate();
   }
-  port_ = config.port;
-  listen();
+  listener_ = std::make_unique<TcpListener>(socket_server_->context(), config.host, config.port);
+  accept();
   nonce_ = newNonce();
-  thread_ = std::thread([this] {
-    auto work = boost::asio::make_work_guard(context_);
-    context_.run();
-  });
+  socket_server_->start();
 }
 
 HttpCameraServer::~HttpCameraServer()
 {
-  runOnServerThread([this] {
-    boost::system::error_code ignored;
-    acceptor_.close(ignored);
+  socket_server_->stop([this] {
+    listener_->close();
     while (!connections_.empty())
     {
       (*connections_.begin())->close();
     }
   });
-  context_.stop();
-  thread_.join();
 }
 
-void HttpCameraServer::listen()
+std::uint16_t HttpCameraServer::port() const
 {
-  const tcp::endpoint endpoint(boost::asio::ip::make_address(config_.host), port_);
-  acceptor_.open(endpoint.protocol());
-  acceptor_.set_option(tcp::acceptor::reuse_address(true));
-  acceptor_.bind(endpoint);
-  acceptor_.listen();
-  port_ = acceptor_.local_endpoint().port();  // a restart takes the same port
-  accept();
+  return listener_->port();
 }
 
 void HttpCameraServer::accept()
 {
-  acceptor_.async_accept([this](const boost::system::error_code& error, tcp::socket socket) {
-    if (error)
-    {
-      return;  // closed
-    }
+  listener_->accept([this](tcp::socket socket) {
     ++counters_.connections;
-    socket.set_option(tcp::no_delay(true));
     auto connection = std::make_shared<Connection>(*this, std::move(socket));
     connections_.insert(connection);
     connection->start();
-    accept();
   });
-}
-
-void HttpCameraServer::runOnServerThread(const std::function<void()>& work)
-{
-  if (std::this_thread::get_id() == thread_.get_id())
-  {
-    work();
-    return;
-  }
-  std::promise<void> done;
-  boost::asio::post(context_, [&] {
-    work();
-    done.set_value();
-  });
-  done.get_future().wait();
 }
 
 void HttpCameraServer::makeCertificate()
@@ -469,7 +437,7 @@ void HttpCameraServer::makeCertificate()
 
 void HttpCameraServer::renewCertificate()
 {
-  runOnServerThread([this] {
+  socket_server_->run([this] {
     makeCertificate();
     while (!connections_.empty())
     {
@@ -492,7 +460,7 @@ std::string HttpCameraServer::certificatePem() const
 
 std::string HttpCameraServer::url() const
 {
-  return (config_.tls ? "https://" : "http://") + config_.host + ":" + std::to_string(port_);
+  return (config_.tls ? "https://" : "http://") + config_.host + ":" + std::to_string(port());
 }
 
 void HttpCameraServer::writeCertificate(const std::string& path) const
@@ -532,7 +500,7 @@ void HttpCameraServer::setErrorStatus(unsigned status)
 
 void HttpCameraServer::dropConnections()
 {
-  runOnServerThread([this] {
+  socket_server_->run([this] {
     while (!connections_.empty())
     {
       (*connections_.begin())->close();
@@ -542,19 +510,19 @@ void HttpCameraServer::dropConnections()
 
 void HttpCameraServer::setListening(bool listening)
 {
-  runOnServerThread([this, listening] {
-    if (listening == acceptor_.is_open())
+  socket_server_->run([this, listening] {
+    if (listening == listener_->isOpen())
     {
       return;
     }
     if (listening)
     {
-      listen();
+      listener_->open();
+      accept();
     }
     else
     {
-      boost::system::error_code ignored;
-      acceptor_.close(ignored);
+      listener_->close();
     }
   });
 }
@@ -578,7 +546,7 @@ void HttpCameraServer::recordSecrets(const std::vector<std::string>& values)
 
 void HttpCameraServer::renewNonce()
 {
-  runOnServerThread([this] { nonce_ = newNonce(); });
+  socket_server_->run([this] { nonce_ = newNonce(); });
 }
 
 std::string HttpCameraServer::newNonce()

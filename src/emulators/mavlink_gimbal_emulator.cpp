@@ -14,8 +14,6 @@ namespace
 {
 using namespace mavlink;
 
-constexpr std::size_t MAX_DATAGRAM = 2048;
-constexpr double UDP_TICK = 0.01;  ///< s: the longest the UDP thread waits before looking at the clock again
 constexpr float UNCHANGED = -1.0f;
 constexpr float MANAGER_ITSELF = -2.0f;
 constexpr float RELEASE = -3.0f;
@@ -143,45 +141,39 @@ MavlinkGimbalEmulator::MavlinkGimbalEmulator(const MavlinkGimbalEmulatorConfig& 
     }
   }
 
+  DevicePortConfig port = config_.line;
   if (config_.transport == LinkKind::UDP)
   {
-    udp_.bind(config_.host, config_.port);
-    thread_ = std::thread(&MavlinkGimbalEmulator::runUdp, this);
-    return;
+    port.kind = DevicePortConfig::Kind::UDP;
+    port.host = config_.host;
+    port.port = config_.port;
   }
-  DevicePortConfig line = config_.line;
-  line.tick_period = 0.01;
+  port.tick_period = 0.01;
   DevicePort::Handlers handlers;
   handlers.on_bytes = [this](const std::uint8_t* data, std::size_t size, TimePoint) { receive(data, size); };
   handlers.on_tick = [this] { tick(); };
-  line_ = DevicePort::create(line, handlers);
-  line_->start();
+  port_ = DevicePort::create(port, handlers);
+  port_->start();
 }
 
 MavlinkGimbalEmulator::~MavlinkGimbalEmulator()
 {
-  running_ = false;
-  if (thread_.joinable())
-  {
-    udp_.interrupt();
-    thread_.join();
-  }
-  line_.reset();
+  destroyPort(port_);  // first: its thread calls back into this
 }
 
 std::string MavlinkGimbalEmulator::address() const
 {
-  return line_ ? line_->path() : udp_.localEndpoint().toString();
+  return port_->path();
 }
 
 std::uint16_t MavlinkGimbalEmulator::udpPort() const
 {
-  return line_ ? 0 : udp_.localEndpoint().port();
+  return port_->udpPort();
 }
 
 std::string MavlinkGimbalEmulator::path() const
 {
-  return line_ ? line_->path() : std::string();
+  return config_.transport == LinkKind::UDP ? std::string() : port_->path();
 }
 
 MavlinkGimbalEmulator::Gimbal& MavlinkGimbalEmulator::at(std::size_t index) const
@@ -197,19 +189,12 @@ MavlinkGimbalEmulator::Gimbal& MavlinkGimbalEmulator::at(std::size_t index) cons
 void MavlinkGimbalEmulator::setSilent(bool silent)
 {
   silent_ = silent;
-  if (line_)
-  {
-    line_->setSilent(silent);
-  }
+  port_->setSilent(silent);  // udp: datagrams go unread, so the sender does not become the peer
 }
 
 void MavlinkGimbalEmulator::setEndless(bool endless)
 {
-  endless_ = endless;
-  if (line_)
-  {
-    line_->setEndless(endless);
-  }
+  port_->setEndless(endless);
 }
 
 void MavlinkGimbalEmulator::setRefuse(bool refuse)
@@ -221,6 +206,34 @@ void MavlinkGimbalEmulator::setFaults(const SimFaults& faults, std::size_t gimba
 {
   std::lock_guard<std::mutex> lock(mutex_);
   at(gimbal).model.setFaults(faults, clock_->now());
+}
+
+bool MavlinkGimbalEmulator::faultSilence(bool on)
+{
+  setSilent(on);
+  return true;
+}
+
+bool MavlinkGimbalEmulator::faultEndless(bool on)
+{
+  setEndless(on);
+  return true;
+}
+
+bool MavlinkGimbalEmulator::faultFlood(bool on)
+{
+  setFlood(on ? FAULT_FLOOD_COPIES : 1);
+  return true;
+}
+
+bool MavlinkGimbalEmulator::faultModel(EmulatorFault fault, const SimFaults& faults)
+{
+  if (fault != EmulatorFault::IMPOSSIBLE)
+  {
+    return false;
+  }
+  setFaults(faults);
+  return true;
 }
 
 void MavlinkGimbalEmulator::giveControlTo(std::uint8_t system_id, std::uint8_t component_id, bool keep,
@@ -245,17 +258,17 @@ void MavlinkGimbalEmulator::releaseControl(std::size_t gimbal)
 
 void MavlinkGimbalEmulator::unplug()
 {
-  if (line_)
+  if (config_.transport != LinkKind::UDP)
   {
-    line_->unplug();
+    port_->unplug();
   }
 }
 
 void MavlinkGimbalEmulator::replug()
 {
-  if (line_)
+  if (config_.transport != LinkKind::UDP)
   {
-    line_->replug();
+    port_->replug();
   }
 }
 
@@ -282,32 +295,6 @@ MavlinkGimbalEmulatorCounters MavlinkGimbalEmulator::counters() const
 
 // ---------------------------------------------------------------- transports
 
-void MavlinkGimbalEmulator::runUdp()
-{
-  std::array<std::uint8_t, MAX_DATAGRAM> buffer{};
-  while (running_)
-  {
-    std::size_t size = 0;
-    UdpEndpoint from;
-    const ReceiveStatus status =
-        udp_.receive(buffer.data(), buffer.size(), size, from, static_cast<int>(UDP_TICK * 1000.0));
-    if (!running_)
-    {
-      break;
-    }
-    if (status == ReceiveStatus::DATAGRAM && !silent_)
-    {
-      {
-        std::lock_guard<std::mutex> lock(mutex_);
-        has_peer_ = true;  // the controller: replies and streams go where it sends from
-        peer_ = from;
-      }
-      receive(buffer.data(), size);
-    }
-    tick();
-  }
-}
-
 void MavlinkGimbalEmulator::receive(const std::uint8_t* data, std::size_t size)
 {
   if (silent_)
@@ -331,19 +318,7 @@ void MavlinkGimbalEmulator::send(std::uint8_t component, const Message& message)
     return;
   }
   const EncodedFrame frame = encode(FrameHeader{ sequence_++, config_.system_id, component }, message);
-  if (line_)
-  {
-    line_->send(frame.data(), frame.size);
-  }
-  else if (has_peer_ && endless_)
-  {
-    const std::vector<std::uint8_t> filler(frame.size, 'A');
-    udp_.sendTo(peer_, filler.data(), filler.size());
-  }
-  else if (has_peer_)
-  {
-    udp_.sendTo(peer_, frame.data(), frame.size);
-  }
+  port_->send(frame.data(), frame.size);  // udp: to the controller, once one has sent something
 }
 
 void MavlinkGimbalEmulator::tick()

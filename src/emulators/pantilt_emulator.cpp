@@ -9,7 +9,6 @@ namespace
 {
 using namespace cr::pantilt;
 
-constexpr std::size_t MAX_DATAGRAM = 2048;
 }  // namespace
 
 SimDeviceConfig PanTiltEmulatorConfig::defaultDevice()
@@ -23,59 +22,66 @@ SimDeviceConfig PanTiltEmulatorConfig::defaultDevice()
 PanTiltEmulator::PanTiltEmulator(const PanTiltEmulatorConfig& config, std::shared_ptr<const Clock> clock)
   : config_(config), clock_(std::move(clock)), pan_tilt_(config.device, clock_, config.format)
 {
+  DevicePortConfig port = config_.line;  // serial: SLIP frames on a pseudo-terminal
   if (!config_.serial)
   {
-    socket_.bind(config.host, config.port);
-    thread_ = std::thread(&PanTiltEmulator::run, this);
-    return;
+    port.kind = DevicePortConfig::Kind::UDP;  // a frame per datagram
+    port.host = config_.host;
+    port.port = config_.port;
   }
-  // A serial line: SLIP frames on a pseudo-terminal, whose I/O thread runs both handlers.
-  DevicePortConfig line = config_.line;
-  line.tick_period = 0.01;
+  port.tick_period = 0.01;
   DevicePort::Handlers handlers;
-  handlers.on_bytes = [this](const std::uint8_t* data, std::size_t size, TimePoint) {
-    slip_.feed(data, size,
-               [this](const std::uint8_t* frame, std::size_t length) { handleDatagram(frame, length, UdpEndpoint{}); });
-  };
+  if (config_.serial)
+  {
+    handlers.on_bytes = [this](const std::uint8_t* data, std::size_t size, TimePoint) {
+      slip_.feed(data, size,
+                 [this](const std::uint8_t* frame, std::size_t length) { handleDatagram(frame, length, ""); });
+    };
+  }
+  else
+  {
+    handlers.on_bytes = [this](const std::uint8_t* data, std::size_t size, TimePoint) {
+      handleDatagram(data, size, port_->sender());
+    };
+  }
   handlers.on_tick = [this] { sendDueReplies(clock_->now()); };
-  line_ = DevicePort::create(line, handlers);
-  line_->start();
+  port_ = DevicePort::create(port, handlers);
+  port_->start();
 }
 
 PanTiltEmulator::~PanTiltEmulator()
 {
-  running_ = false;
-  if (thread_.joinable())
-  {
-    socket_.interrupt();
-    thread_.join();
-  }
-  line_.reset();
+  destroyPort(port_);  // first: its thread calls back into this
 }
 
-UdpEndpoint PanTiltEmulator::endpoint() const
+std::uint16_t PanTiltEmulator::udpPort() const
 {
-  return socket_.localEndpoint();
+  return port_->udpPort();
+}
+
+std::string PanTiltEmulator::address() const
+{
+  return config_.serial ? std::string() : port_->path();
 }
 
 std::string PanTiltEmulator::path() const
 {
-  return line_ ? line_->path() : std::string();
+  return config_.serial ? port_->path() : std::string();
 }
 
 void PanTiltEmulator::unplug()
 {
-  if (line_)
+  if (config_.serial)
   {
-    line_->unplug();
+    port_->unplug();
   }
 }
 
 void PanTiltEmulator::replug()
 {
-  if (line_)
+  if (config_.serial)
   {
-    line_->replug();
+    port_->replug();
   }
 }
 
@@ -86,11 +92,7 @@ void PanTiltEmulator::setSilent(bool silent)
 
 void PanTiltEmulator::setEndless(bool endless)
 {
-  endless_ = endless;
-  if (line_)
-  {
-    line_->setEndless(endless);
-  }
+  port_->setEndless(endless);  // a datagram of noise; on the line, a frame that never ends
 }
 
 void PanTiltEmulator::setDropRatio(double ratio)
@@ -103,36 +105,49 @@ void PanTiltEmulator::setReplyDelay(double seconds)
   reply_delay_ = std::max(0.0, seconds);
 }
 
-void PanTiltEmulator::sendRaw(const UdpEndpoint& to, const std::uint8_t* data, std::size_t size)
+void PanTiltEmulator::sendRaw(const std::string& to, const std::uint8_t* data, std::size_t size)
 {
-  socket_.sendTo(to, data, size);
+  port_->sendTo(to, data, size);
+}
+
+bool PanTiltEmulator::faultSilence(bool on)
+{
+  setSilent(on);
+  return true;
+}
+
+bool PanTiltEmulator::faultDrop(bool on)
+{
+  setDropRatio(on ? FAULT_DROP_RATIO : 0.0);
+  return true;
+}
+
+bool PanTiltEmulator::faultEndless(bool on)
+{
+  setEndless(on);
+  return true;
+}
+
+bool PanTiltEmulator::faultFlood(bool on)
+{
+  setFlood(on ? FAULT_FLOOD_COPIES : 1);
+  return true;
+}
+
+bool PanTiltEmulator::faultModel(EmulatorFault fault, const SimFaults& faults)
+{
+  if (fault != EmulatorFault::IMPOSSIBLE)
+  {
+    return false;
+  }
+  pan_tilt_.setFaults(faults);
+  return true;
 }
 
 PanTiltEmulatorCounters PanTiltEmulator::counters() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
   return counters_;
-}
-
-void PanTiltEmulator::run()
-{
-  std::array<std::uint8_t, MAX_DATAGRAM> buffer{};
-  while (running_)
-  {
-    std::size_t size = 0;
-    UdpEndpoint from;
-    const ReceiveStatus status =
-        socket_.receive(buffer.data(), buffer.size(), size, from, millisecondsToNextEvent(clock_->now()));
-    if (!running_)
-    {
-      break;
-    }
-    if (status == ReceiveStatus::DATAGRAM)
-    {
-      handleDatagram(buffer.data(), size, from);
-    }
-    sendDueReplies(clock_->now());
-  }
 }
 
 void PanTiltEmulator::sendDueReplies(TimePoint now)
@@ -144,7 +159,12 @@ void PanTiltEmulator::sendDueReplies(TimePoint now)
   }
   if (has_client_ && config_.state_period > 0.0 && now >= next_state_at_)
   {
-    next_state_at_ = addSeconds(now, config_.state_period);
+    // On the period's beat, not a tick late each time (the tick is 10 ms), unless the device fell a period behind.
+    next_state_at_ = addSeconds(next_state_at_, config_.state_period);
+    if (next_state_at_ < now)
+    {
+      next_state_at_ = addSeconds(now, config_.state_period);
+    }
     if (!silent_)
     {
       sendState(last_client_);
@@ -152,22 +172,7 @@ void PanTiltEmulator::sendDueReplies(TimePoint now)
   }
 }
 
-int PanTiltEmulator::millisecondsToNextEvent(TimePoint now) const
-{
-  double wait = -1.0;  // no deadline: only a datagram or interrupt() wakes the thread
-  if (has_client_ && config_.state_period > 0.0)
-  {
-    wait = std::max(0.0, secondsBetween(now, next_state_at_));
-  }
-  if (!pending_replies_.empty())
-  {
-    const double until_reply = std::max(0.0, secondsBetween(now, pending_replies_.front().send_at));
-    wait = wait < 0.0 ? until_reply : std::min(wait, until_reply);
-  }
-  return wait < 0.0 ? -1 : static_cast<int>(std::ceil(wait * 1000.0));
-}
-
-void PanTiltEmulator::handleDatagram(const std::uint8_t* data, std::size_t size, const UdpEndpoint& from)
+void PanTiltEmulator::handleDatagram(const std::uint8_t* data, std::size_t size, const std::string& from)
 {
   const TimePoint now = clock_->now();
   received_.add(ReceivedDatagram{ now, std::vector<std::uint8_t>(data, data + size) });
@@ -238,7 +243,7 @@ void PanTiltEmulator::handleDatagram(const std::uint8_t* data, std::size_t size,
   reply(from, now);
 }
 
-void PanTiltEmulator::reply(const UdpEndpoint& to, TimePoint now)
+void PanTiltEmulator::reply(const std::string& to, TimePoint now)
 {
   if (std::uniform_real_distribution<double>(0.0, 1.0)(random_) < drop_ratio_)
   {
@@ -255,35 +260,27 @@ void PanTiltEmulator::reply(const UdpEndpoint& to, TimePoint now)
   sendState(to);
 }
 
-void PanTiltEmulator::sendState(const UdpEndpoint& to)
+void PanTiltEmulator::sendState(const std::string& to)
 {
   PanTiltParams params;
   pan_tilt_.getParams(params);
   std::uint8_t frame[MAX_PARAMS_FRAME_SIZE];
   int size = 0;
   params.encode(frame, sizeof(frame), size, nullptr, config_.format);
-  if (!line_ && endless_)
-  {
-    std::fill(frame, frame + size, 'A');  // a datagram of noise (on the line, the port fills)
-  }
-  if (line_)
+  const std::uint8_t* bytes = frame;
+  std::size_t length = static_cast<std::size_t>(size);
+  if (config_.serial)
   {
     framed_.clear();
-    slip::encode(frame, static_cast<std::size_t>(size), framed_);
-    line_->send(framed_.data(), framed_.size());
+    slip::encode(frame, length, framed_);
+    bytes = framed_.data();
+    length = framed_.size();
+  }
+  for (unsigned copy = 0; copy < flood_; ++copy)
+  {
+    port_->sendTo(to, bytes, length);
     std::lock_guard<std::mutex> lock(mutex_);
     ++counters_.replies_sent;
-  }
-  else
-  {
-    for (unsigned copy = 0; copy < flood_; ++copy)
-    {
-      if (socket_.sendTo(to, frame, static_cast<std::size_t>(size)))
-      {
-        std::lock_guard<std::mutex> lock(mutex_);
-        ++counters_.replies_sent;
-      }
-    }
   }
 }
 

@@ -21,9 +21,10 @@ SimDeviceConfig modelConfig(const PelcoDEmulatorConfig& config)
 PelcoDEmulator::PelcoDEmulator(const PelcoDEmulatorConfig& config)
   : LineEmulator(modelConfig(config)), config_(config), parser_(config.address, false)
 {
-  openPort(config.port,
-           DevicePort::Handlers{
-               [this](const std::uint8_t* data, std::size_t size, TimePoint at) { onBytes(data, size, at); }, {}, {} });
+  openPort(
+      config.port,
+      DevicePort::Handlers{
+          [this](const std::uint8_t* data, std::size_t size, TimePoint at) { onBytes(data, size, at); }, {}, {}, {} });
 }
 
 PelcoDEmulator::~PelcoDEmulator()

@@ -1,6 +1,5 @@
 #include "socket_server_port.h"
 
-#include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/post.hpp>
 
 #include "ptz_action_server/core/units.h"
@@ -8,21 +7,20 @@
 namespace ptz_action_server
 {
 SocketServerPort::SocketServerPort(const DevicePortConfig& config, Handlers handlers)
-  : config_(config), handlers_(std::move(handlers)), port_(config.port), tick_timer_(context_)
+  : config_(config)
+  , handlers_(std::move(handlers))
+  , context_(server_.context())
+  , port_(config.port)
+  , tick_timer_(context_)
 {
 }
 
 void SocketServerPort::stopThread(const std::function<void()>& close_sockets)
 {
-  if (thread_.joinable())
-  {
-    boost::asio::post(context_, [this, &close_sockets] {
-      close_sockets();
-      tick_timer_.cancel();
-      context_.stop();
-    });
-    thread_.join();
-  }
+  server_.stop([this, &close_sockets] {
+    close_sockets();
+    tick_timer_.cancel();
+  });
 }
 
 void SocketServerPort::start()
@@ -34,10 +32,23 @@ void SocketServerPort::start()
       tick();
     }
   });
-  thread_ = std::thread([this] {
-    auto work = boost::asio::make_work_guard(context_);
-    context_.run();
-  });
+  server_.start();
+}
+
+void SocketServerPort::send(const std::uint8_t* data, std::size_t size)
+{
+  if (!silent() && size > 0)
+  {
+    post(std::vector<std::uint8_t>(data, data + size), std::string());
+  }
+}
+
+void SocketServerPort::sendTo(const std::string& peer, const std::uint8_t* data, std::size_t size)
+{
+  if (!silent())  // a datagram may be empty
+  {
+    post(std::vector<std::uint8_t>(data, data + size), peer);
+  }
 }
 
 std::string SocketServerPort::path() const

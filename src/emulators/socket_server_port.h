@@ -1,17 +1,17 @@
 /**
  * \file
- * \brief What the emulators' network ports share: the Boost.Asio context, its thread, the bound port and the tick.
+ * \brief What the emulators' network ports share: the socket server (context and thread), the bound port and the tick.
  */
 #pragma once
 
 #include <functional>
 #include <string>
-#include <thread>
+#include <vector>
 
-#include <boost/asio/io_context.hpp>
 #include <boost/asio/steady_timer.hpp>
 
 #include "ptz_action_server/emulators/device_port.h"
+#include "socket_server.h"
 
 namespace ptz_action_server
 {
@@ -30,6 +30,9 @@ public:
   {
     return 0.0;  // bytes are not paced on a network
   }
+  /// To the last sender (udp) or the newest client (tcp).
+  void send(const std::uint8_t* data, std::size_t size) override;
+  void sendTo(const std::string& peer, const std::uint8_t* data, std::size_t size) override;
 
 protected:
   SocketServerPort(const DevicePortConfig& config, Handlers handlers);
@@ -37,17 +40,19 @@ protected:
   void stopThread(const std::function<void()>& close_sockets);
   /// Starts the first read or accept (I/O thread).
   virtual void beginServing() = 0;
+  /// Sends \p bytes (garbled as configured) to \p peer ("": the last sender or newest client). Any thread.
+  virtual void post(std::vector<std::uint8_t> bytes, const std::string& peer) = 0;
 
   const DevicePortConfig config_;
   const Handlers handlers_;
-  boost::asio::io_context context_;
-  std::uint16_t port_ = 0;  ///< set by the subclass once bound
+  SocketServer server_;
+  boost::asio::io_context& context_;  ///< server_'s
+  std::uint16_t port_ = 0;            ///< set by the subclass once bound
 
 private:
   void tick();
 
   boost::asio::steady_timer tick_timer_;
-  std::thread thread_;
 };
 
 }  // namespace ptz_action_server

@@ -1,5 +1,7 @@
 #include "tcp_server_port.h"
 
+#include <algorithm>
+
 #include <boost/asio/post.hpp>
 #include <boost/asio/write.hpp>
 
@@ -8,149 +10,182 @@ namespace ptz_action_server
 using boost::asio::ip::tcp;
 
 TcpServerPort::TcpServerPort(const DevicePortConfig& config, Handlers handlers)
-  : SocketServerPort(config, std::move(handlers)), acceptor_(context_), client_(context_)
+  : SocketServerPort(config, std::move(handlers))
+  , listener_(context_, config.host, config.port)  // the port is known (and taken) before anyone asks for it
 {
-  listen();  // in the constructor: the port is known (and taken) before anyone asks for it
+  port_ = listener_.port();
 }
 
 TcpServerPort::~TcpServerPort()
 {
   stopThread([this] {
-    closeClient();
-    boost::system::error_code ignored;
-    acceptor_.close(ignored);
+    closeAll(false);  // the owner is going: no handler runs any more
+    listener_.close();
   });
 }
 
-void TcpServerPort::listen()
+template <class Handler>
+void TcpServerPort::on(const Client& client, const Handler& handler)
 {
-  const tcp::endpoint endpoint(boost::asio::ip::make_address(config_.host), port_);
-  acceptor_.open(endpoint.protocol());
-  acceptor_.set_option(tcp::acceptor::reuse_address(true));
-  acceptor_.bind(endpoint);
-  acceptor_.listen();
-  port_ = acceptor_.local_endpoint().port();
+  current_ = &client;
+  handler();
+  current_ = nullptr;
+}
+
+std::string TcpServerPort::sender() const
+{
+  return current_ != nullptr ? current_->peer : std::string();
 }
 
 void TcpServerPort::accept()
 {
-  acceptor_.async_accept([this](const boost::system::error_code& error, tcp::socket socket) {
-    if (error == boost::asio::error::operation_aborted || !acceptor_.is_open())
+  listener_.accept([this](tcp::socket socket) {
+    if (!config_.many_clients)
     {
-      return;
+      closeAll(true);  // one client at a time: the newest wins
     }
-    if (!error)
+    auto client = std::make_shared<Client>(std::move(socket));
+    boost::system::error_code ignored;
+    const tcp::endpoint remote = client->socket.remote_endpoint(ignored);
+    client->peer = remote.address().to_string() + ":" + std::to_string(remote.port());
+    clients_.push_back(client);
+    if (handlers_.on_connect)
     {
-      closeClient();  // one client at a time: the newest wins
-      client_ = std::move(socket);
-      boost::system::error_code ignored;
-      client_.set_option(tcp::no_delay(true), ignored);
-      connected_ = true;
-      ++client_serial_;
-      if (handlers_.on_connect)
-      {
-        handlers_.on_connect();
-      }
-      read();
+      on(*client, handlers_.on_connect);
     }
-    accept();
+    if (client->open)
+    {
+      read(client);
+    }
   });
 }
 
-void TcpServerPort::read()
+void TcpServerPort::read(const ClientPtr& client)
 {
-  client_.async_read_some(boost::asio::buffer(buffer_),
-                          [this, serial = client_serial_](const boost::system::error_code& error, std::size_t size) {
-                            if (serial != client_serial_ || !connected_)
-                            {
-                              return;
-                            }
-                            if (error)
-                            {
-                              closeClient();
-                              return;
-                            }
-                            if (!silent())
-                            {
-                              handlers_.on_bytes(buffer_.data(), size, SteadyClock::now());
-                            }
-                            read();
-                          });
+  client->socket.async_read_some(
+      boost::asio::buffer(client->buffer), [this, client](const boost::system::error_code& error, std::size_t size) {
+        if (!client->open)
+        {
+          return;
+        }
+        if (error)
+        {
+          close(client);
+          return;
+        }
+        if (!silent())
+        {
+          on(*client, [&] { handlers_.on_bytes(client->buffer.data(), size, SteadyClock::now()); });
+        }
+        if (client->open)
+        {
+          read(client);
+        }
+      });
 }
 
-void TcpServerPort::send(const std::uint8_t* data, std::size_t size)
+void TcpServerPort::post(std::vector<std::uint8_t> bytes, const std::string& peer)
 {
-  if (silent() || size == 0)
+  if (bytes.empty())
   {
     return;
   }
-  std::vector<std::uint8_t> bytes(data, data + size);
-  boost::asio::post(context_, [this, bytes = std::move(bytes)]() mutable {
-    if (!connected_)
+  boost::asio::post(context_, [this, bytes = std::move(bytes), peer]() mutable {
+    const auto found = peer.empty() ? clients_.rbegin() :
+                                      std::find_if(clients_.rbegin(), clients_.rend(),
+                                                   [&peer](const ClientPtr& client) { return client->peer == peer; });
+    if (found == clients_.rend())
     {
-      return;
+      return;  // nobody there: lost, as on a real line
     }
+    const ClientPtr client = *found;
     garble(bytes.data(), bytes.size());
-    writes_.push_back(std::move(bytes));
-    if (writes_.size() == 1)
+    client->writes.push_back(std::move(bytes));
+    if (client->writes.size() == 1)
     {
-      writeNext();
+      writeNext(client);
     }
   });
 }
 
-void TcpServerPort::writeNext()
+void TcpServerPort::writeNext(const ClientPtr& client)
 {
-  boost::asio::async_write(client_, boost::asio::buffer(writes_.front()),
-                           [this, serial = client_serial_](const boost::system::error_code& error, std::size_t) {
-                             if (serial != client_serial_ || !connected_)
+  boost::asio::async_write(client->socket, boost::asio::buffer(client->writes.front()),
+                           [this, client](const boost::system::error_code& error, std::size_t) {
+                             if (!client->open)
                              {
                                return;
                              }
                              if (error)
                              {
-                               closeClient();
+                               close(client);
                                return;
                              }
-                             writes_.pop_front();
-                             if (!writes_.empty())
+                             client->writes.pop_front();
+                             if (!client->writes.empty())
                              {
-                               writeNext();
+                               writeNext(client);
                              }
                            });
 }
 
-void TcpServerPort::closeClient()
+void TcpServerPort::close(const ClientPtr& client, bool notify)
 {
-  if (!connected_)
+  if (!client->open)
   {
     return;
   }
-  connected_ = false;
-  ++client_serial_;
-  writes_.clear();
+  client->open = false;
+  client->writes.clear();
   boost::system::error_code ignored;
-  client_.shutdown(tcp::socket::shutdown_both, ignored);
-  client_.close(ignored);
+  client->socket.shutdown(tcp::socket::shutdown_both, ignored);
+  client->socket.close(ignored);
+  clients_.erase(std::remove(clients_.begin(), clients_.end(), client), clients_.end());
+  if (notify && handlers_.on_disconnect)
+  {
+    on(*client, handlers_.on_disconnect);
+  }
+}
+
+void TcpServerPort::closeAll(bool notify)
+{
+  const std::vector<ClientPtr> clients = clients_;
+  for (const ClientPtr& client : clients)
+  {
+    close(client, notify);
+  }
+}
+
+void TcpServerPort::disconnect(const std::string& peer)
+{
+  boost::asio::post(context_, [this, peer] {
+    const std::vector<ClientPtr> clients = clients_;
+    for (const ClientPtr& client : clients)
+    {
+      if (client->peer == peer)
+      {
+        close(client);
+      }
+    }
+  });
 }
 
 void TcpServerPort::unplug()
 {
   boost::asio::post(context_, [this] {
-    closeClient();
-    boost::system::error_code ignored;
-    acceptor_.close(ignored);
+    closeAll(true);
+    listener_.close();
   });
 }
 
 void TcpServerPort::replug()
 {
   boost::asio::post(context_, [this] {
-    if (acceptor_.is_open())
+    if (listener_.isOpen())
     {
       return;
     }
-    listen();
+    listener_.open();
     accept();
   });
 }

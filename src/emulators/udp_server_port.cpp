@@ -1,5 +1,7 @@
 #include "udp_server_port.h"
 
+#include <string>
+
 #include <boost/asio/post.hpp>
 
 namespace ptz_action_server
@@ -47,21 +49,41 @@ void UdpServerPort::receive()
                              });
 }
 
-void UdpServerPort::send(const std::uint8_t* data, std::size_t size)
+std::string UdpServerPort::sender() const
 {
-  if (silent() || size == 0)
-  {
-    return;
-  }
-  std::vector<std::uint8_t> bytes(data, data + size);
-  boost::asio::post(context_, [this, bytes = std::move(bytes)]() mutable {
-    if (!has_peer_ || !socket_.is_open())
+  return sender_.address().to_string() + ":" + std::to_string(sender_.port());
+}
+
+void UdpServerPort::post(std::vector<std::uint8_t> bytes, const std::string& to)
+{
+  boost::asio::post(context_, [this, bytes = std::move(bytes), to]() mutable {
+    udp::endpoint destination = peer_;
+    if (!to.empty())
+    {
+      const std::size_t colon = to.rfind(':');
+      if (colon == std::string::npos)
+      {
+        return;
+      }
+      boost::system::error_code invalid;
+      destination = udp::endpoint(boost::asio::ip::make_address(to.substr(0, colon), invalid),
+                                  static_cast<std::uint16_t>(std::stoul(to.substr(colon + 1))));
+      if (invalid)
+      {
+        return;
+      }
+    }
+    else if (!has_peer_)
+    {
+      return;
+    }
+    if (!socket_.is_open())
     {
       return;
     }
     garble(bytes.data(), bytes.size());
     boost::system::error_code ignored;
-    socket_.send_to(boost::asio::buffer(bytes), peer_, 0, ignored);  // a datagram never blocks for long
+    socket_.send_to(boost::asio::buffer(bytes), destination, 0, ignored);  // a datagram never blocks for long
   });
 }
 

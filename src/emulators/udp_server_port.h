@@ -30,7 +30,7 @@ public:
   {
     return port_;
   }
-  void send(const std::uint8_t* data, std::size_t size) override;
+  std::string sender() const override;
   void unplug() override;
   void replug() override;
 
@@ -41,6 +41,7 @@ private:
   }
   void bind();
   void receive();
+  void post(std::vector<std::uint8_t> bytes, const std::string& to) override;
 
   boost::asio::ip::udp::socket socket_;
   boost::asio::ip::udp::endpoint sender_;  ///< I/O thread: where the datagram being read came from

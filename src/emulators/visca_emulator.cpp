@@ -47,6 +47,7 @@ ViscaEmulator::ViscaEmulator(const ViscaEmulatorConfig& config)
                                                onBytes(data, size, at);
                                              },
                                               [this] { onTick(); },
+                                              {},
                                               {} });
 }
 

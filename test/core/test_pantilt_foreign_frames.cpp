@@ -16,6 +16,7 @@
 
 #include "ptz_action_server/core/pantilt/pantilt_protocol.h"
 #include "ptz_action_server/emulators/pantilt_emulator.h"
+#include "ptz_action_server/emulators/udp_socket.h"
 
 using namespace ptz_action_server;
 using namespace cr::pantilt;
@@ -169,7 +170,9 @@ TEST_P(PanTiltForeignFramesTest, TheDeviceCountsThemAndExecutesNothing)
   PanTiltEmulator device(config);
   UdpSocket client;
   client.bind("127.0.0.1", 0);
-  auto send = [&](const Bytes& frame) { ASSERT_TRUE(client.sendTo(device.endpoint(), frame.data(), frame.size())); };
+  auto send = [&](const Bytes& frame) {
+    ASSERT_TRUE(client.sendTo(UdpEndpoint::resolve("127.0.0.1", device.udpPort()), frame.data(), frame.size()));
+  };
   // Every valid datagram has had its reply (the count of a reply follows the count of its datagram); a foreign frame
   // answered would keep this false.
   auto all_answered = [&] {
@@ -231,7 +234,7 @@ TEST_P(PanTiltForeignFramesTest, TheBackendCountsThemAndTakesNoStateFromThem)
   emulator_config.format = receiver();
   emulator_config.state_period = 0.05;
   auto emulator = std::make_unique<PanTiltEmulator>(emulator_config);
-  const std::uint16_t device_port = emulator->endpoint().port();
+  const std::uint16_t device_port = emulator->udpPort();
   DeviceConfig<PanTiltProtocol> config;
   config.settings.format = receiver();
   config.link.port = device_port;
@@ -287,7 +290,7 @@ TEST_P(PanTiltForeignFramesTest, ABackendAndADeviceOfDifferentFormatsNeverWorkTo
   PanTiltEmulator device(emulator_config);
   DeviceConfig<PanTiltProtocol> config;
   config.settings.format = receiver();
-  config.link.port = device.endpoint().port();
+  config.link.port = device.udpPort();
   config.link.local_host = "127.0.0.1";
   // The seed and v1.0 share their version bytes, so each answers the other's state request, and the backend gives
   // up at the first answer it recognises as another format. Between v1.1 and the others every frame is foreign:

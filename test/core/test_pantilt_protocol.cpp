@@ -13,6 +13,7 @@
 
 #include "ptz_action_server/core/pantilt/pantilt_protocol.h"
 #include "ptz_action_server/emulators/pantilt_emulator.h"
+#include "ptz_action_server/emulators/udp_socket.h"
 
 using namespace ptz_action_server;
 using namespace cr::pantilt;
@@ -62,7 +63,7 @@ protected:
     device_ = std::make_unique<PanTiltEmulator>(device_config);
     DeviceConfig<PanTiltProtocol> config;
     config.settings.format = GetParam();
-    config.link.port = device_->endpoint().port();
+    config.link.port = device_->udpPort();
     config.link.local_host = "127.0.0.1";
     config.link.local_port = localPort();
     config.session.state_timeout = 1.0;  // generous: a busy test machine may starve the I/O threads
@@ -151,6 +152,7 @@ TEST_P(PanTiltUdpTest, MalformedDatagramsAreCountedOnceAndDropped)
 {
   const WireFormat format = GetParam();
   const UdpEndpoint backend_endpoint = UdpEndpoint::resolve("127.0.0.1", local_port_);
+  const std::string backend_address = backend_endpoint.toString();
   UdpSocket stranger;
   stranger.bind("127.0.0.1", 0);
 
@@ -181,7 +183,7 @@ TEST_P(PanTiltUdpTest, MalformedDatagramsAreCountedOnceAndDropped)
     {
       stranger.sendTo(backend_endpoint, valid.data(), valid.size());  // a valid frame, but from a stranger
       const Bytes& garbage = *from_device[static_cast<std::size_t>(sent / 2 + index) % from_device.size()];
-      device_->sendRaw(backend_endpoint, garbage.data(), garbage.size());
+      device_->sendRaw(backend_address, garbage.data(), garbage.size());
     }
     ASSERT_TRUE(waitUntil([&] { return dropped() - dropped_before >= std::uint64_t(sent + 2 * BATCH); }, 10.0))
         << "the backend stopped counting at " << dropped() - dropped_before << " size " << counters().bad_size
@@ -206,7 +208,7 @@ TEST_P(PanTiltUdpTest, MalformedDatagramsAreCountedOnceAndDropped)
   const TimePoint silenced = SteadyClock::now();
   EXPECT_TRUE(waitUntil(
       [&] {
-        device_->sendRaw(backend_endpoint, bad_header.data(), bad_header.size());
+        device_->sendRaw(backend_address, bad_header.data(), bad_header.size());
         stranger.sendTo(backend_endpoint, valid.data(), valid.size());
         return !backend_->sample().link_up && secondsBetween(silenced, SteadyClock::now()) > 0.8;
       },

@@ -11,6 +11,7 @@
 
 #include "ptz_action_server/core/axis/vapix_codec.h"
 #include "ptz_action_server/core/http/crypto.h"
+#include "ptz_action_server/core/parse_number.h"
 #include "ptz_action_server/emulators/http_camera_server.h"
 
 namespace ptz_action_server

@@ -55,7 +55,7 @@ struct AxisCameraEmulatorConfig
  * body as the camera words it. `/axis-cgi/param.cgi?action=list&group=root.Brand` answers the brand parameters. Other
  * paths: 404. Thread-safe.
  */
-class AxisCameraEmulator
+class AxisCameraEmulator : public HttpCameraFaults<AxisCameraEmulator>
 {
 public:
   explicit AxisCameraEmulator(const AxisCameraEmulatorConfig& config,

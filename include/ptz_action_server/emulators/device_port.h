@@ -22,7 +22,7 @@ struct DevicePortConfig
   enum class Kind
   {
     PTY,  ///< a pseudo-terminal (a serial line)
-    TCP,  ///< a TCP server; one client at a time, a new one replaces the old
+    TCP,  ///< a TCP server; one client at a time, a new one replaces the old (unless many_clients)
     UDP,  ///< a UDP socket; answers go to whoever wrote last
   };
   Kind kind = Kind::PTY;
@@ -34,6 +34,7 @@ struct DevicePortConfig
   unsigned baud = 9600;            ///< pty: bytes are paced at 10 bits each (8N1), as a real line does
   std::string host = "127.0.0.1";  ///< tcp, udp: where to listen
   std::uint16_t port = 0;          ///< tcp, udp: 0 = any free port (see tcpPort(), udpPort())
+  bool many_clients = false;       ///< tcp: every client served at once (sender(), sendTo(), disconnect())
   double tick_period = 0.05;       ///< s between tick handler calls, for devices that report on their own
 };
 
@@ -51,8 +52,9 @@ public:
   struct Handlers
   {
     BytesHandler on_bytes;
-    std::function<void()> on_tick;     ///< every tick_period (optional)
-    std::function<void()> on_connect;  ///< tcp: a client connected (optional)
+    std::function<void()> on_tick;        ///< every tick_period (optional)
+    std::function<void()> on_connect;     ///< tcp: a client connected (optional; sender() names it)
+    std::function<void()> on_disconnect;  ///< tcp: a client's connection closed (optional; sender() names it)
   };
 
   static std::unique_ptr<DevicePort> create(const DevicePortConfig& config, Handlers handlers);
@@ -80,6 +82,22 @@ public:
   void send(const std::string& text)
   {
     send(reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
+  }
+  /// udp, tcp: the client a handler runs for (the datagram's sender; the connection's other end), as "host:port"
+  /// (I/O thread, inside a handler); "" elsewhere.
+  virtual std::string sender() const
+  {
+    return std::string();
+  }
+  /// udp, tcp: to \p peer ("host:port", as sender() gives it) rather than to the last sender or the newest client
+  /// (lost if there is no such connection); elsewhere the same as send(). Any thread.
+  virtual void sendTo(const std::string& /*peer*/, const std::uint8_t* data, std::size_t size)
+  {
+    send(data, size);
+  }
+  /// tcp: closes \p peer's connection (on_disconnect follows); nothing elsewhere. Any thread.
+  virtual void disconnect(const std::string& /*peer*/)
+  {
   }
   /// The client sees its device vanish.
   virtual void unplug() = 0;
@@ -124,5 +142,16 @@ private:
   std::atomic<std::uint64_t> bytes_garbled_{ 0 };
   std::mt19937 random_{ 4242 };
 };
+
+/**
+ * \brief Destroys \p port, which keeps pointing at it until its I/O thread has stopped: the handlers that still run
+ * meanwhile (a close already queued, a datagram being answered) may answer through it. What an owner's destructor
+ * does first (unique_ptr::reset() would let go of the pointer before the thread stops).
+ */
+inline void destroyPort(std::unique_ptr<DevicePort>& port)
+{
+  delete port.get();
+  static_cast<void>(port.release());
+}
 
 }  // namespace ptz_action_server

@@ -6,20 +6,15 @@
 #pragma once
 
 #include <atomic>
-#include <condition_variable>
-#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <thread>
-#include <tuple>
+#include <string>
 #include <vector>
 
-#include <boost/asio/io_context.hpp>
-#include <boost/asio/ip/tcp.hpp>
-#include <boost/asio/ip/udp.hpp>
-
 #include "ptz_action_server/core/transport/link.h"
+#include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/emulator_faults.h"
 #include "ptz_action_server/emulators/received_log.h"
 #include "ptz_action_server/core/digiview/digiview_codec.h"
 #include "ptz_action_server/core/sim_device_model.h"
@@ -63,20 +58,19 @@ struct ReceivedMessage
  * GET_INTERVAL, answered by its reports only; 1.0, 1.1: a GET with interval_ms, answered at once too; at least 100 ms
  * subscribes, 0 cancels, a request with less is ignored), CHECKSUM_ERROR for a bad checksum, DATA_ERROR for data out of
  * range, UNKNOWN for types it does not know or model, FORBIDDEN for SETs while told to refuse, and QUIT closes the
- * connection. Requests about an unknown stream or camera are ignored, as the seed says. Owns its I/O thread.
+ * connection. Requests about an unknown stream or camera are ignored, as the seed says. Every client is served at
+ * once (a session per TCP connection or UDP peer). Its DevicePort owns the I/O thread; subscriptions are kept on
+ * its tick.
  */
-class DigiViewEmulator
+class DigiViewEmulator : public EmulatorFaults
 {
 public:
   explicit DigiViewEmulator(const DigiViewEmulatorConfig& config);
-  ~DigiViewEmulator();
+  ~DigiViewEmulator() override;
   DigiViewEmulator(const DigiViewEmulator&) = delete;
   DigiViewEmulator& operator=(const DigiViewEmulator&) = delete;
 
-  std::uint16_t port() const
-  {
-    return port_;
-  }
+  std::uint16_t port() const;
 
   /// Silent: reads and ignores everything, sends nothing (subscriptions pause).
   void setSilent(bool silent);
@@ -111,43 +105,44 @@ public:
   PtzSample view(const std::string& stream, std::uint8_t cam_id) const;
 
 private:
+  // Faults: no garbage mode; no slow replies (the device pushes its state).
+  bool faultSilence(bool on) override;
+  bool faultDrop(bool on) override;  ///< every TCP connection closed
+  bool faultEndless(bool on) override;
+  bool faultFlood(bool on) override;
+  bool faultModel(EmulatorFault fault, const SimFaults& faults) override;
+
   struct Subscription;
   struct Session;
   using SessionPtr = std::shared_ptr<Session>;
 
-  void accept();
-  void readTcp(const SessionPtr& session);
-  void readUdp();
+  /// The port's handlers (I/O thread).
+  void received(const std::uint8_t* bytes, std::size_t size);
+  void tick();
+  /// The session of the client a handler runs for (a new one for a new UDP peer).
+  SessionPtr session();
   void handle(const SessionPtr& session, const std::uint8_t* bytes, std::size_t size);
   void reply(const SessionPtr& session, const digiview::Message& message);
-  void writeNext(const SessionPtr& session);
-  void waitSubscription(const SessionPtr& session, const std::tuple<int, std::string, std::uint8_t>& key);
-  void closeSession(const SessionPtr& session);
+  /// Forgets \p session; \p disconnect: closes its TCP connection too (QUIT).
+  void closeSession(const SessionPtr& session, bool disconnect);
   void subscribe(const SessionPtr& session, const digiview::IntervalRequest& request);
   /// CURRENT_PARAMETERS of \p param for \p camera, or false if there is no such view / param.
   bool current(digiview::ParamType param, const digiview::CameraId& camera, digiview::Message& message);
   SimDeviceModel* model(const digiview::CameraId& camera);
 
   const DigiViewEmulatorConfig config_;
-  boost::asio::io_context context_;
-  boost::asio::ip::tcp::acceptor acceptor_;
-  boost::asio::ip::udp::socket udp_;
-  std::uint16_t port_ = 0;
-  std::array<std::uint8_t, 2048> udp_buffer_{};
-  boost::asio::ip::udp::endpoint udp_peer_;
 
   std::atomic<bool> silent_{ false };
   std::atomic<bool> endless_{ false };
   std::atomic<unsigned> flood_{ 1 };
   std::atomic<bool> refuse_{ false };
 
-  mutable std::mutex mutex_;  ///< guards the models and the session list
+  mutable std::mutex mutex_;  ///< guards the models and the session map (which only the I/O thread changes)
   mutable std::map<std::pair<std::string, std::uint8_t>, SimDeviceModel> models_;  ///< mutable: sampling
   ReceivedLog<ReceivedMessage> received_;
-  std::vector<SessionPtr> sessions_;
-  std::map<boost::asio::ip::udp::endpoint, SessionPtr> udp_sessions_;
+  std::map<std::string, SessionPtr> sessions_;  ///< by the client's "host:port"
 
-  std::thread thread_;
+  std::unique_ptr<DevicePort> port_;  ///< last: its thread starts after everything above exists
 };
 
 }  // namespace ptz_action_server

@@ -20,6 +20,7 @@
 #include "ptz_action_server/core/counter.h"
 #include "ptz_action_server/core/transport/link.h"
 #include "ptz_action_server/core/types.h"
+#include "ptz_action_server/emulators/emulator_faults.h"
 #include "ptz_action_server/emulators/received_log.h"
 
 namespace ptz_action_server
@@ -78,6 +79,9 @@ std::string httpDigestResponse(const std::string& username, const std::string& r
                                const std::string& method, const std::string& uri, const std::string& nonce,
                                const std::string& nc, const std::string& cnonce);
 
+class SocketServer;
+class TcpListener;
+
 /**
  * \brief A camera's web server. Requests that pass authentication go to the handler (on the server's thread, one at
  * a time); which requests need none is the handler's to say.
@@ -96,10 +100,7 @@ public:
   HttpCameraServer(const HttpCameraServer&) = delete;
   HttpCameraServer& operator=(const HttpCameraServer&) = delete;
 
-  std::uint16_t port() const
-  {
-    return port_;
-  }
+  std::uint16_t port() const;
   /// "https://127.0.0.1:PORT" or "http://...".
   std::string url() const;
   /// tls: the SHA-256 of the certificate, "AB:CD:..." (what a client pins); "" without tls.
@@ -143,10 +144,7 @@ private:
   class Connection;
   friend class Connection;
 
-  void listen();
   void accept();
-  /// Runs \p work on the server's thread and waits for it.
-  void runOnServerThread(const std::function<void()>& work);
   /// The answer to one request; \p challenge set for a 401.
   HttpAnswer answer(const std::string& method, const std::string& target, const std::string& body,
                     const std::string& authorization, std::string& challenge);
@@ -161,10 +159,9 @@ private:
   std::string certificate_pem_;                             ///< tls only; guarded by mutex_
   std::string fingerprint_;                                 ///< tls only; guarded by mutex_
   std::shared_ptr<boost::asio::ssl::context> ssl_context_;  ///< that of new connections (each keeps its own)
-  boost::asio::io_context context_;
-  boost::asio::ip::tcp::acceptor acceptor_;
-  std::uint16_t port_ = 0;
-  std::thread thread_;
+  std::unique_ptr<SocketServer> socket_server_;  ///< the context and its thread (what the emulators' ports serve on
+                                                 ///< too)
+  std::unique_ptr<TcpListener> listener_;        ///< after socket_server_, whose context it uses
   ReceivedLog<HttpExchange> received_;
   HttpServerCounters counters_;
 
@@ -180,6 +177,46 @@ private:
   std::string nonce_;
   unsigned nonce_used_ = 0;
   std::uint64_t nonce_serial_ = 0;
+};
+
+/**
+ * \brief The faults of an emulated IP camera (\p Camera: its server() and its model's setFaults()): silence, dropped
+ * connections and endless answers of its server, slow answers and impossible reports of its model. No garbage mode
+ * (HTTP), no flood (the camera answers requests).
+ */
+template <class Camera>
+class HttpCameraFaults : public EmulatorFaults
+{
+protected:
+  bool faultSilence(bool on) override
+  {
+    camera().server().setSilent(on);
+    return true;
+  }
+  bool faultDrop(bool on) override
+  {
+    if (on)
+    {
+      camera().server().dropConnections();
+    }
+    return true;
+  }
+  bool faultEndless(bool on) override
+  {
+    camera().server().setEndless(on);
+    return true;
+  }
+  bool faultModel(EmulatorFault /*fault*/, const SimFaults& faults) override
+  {
+    camera().setFaults(faults);
+    return true;
+  }
+
+private:
+  Camera& camera()
+  {
+    return static_cast<Camera&>(*this);
+  }
 };
 
 }  // namespace ptz_action_server

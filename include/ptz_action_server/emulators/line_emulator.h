@@ -14,6 +14,7 @@
 
 #include "ptz_action_server/core/sim_device_model.h"
 #include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/emulator_faults.h"
 #include "ptz_action_server/emulators/received_log.h"
 
 namespace ptz_action_server
@@ -26,7 +27,7 @@ namespace ptz_action_server
  * (closePort()).
  */
 template <class Item>
-class LineEmulator
+class LineEmulator : public EmulatorFaults
 {
 public:
   LineEmulator(const LineEmulator&) = delete;
@@ -86,7 +87,34 @@ protected:
   explicit LineEmulator(const SimDeviceConfig& model) : model_(model, SteadyClock::now())
   {
   }
-  virtual ~LineEmulator() = default;
+  ~LineEmulator() override = default;
+
+  // The faults of the port and the model.
+  bool faultSilence(bool on) override
+  {
+    port_->setSilent(on);
+    return true;
+  }
+  bool faultDrop(bool on) override
+  {
+    on ? unplug() : replug();
+    return true;
+  }
+  bool faultGarbage(bool on) override
+  {
+    port_->setGarbleRatio(on ? FAULT_GARBLE_RATIO : 0.0);
+    return true;
+  }
+  bool faultEndless(bool on) override
+  {
+    port_->setEndless(on);
+    return true;
+  }
+  bool faultModel(EmulatorFault /*fault*/, const SimFaults& faults) override
+  {
+    setFaults(faults);
+    return true;
+  }
 
   /// What the unit does when it starts (called with mutex_ held).
   virtual void powerUp() = 0;

@@ -16,8 +16,8 @@
 #include "ptz_action_server/core/sim_device_model.h"
 #include "ptz_action_server/core/transport/link.h"
 #include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/emulator_faults.h"
 #include "ptz_action_server/emulators/received_log.h"
-#include "ptz_action_server/emulators/udp_socket.h"
 
 namespace ptz_action_server
 {
@@ -101,13 +101,13 @@ struct MavlinkGimbalEmulatorCounters
  * Every command gets a COMMAND_ACK from each component it addresses (UNSUPPORTED for those it does not model).
  * Owns its I/O thread. The gimbal index of the methods below is its place in the config's gimbals.
  */
-class MavlinkGimbalEmulator
+class MavlinkGimbalEmulator : public EmulatorFaults
 {
 public:
   /// Throws std::invalid_argument for gimbals the protocol cannot address (see MavlinkEmulatedGimbal).
   explicit MavlinkGimbalEmulator(const MavlinkGimbalEmulatorConfig& config,
                                  std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
-  ~MavlinkGimbalEmulator();
+  ~MavlinkGimbalEmulator() override;
   MavlinkGimbalEmulator(const MavlinkGimbalEmulator&) = delete;
   MavlinkGimbalEmulator& operator=(const MavlinkGimbalEmulator&) = delete;
 
@@ -160,9 +160,14 @@ public:
   }
 
 private:
+  // Faults: no drop (UDP has no connection), no garbage mode, no slow replies (the gimbal pushes its state).
+  bool faultSilence(bool on) override;
+  bool faultEndless(bool on) override;
+  bool faultFlood(bool on) override;
+  bool faultModel(EmulatorFault fault, const SimFaults& faults) override;  ///< of the first gimbal
+
   struct Gimbal;
 
-  void runUdp();
   void receive(const std::uint8_t* data, std::size_t size);
   void tick();
   void handle(const mavlink::Frame& frame, TimePoint now);
@@ -188,7 +193,6 @@ private:
   const std::shared_ptr<const Clock> clock_;
 
   std::atomic<bool> silent_{ false };
-  std::atomic<bool> endless_{ false };
   std::atomic<unsigned> flood_{ 1 };
   std::atomic<bool> refuse_{ false };
 
@@ -201,13 +205,9 @@ private:
   TimePoint heartbeat_at_{}, status_at_{};
   ReceivedLog<ReceivedMavlinkFrame> received_;
 
-  // The transport: a UDP socket with its thread, or a device port (which has its own).
-  UdpSocket udp_;
-  bool has_peer_ = false;
-  UdpEndpoint peer_;
-  std::unique_ptr<DevicePort> line_;
-  std::atomic<bool> running_{ true };
-  std::thread thread_;
+  /// UDP (replies and streams go to whoever sent last: the controller) or the serial line; its I/O thread runs the
+  /// handlers. Last: the thread starts after everything above exists.
+  std::unique_ptr<DevicePort> port_;
 };
 
 }  // namespace ptz_action_server

@@ -90,7 +90,7 @@ struct OnvifCameraEmulatorConfig
  * ter:MovingPTZ, ter:TooManyPresets; env:Receiver / ter:ActionNotSupported for what it does not do. Answers use
  * prefixes of their own (`env:`, a default namespace), as cameras differ.
  */
-class OnvifCameraEmulator
+class OnvifCameraEmulator : public HttpCameraFaults<OnvifCameraEmulator>
 {
 public:
   explicit OnvifCameraEmulator(const OnvifCameraEmulatorConfig& config,

@@ -14,19 +14,17 @@
 
 #include <array>
 #include <atomic>
-#include <condition_variable>
 #include <deque>
 #include <memory>
 #include <mutex>
 #include <random>
-#include <thread>
 #include <vector>
 
 #include "ptz_action_server/core/framing/slip.h"
 #include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/emulator_faults.h"
 #include "ptz_action_server/emulators/sim_pantilt.h"
 #include "ptz_action_server/emulators/received_log.h"
-#include "ptz_action_server/emulators/udp_socket.h"
 
 namespace ptz_action_server
 {
@@ -35,7 +33,7 @@ using cr::pantilt::WireFormat;
 struct PanTiltEmulatorConfig
 {
   std::string host = "127.0.0.1";
-  std::uint16_t port = 0;  ///< 0: an ephemeral port (see endpoint())
+  std::uint16_t port = 0;  ///< 0: an ephemeral port (see udpPort())
   bool serial = false;     ///< true: SLIP frames on a pseudo-terminal (line) instead of UDP datagrams
   DevicePortConfig line;   ///< serial: the pseudo-terminal
   WireFormat format = WireFormat::SEED;
@@ -72,22 +70,25 @@ struct ReceivedDatagram
 
 /**
  * \brief Listens on UDP (a frame per datagram) or on a pseudo-terminal (SLIP frames, RFC 1055), executes what
- * arrives on a SimPanTilt, and reports its params. Owns its I/O thread (the pseudo-terminal's, on a serial line).
+ * arrives on a SimPanTilt, and reports its params. Its DevicePort owns the I/O thread; the periodic params frame goes
+ * to the last client that sent a valid frame.
  *
  * Fault switches (any thread): silent (receive and do nothing, send nothing: an unplugged device), a ratio of
  * replies dropped, and a reply delay.
  */
-class PanTiltEmulator
+class PanTiltEmulator : public EmulatorFaults
 {
 public:
   explicit PanTiltEmulator(const PanTiltEmulatorConfig& config,
                            std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
-  ~PanTiltEmulator();
+  ~PanTiltEmulator() override;
   PanTiltEmulator(const PanTiltEmulator&) = delete;
   PanTiltEmulator& operator=(const PanTiltEmulator&) = delete;
 
-  /// Where the device listens (udp).
-  UdpEndpoint endpoint() const;
+  /// udp: the port the device listens on; 0 on a serial line.
+  std::uint16_t udpPort() const;
+  /// udp: where the device listens ("host:port").
+  std::string address() const;
   /// serial: the pseudo-terminal (or its link); "" on UDP.
   std::string path() const;
   /// serial: the port vanishes / comes back.
@@ -117,8 +118,9 @@ public:
     return received_;
   }
 
-  /// Sends raw bytes from the device's own socket (tests: garbage from the device's address).
-  void sendRaw(const UdpEndpoint& to, const std::uint8_t* data, std::size_t size);
+  /// udp: sends raw bytes from the device's own socket to \p to ("host:port"; tests: garbage from the device's
+  /// address).
+  void sendRaw(const std::string& to, const std::uint8_t* data, std::size_t size);
 
   PanTiltEmulatorCounters counters() const;
   SimPanTilt& panTilt()
@@ -127,28 +129,30 @@ public:
   }
 
 private:
+  // Faults: no garbage mode; no slow replies (the device pushes its state).
+  bool faultSilence(bool on) override;
+  bool faultDrop(bool on) override;  ///< half the replies lost
+  bool faultEndless(bool on) override;
+  bool faultFlood(bool on) override;
+  bool faultModel(EmulatorFault fault, const SimFaults& faults) override;
+
   struct PendingReply
   {
     TimePoint send_at;
-    UdpEndpoint to;
+    std::string to;
   };
 
-  void run();
-  void handleDatagram(const std::uint8_t* data, std::size_t size, const UdpEndpoint& from);
-  void reply(const UdpEndpoint& to, TimePoint now);
-  void sendState(const UdpEndpoint& to);
-  /// Delayed replies and the periodic params frame, when due.
+  void handleDatagram(const std::uint8_t* data, std::size_t size, const std::string& from);
+  void reply(const std::string& to, TimePoint now);
+  void sendState(const std::string& to);
+  /// Delayed replies and the periodic params frame, when due (the port's tick).
   void sendDueReplies(TimePoint now);
-  int millisecondsToNextEvent(TimePoint now) const;
 
   const PanTiltEmulatorConfig config_;
   const std::shared_ptr<const Clock> clock_;
   SimPanTilt pan_tilt_;
-  UdpSocket socket_;
 
-  std::atomic<bool> running_{ true };
   std::atomic<bool> silent_{ false };
-  std::atomic<bool> endless_{ false };
   std::atomic<unsigned> flood_{ 1 };
   std::atomic<double> drop_ratio_{ 0.0 };
   std::atomic<double> reply_delay_{ 0.0 };
@@ -159,15 +163,14 @@ private:
 
   // I/O thread only.
   bool has_client_ = false;
-  UdpEndpoint last_client_;
+  std::string last_client_;  ///< udp: "host:port" of the last valid frame's sender
   TimePoint next_state_at_{};
   std::deque<PendingReply> pending_replies_;
   std::mt19937 random_{ 12345 };
   slip::Decoder slip_;
   std::vector<std::uint8_t> framed_;
 
-  std::unique_ptr<DevicePort> line_;  ///< serial only
-  std::thread thread_;                ///< udp only; last: starts after everything above exists
+  std::unique_ptr<DevicePort> port_;  ///< UDP, or the serial line; last: its thread starts after everything above
 };
 
 }  // namespace ptz_action_server

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "ptz_action_server/core/parse_number.h"
 #include "ptz_action_server/core/text.h"
 
 namespace ptz_action_server
@@ -148,24 +149,6 @@ std::string parseReply(const std::string& body, Reply& reply)
     reply.values.emplace_back(key, trimmed(line.substr(equals + 1)));
   }
   return {};
-}
-
-bool parseNumber(const std::string& text, double& value)
-{
-  if (text.empty() || text.size() > 64 || std::isspace(static_cast<unsigned char>(text[0])))
-  {
-    return false;
-  }
-  char* end = nullptr;
-  errno = 0;
-  const double parsed = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || errno != 0 || !std::isfinite(parsed) ||
-      text.find_first_of("xXnNiI") != std::string::npos)  // no hex floats, nan or inf
-  {
-    return false;
-  }
-  value = parsed;
-  return true;
 }
 
 std::string readPosition(const Reply& reply, Position& position)

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <ctime>
 
-#include "ptz_action_server/core/axis/vapix_codec.h"
 #include "ptz_action_server/core/http/crypto.h"
+#include "ptz_action_server/core/parse_number.h"
 #include "ptz_action_server/core/text.h"
 
 namespace ptz_action_server
@@ -18,7 +18,7 @@ namespace
 {
 bool number(const std::string& text, double& value)
 {
-  return vapix::parseNumber(text, value);
+  return parseNumber(text, value);
 }
 
 bool number(const char* text, double& value)

@@ -36,7 +36,7 @@ public:
     emulator_ = std::make_unique<PanTiltEmulator>(emulator_config_);
     if (!serial)
     {
-      emulator_config_.port = emulator_->endpoint().port();  // a restart takes the same port
+      emulator_config_.port = emulator_->udpPort();  // a restart takes the same port
       config_.link.port = emulator_config_.port;
       config_.link.local_host = "127.0.0.1";
     }

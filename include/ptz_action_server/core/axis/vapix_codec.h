@@ -42,9 +42,6 @@ struct Reply
  */
 std::string parseReply(const std::string& body, Reply& reply);
 
-/// A decimal number, all of \p text, finite.
-bool parseNumber(const std::string& text, double& value);
-
 /// `query=position`: degrees and the VAPIX zoom value (the camera's other keys, iris, focus, brightness, autofocus,
 /// autoiris, are not used).
 struct Position

@@ -7,8 +7,7 @@
 #include <cstdio>
 #include <string>
 
-#include "emulator_main.h"
-
+#include "ptz_action_server/emulators/emulator_main.h"
 #include "ptz_action_server/emulators/pantilt_emulator.h"
 
 namespace
@@ -112,9 +111,8 @@ int main(int argc, char** argv)
     device.setDropRatio(drop);
     device.setReplyDelay(delay);
     device.setFlood(flood);
-    const std::string where = config.serial ?
-                                  device.path() + " (SLIP) at " + std::to_string(config.line.baud) + " baud" :
-                                  device.endpoint().toString();
+    const std::string where =
+        config.serial ? device.path() + " (SLIP) at " + std::to_string(config.line.baud) + " baud" : device.address();
     std::printf("%s: listening on %s, format %s, state every %.2f s%s%s\n", PROGRAM, where.c_str(),
                 cr::pantilt::toString(config.format), config.state_period,
                 flood > 1 ? (", each sent " + std::to_string(flood) + " times").c_str() : "", silent ? ", silent" : "");

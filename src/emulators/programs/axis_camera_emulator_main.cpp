@@ -5,10 +5,9 @@
 #include <cstdio>
 #include <string>
 
-#include "ip_camera_options.h"
-
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/emulators/axis_camera_emulator.h"
+#include "ptz_action_server/emulators/emulator_main.h"
 
 namespace
 {

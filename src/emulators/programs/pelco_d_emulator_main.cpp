@@ -5,8 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include "emulator_main.h"
-
+#include "ptz_action_server/emulators/emulator_main.h"
 #include "ptz_action_server/emulators/pelco_d_emulator.h"
 
 namespace

@@ -5,9 +5,8 @@
 #include <cstdio>
 #include <string>
 
-#include "emulator_main.h"
-
 #include "ptz_action_server/emulators/digiview_emulator.h"
+#include "ptz_action_server/emulators/emulator_main.h"
 
 namespace
 {

@@ -11,8 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "emulator_main.h"
-
+#include "ptz_action_server/emulators/emulator_main.h"
 #include "ptz_action_server/emulators/mavlink_gimbal_emulator.h"
 
 namespace

@@ -8,8 +8,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "ip_camera_options.h"
-
+#include "ptz_action_server/emulators/emulator_main.h"
 #include "ptz_action_server/emulators/onvif_camera_emulator.h"
 
 namespace
