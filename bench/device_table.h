@@ -13,7 +13,7 @@
 
 #include <xmlrpcpp/XmlRpcValue.h>
 
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 #include "ptz_action_server/core/types.h"
 #include "ptz_action_server/emulators/device_port.h"
 #include "ptz_action_server/emulators/emulator_faults.h"

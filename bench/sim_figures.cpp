@@ -16,7 +16,7 @@
 
 #include "figures.h"
 #include "ptz_action_server/PtzAction.h"
-#include "ptz_action_server/core/motion_profile.h"
+#include "ptz_action_server/core/motion/motion_profile.h"
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/ros/ptz_goal.h"
 

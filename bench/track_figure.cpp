@@ -12,7 +12,7 @@
 
 #include "figures.h"
 #include "ptz_action_server/PtzFrameAction.h"
-#include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/core/text.h"
 
 namespace ptz_bench

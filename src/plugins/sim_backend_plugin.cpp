@@ -5,7 +5,7 @@
 #include <ros/ros.h>
 
 #include "ptz_action_server/SetSimFaults.h"
-#include "ptz_action_server/core/sim_backend.h"
+#include "ptz_action_server/core/sim/sim_backend.h"
 #include "ptz_action_server/ros/backend_plugin.h"
 
 namespace ptz_action_server

@@ -6,7 +6,7 @@
 #include <tf2_eigen/tf2_eigen.h>
 
 #include "ptz_action_server/core/capabilities.h"
-#include "ptz_action_server/core/goal_validation.h"
+#include "ptz_action_server/core/goal/goal_validation.h"
 
 namespace ptz_action_server
 {

@@ -19,7 +19,7 @@
 #include <std_msgs/Float64.h>
 
 #include "ptz_action_server/SetSimFaults.h"
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 
 namespace
 {

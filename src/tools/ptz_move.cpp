@@ -23,7 +23,7 @@
 #include "ptz_action_server/PtzFrameAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
 #include "ptz_action_server/PtzState.h"
-#include "ptz_action_server/core/keyboard_teleop.h"
+#include "ptz_action_server/core/teleop/keyboard_teleop.h"
 #include "ptz_action_server/ros/ptz_goal.h"
 #include "ptz_action_server/ros/ptz_teleop.h"
 

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "ptz_action_server/core/goal_supervisor.h"
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/goal/goal_supervisor.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 #include "wait_until.h"
 
 namespace goal_supervisor_test

@@ -7,9 +7,9 @@
 
 #include "goal_supervisor_fixture.h"
 #include "ptz_action_server/core/closed_loop_backend.h"
-#include "ptz_action_server/core/goal_monitor.h"
+#include "ptz_action_server/core/goal/goal_monitor.h"
 #include "ptz_action_server/core/onvif/onvif_protocol.h"
-#include "ptz_action_server/core/sim_backend.h"
+#include "ptz_action_server/core/sim/sim_backend.h"
 #include "ptz_action_server/emulators/onvif_camera_emulator.h"
 #include "wait_until.h"
 

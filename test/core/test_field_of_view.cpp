@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "ptz_action_server/core/field_of_view.h"
+#include "ptz_action_server/core/motion/field_of_view.h"
 #include "ptz_action_server/core/types.h"
 
 using namespace ptz_action_server;

@@ -18,7 +18,7 @@
 #include "wait_until.h"
 
 #include "ptz_action_server/core/flir/flir_protocol.h"
-#include "ptz_action_server/core/goal_validation.h"
+#include "ptz_action_server/core/goal/goal_validation.h"
 #include "ptz_action_server/core/units.h"
 #include "ptz_action_server/emulators/flir_ptu_emulator.h"
 

@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "goal_supervisor_fixture.h"
-#include "ptz_action_server/core/frame_tracker.h"
+#include "ptz_action_server/core/motion/frame_tracker.h"
 #include "ptz_action_server/core/limits.h"
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 
 using namespace ptz_action_server;
 using namespace goal_supervisor_test;

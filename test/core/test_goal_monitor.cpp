@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "ptz_action_server/core/goal_monitor.h"
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/goal/goal_monitor.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 
 using namespace ptz_action_server;
 

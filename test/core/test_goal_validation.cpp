@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "ptz_action_server/core/goal_validation.h"
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/goal/goal_validation.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 
 using namespace ptz_action_server;
 

@@ -5,7 +5,7 @@
  */
 #include <gtest/gtest.h>
 
-#include "ptz_action_server/core/keyboard_teleop.h"
+#include "ptz_action_server/core/teleop/keyboard_teleop.h"
 
 namespace ptz_action_server
 {

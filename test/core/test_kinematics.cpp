@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/core/motion/kinematics.h"
 
 using namespace ptz_action_server;
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "ptz_action_server/core/motion_profile.h"
+#include "ptz_action_server/core/motion/motion_profile.h"
 
 using ptz_action_server::AxisMotionLimits;
 using ptz_action_server::AxisMotionState;

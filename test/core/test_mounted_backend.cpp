@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "ptz_action_server/core/mounted_backend.h"
-#include "ptz_action_server/core/sim_backend.h"
+#include "ptz_action_server/core/sim/sim_backend.h"
 
 using namespace ptz_action_server;
 

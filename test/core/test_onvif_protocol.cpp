@@ -15,7 +15,7 @@
 #include <map>
 #include <mutex>
 
-#include "ptz_action_server/core/goal_validation.h"
+#include "ptz_action_server/core/goal/goal_validation.h"
 #include "ptz_action_server/core/onvif/onvif_protocol.h"
 #include "ptz_action_server/core/units.h"
 #include "ptz_action_server/emulators/onvif_camera_emulator.h"

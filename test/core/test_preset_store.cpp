@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-#include "ptz_action_server/core/preset_store.h"
+#include "ptz_action_server/core/presets/preset_store.h"
 
 using namespace ptz_action_server;
 

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "ptz_action_server/core/status_hold.h"
+#include "ptz_action_server/core/goal/status_hold.h"
 
 namespace ptz_action_server
 {

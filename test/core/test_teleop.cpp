@@ -5,7 +5,7 @@
  */
 #include <gtest/gtest.h>
 
-#include "ptz_action_server/core/teleop.h"
+#include "ptz_action_server/core/teleop/teleop.h"
 
 namespace ptz_action_server
 {

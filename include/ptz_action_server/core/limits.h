@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/core/types.h"
 
 namespace ptz_action_server

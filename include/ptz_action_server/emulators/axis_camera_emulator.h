@@ -10,7 +10,7 @@
 #include <string>
 
 #include "ptz_action_server/core/axis/vapix_codec.h"
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 #include "ptz_action_server/emulators/http_camera_server.h"
 
 namespace ptz_action_server

@@ -17,7 +17,7 @@
 #include "ptz_action_server/emulators/emulator_faults.h"
 #include "ptz_action_server/emulators/received_log.h"
 #include "ptz_action_server/core/digiview/digiview_codec.h"
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 
 namespace ptz_action_server
 {

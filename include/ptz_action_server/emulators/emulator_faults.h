@@ -7,7 +7,7 @@
 
 #include <mutex>
 
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 
 namespace ptz_action_server
 {

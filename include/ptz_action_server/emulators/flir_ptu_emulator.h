@@ -9,7 +9,7 @@
 #include <mutex>
 #include <string>
 
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 #include "ptz_action_server/emulators/line_emulator.h"
 
 namespace ptz_action_server

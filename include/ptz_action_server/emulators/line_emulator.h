@@ -12,7 +12,7 @@
 #include <string>
 #include <thread>
 
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 #include "ptz_action_server/emulators/device_port.h"
 #include "ptz_action_server/emulators/emulator_faults.h"
 #include "ptz_action_server/emulators/received_log.h"

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "ptz_action_server/core/mavlink/mavlink_messages.h"
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 #include "ptz_action_server/core/transport/link.h"
 #include "ptz_action_server/emulators/device_port.h"
 #include "ptz_action_server/emulators/emulator_faults.h"

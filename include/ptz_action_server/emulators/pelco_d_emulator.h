@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "ptz_action_server/core/pelco_d/pelco_d_codec.h"
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 #include "ptz_action_server/emulators/line_emulator.h"
 
 namespace ptz_action_server

@@ -12,7 +12,7 @@
 #include <pluginlib/class_loader.hpp>
 
 #include "ptz_action_server/core/backend.h"
-#include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/core/mounted_backend.h"
 #include "ptz_action_server/ros/backend_plugin.h"
 #include "ptz_action_server/ros/param_reader.h"

@@ -11,9 +11,9 @@
 #include <ros/ros.h>
 
 #include "ptz_action_server/core/backend.h"
-#include "ptz_action_server/core/frame_tracker.h"
-#include "ptz_action_server/core/goal_supervisor.h"
-#include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/core/motion/frame_tracker.h"
+#include "ptz_action_server/core/goal/goal_supervisor.h"
+#include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/ros/frame_listener.h"
 
 namespace ptz_action_server

@@ -11,7 +11,7 @@
 #include <actionlib/server/server_goal_handle.h>
 #include <ros/console.h>
 
-#include "ptz_action_server/core/goal_supervisor.h"
+#include "ptz_action_server/core/goal/goal_supervisor.h"
 #include "ptz_action_server/ros/ptz_action_server.h"
 
 namespace ptz_action_server

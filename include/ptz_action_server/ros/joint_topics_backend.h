@@ -22,8 +22,8 @@
 
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/device/link_supervisor.h"
-#include "ptz_action_server/core/motion_estimator.h"
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/motion/motion_estimator.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 
 namespace ptz_action_server
 {

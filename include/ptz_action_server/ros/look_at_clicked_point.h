@@ -11,7 +11,7 @@
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 
-#include "ptz_action_server/core/goal_supervisor.h"
+#include "ptz_action_server/core/goal/goal_supervisor.h"
 #include "ptz_action_server/ros/param_reader.h"
 
 namespace ptz_action_server

@@ -14,7 +14,7 @@
 #include "ptz_action_server/ListPresets.h"
 #include "ptz_action_server/SavePreset.h"
 #include "ptz_action_server/core/backend.h"
-#include "ptz_action_server/core/preset_store.h"
+#include "ptz_action_server/core/presets/preset_store.h"
 #include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/shared_callback_queue.h"
 

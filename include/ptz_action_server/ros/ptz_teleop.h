@@ -15,7 +15,7 @@
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/PtzCapabilities.h"
 #include "ptz_action_server/PtzPresetAction.h"
-#include "ptz_action_server/core/teleop.h"
+#include "ptz_action_server/core/teleop/teleop.h"
 #include "ptz_action_server/ros/param_reader.h"
 
 namespace ptz_action_server

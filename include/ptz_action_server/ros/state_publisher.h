@@ -17,8 +17,8 @@
 
 #include "ptz_action_server/PtzState.h"
 #include "ptz_action_server/core/backend.h"
-#include "ptz_action_server/core/goal_supervisor.h"
-#include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/core/goal/goal_supervisor.h"
+#include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/core/timer_thread.h"
 #include "ptz_action_server/ros/field_of_view_publisher.h"
 #include "ptz_action_server/ros/listened_publisher.h"

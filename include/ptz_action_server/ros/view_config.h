@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "ptz_action_server/core/field_of_view.h"
+#include "ptz_action_server/core/motion/field_of_view.h"
 #include "ptz_action_server/core/mounted_backend.h"
 #include "ptz_action_server/ros/param_reader.h"
 

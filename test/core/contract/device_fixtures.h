@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "ptz_action_server/core/device/device_backend.h"
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 
 namespace ptz_action_server
 {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "device_fixtures.h"
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 
 namespace ptz_action_server
 {

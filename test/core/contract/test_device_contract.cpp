@@ -13,7 +13,7 @@
 #include "../wait_until.h"
 #include "../goal_supervisor_fixture.h"
 #include "device_fixtures.h"
-#include "ptz_action_server/core/goal_monitor.h"
+#include "ptz_action_server/core/goal/goal_monitor.h"
 
 namespace ptz_action_server
 {

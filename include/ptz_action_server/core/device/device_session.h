@@ -20,7 +20,7 @@
 #include "ptz_action_server/core/device/device_io_pool.h"
 #include "ptz_action_server/core/device/link_supervisor.h"
 #include "ptz_action_server/core/device/state_plausibility.h"
-#include "ptz_action_server/core/motion_estimator.h"
+#include "ptz_action_server/core/motion/motion_estimator.h"
 #include "ptz_action_server/core/transport/http_channel.h"
 #include "ptz_action_server/core/transport/link.h"
 

@@ -1,4 +1,4 @@
-#include "ptz_action_server/core/field_of_view.h"
+#include "ptz_action_server/core/motion/field_of_view.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "ptz_action_server/core/keyboard_teleop.h"
+#include "ptz_action_server/core/teleop/keyboard_teleop.h"
 
 namespace ptz_action_server
 {

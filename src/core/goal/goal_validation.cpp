@@ -1,4 +1,4 @@
-#include "ptz_action_server/core/goal_validation.h"
+#include "ptz_action_server/core/goal/goal_validation.h"
 
 #include "ptz_action_server/core/text.h"
 

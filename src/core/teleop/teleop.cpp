@@ -1,4 +1,4 @@
-#include "ptz_action_server/core/teleop.h"
+#include "ptz_action_server/core/teleop/teleop.h"
 
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "ptz_action_server/core/backend.h"
-#include "ptz_action_server/core/goal_monitor.h"
+#include "ptz_action_server/core/goal/goal_monitor.h"
 #include "ptz_action_server/core/types.h"
 
 namespace ptz_action_server

@@ -1,6 +1,6 @@
-#include "ptz_action_server/core/preset_store.h"
+#include "ptz_action_server/core/presets/preset_store.h"
 
-#include "ptz_action_server/core/atomic_file.h"
+#include "ptz_action_server/core/presets/atomic_file.h"
 
 #include <charconv>
 #include <cerrno>

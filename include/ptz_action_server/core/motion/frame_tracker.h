@@ -9,8 +9,8 @@
 
 #include <Eigen/Geometry>
 
-#include "ptz_action_server/core/goal_supervisor.h"
-#include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/core/goal/goal_supervisor.h"
+#include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/core/types.h"
 
 namespace ptz_action_server

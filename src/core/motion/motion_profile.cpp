@@ -1,4 +1,4 @@
-#include "ptz_action_server/core/motion_profile.h"
+#include "ptz_action_server/core/motion/motion_profile.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "ptz_action_server/core/kinematics.h"
+#include "ptz_action_server/core/motion/kinematics.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include "ptz_action_server/core/goal_supervisor.h"
+#include "ptz_action_server/core/goal/goal_supervisor.h"
 
 #include <algorithm>
 
-#include "ptz_action_server/core/goal_validation.h"
+#include "ptz_action_server/core/goal/goal_validation.h"
 
 namespace ptz_action_server
 {

@@ -9,7 +9,7 @@
 #include <array>
 #include <deque>
 
-#include "ptz_action_server/core/motion_profile.h"
+#include "ptz_action_server/core/motion/motion_profile.h"
 #include "ptz_action_server/core/types.h"
 
 namespace ptz_action_server

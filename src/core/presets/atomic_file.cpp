@@ -1,4 +1,4 @@
-#include "ptz_action_server/core/atomic_file.h"
+#include "ptz_action_server/core/presets/atomic_file.h"
 
 #include <cerrno>
 #include <cstring>

@@ -1,4 +1,4 @@
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 
 #include <algorithm>
 #include <cmath>

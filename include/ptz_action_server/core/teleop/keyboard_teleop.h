@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "ptz_action_server/core/teleop.h"
+#include "ptz_action_server/core/teleop/teleop.h"
 
 namespace ptz_action_server
 {

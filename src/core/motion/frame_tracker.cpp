@@ -1,4 +1,4 @@
-#include "ptz_action_server/core/frame_tracker.h"
+#include "ptz_action_server/core/motion/frame_tracker.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "ptz_action_server/core/sim_backend.h"
+#include "ptz_action_server/core/sim/sim_backend.h"
 
 #include <limits>
 

@@ -1,9 +1,9 @@
-#include "ptz_action_server/core/goal_monitor.h"
+#include "ptz_action_server/core/goal/goal_monitor.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "ptz_action_server/core/motion_profile.h"
+#include "ptz_action_server/core/motion/motion_profile.h"
 #include "ptz_action_server/core/text.h"
 
 namespace ptz_action_server

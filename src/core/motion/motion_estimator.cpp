@@ -1,4 +1,4 @@
-#include "ptz_action_server/core/motion_estimator.h"
+#include "ptz_action_server/core/motion/motion_estimator.h"
 
 #include <cmath>
 

@@ -11,7 +11,7 @@
 
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/device/link_supervisor.h"
-#include "ptz_action_server/core/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_device_model.h"
 #include "ptz_action_server/core/timer_thread.h"
 
 namespace ptz_action_server
