@@ -32,7 +32,7 @@ public:
     config_.link.http.password = "pass";
     config_.link.http.request_timeout = 2.0;  // longer than the state timeout: silence is seen as silence
     pinIfTls(emulator_->server(), config_.link);
-    config_.session.state_timeout = TEST_STATE_TIMEOUT;
+    config_.session.state_timeout = HTTP_TEST_STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override

@@ -29,7 +29,7 @@ public:
     // for longer. A goal's command and the next poll go one request at a time, so two positions may be two answers
     // apart; the command's answer keeps the link up in between (the emulators apply SimFaults::reply_delay through
     // HttpCameraServer::setDelay()).
-    return TEST_STATE_TIMEOUT;
+    return HTTP_TEST_STATE_TIMEOUT;
   }
   bool setEndlessReplies(bool endless) override
   {

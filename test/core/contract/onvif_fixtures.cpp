@@ -73,7 +73,7 @@ public:
     pinIfTls(emulator_->server(), config_.link);
     config_.settings.username = camera.username;
     config_.settings.password = camera.password;
-    config_.session.state_timeout = TEST_STATE_TIMEOUT;
+    config_.session.state_timeout = HTTP_TEST_STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override
