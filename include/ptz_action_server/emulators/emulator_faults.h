@@ -24,9 +24,9 @@ enum class EmulatorFault
   IMPOSSIBLE,  ///< the reported pan FAULT_IMPOSSIBLE_OFFSET off: outside the device's limits
 };
 inline constexpr EmulatorFault ALL_EMULATOR_FAULTS[] = { EmulatorFault::SILENCE,   EmulatorFault::DROP,
-                                                  EmulatorFault::GARBAGE,   EmulatorFault::ENDLESS,
-                                                  EmulatorFault::FLOOD,     EmulatorFault::SLOW,
-                                                  EmulatorFault::IMPOSSIBLE };
+                                                         EmulatorFault::GARBAGE,   EmulatorFault::ENDLESS,
+                                                         EmulatorFault::FLOOD,     EmulatorFault::SLOW,
+                                                         EmulatorFault::IMPOSSIBLE };
 /// "silence", "drop", ...
 const char* toString(EmulatorFault fault);
 
