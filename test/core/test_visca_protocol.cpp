@@ -3,14 +3,18 @@
  * \brief What only the VISCA protocol does, against its emulator over a real pseudo-terminal and UDP on 127.0.0.1
  * (the backend contract suite covers what every device does): the start-up of each transport, one request on the
  * wire at a time, velocity goals as drive commands, a sequence error answered by a reset, a chain without the
- * camera's address, garbled replies.
+ * camera's address, garbled replies; and, against a camera the test plays by hand, that no state mixes a pan from
+ * before a lost answer with a zoom from after it.
  */
 #include <gtest/gtest.h>
 
 #include "line_test_support.h"
 #include "wait_until.h"
 
+#include <thread>
+
 #include "ptz_action_server/core/visca/visca_protocol.h"
+#include "ptz_action_server/emulators/udp_socket.h"
 #include "ptz_action_server/emulators/visca_emulator.h"
 
 using namespace ptz_action_server;
@@ -158,6 +162,100 @@ TEST_F(ViscaTest, GarbledRepliesAreDroppedAndCountedAndGoalsStillSucceed)
   emulator_->port().setGarbleRatio(0.0);
   backend_->goTo({ 0.2, -0.1, 1.0 });
   EXPECT_TRUE(waitUntil([&] { return atRest(*backend_, 0.2, -0.1); }, WAIT));
+}
+
+/// Raw VISCA over UDP from a camera at address 1 the test plays by hand, one inquiry at a time.
+class HandPlayedCamera
+{
+public:
+  HandPlayedCamera()
+  {
+    socket_.bind("127.0.0.1", 0);
+  }
+  std::uint16_t port() const
+  {
+    return socket_.localEndpoint().port();
+  }
+  /// The next inquiry, in hex ("" if none came within WAIT).
+  std::string receive()
+  {
+    std::uint8_t buffer[64];
+    std::size_t size = 0;
+    if (socket_.receive(buffer, sizeof(buffer), size, backend_, static_cast<int>(WAIT * 1000)) !=
+        ReceiveStatus::DATAGRAM)
+    {
+      return {};
+    }
+    return visca::toHex(visca::Packet(buffer, buffer + size));
+  }
+  /// Answers `81 09 06 12 FF` with \p pan and \p tilt in steps.
+  void answerPanTilt(std::int16_t pan, std::int16_t tilt)
+  {
+    visca::Packet answer{ 0x90, 0x50 };
+    visca::putNibbles(answer, static_cast<std::uint16_t>(pan), 4);
+    visca::putNibbles(answer, static_cast<std::uint16_t>(tilt), 4);
+    send(answer);
+  }
+  /// Answers `81 09 04 47 FF` with zoom position \p position.
+  void answerZoom(std::uint16_t position)
+  {
+    visca::Packet answer{ 0x90, 0x50 };
+    visca::putNibbles(answer, position, 4);
+    send(answer);
+  }
+
+private:
+  void send(visca::Packet packet)
+  {
+    packet.push_back(visca::TERMINATOR);
+    socket_.sendTo(backend_, packet.data(), packet.size());
+  }
+
+  UdpSocket socket_;
+  UdpEndpoint backend_;
+};
+
+constexpr const char* PAN_TILT_INQUIRY = "81 09 06 12 FF";
+constexpr const char* ZOOM_INQUIRY = "81 09 04 47 FF";
+
+TEST(ViscaPollRound, AZoomAnswerAfterALostAnswerNeverCompletesAStateWithThePanFromBeforeIt)
+{
+  HandPlayedCamera camera;
+  DeviceConfig<ViscaProtocol> config;
+  config.link.kind = LinkKind::UDP;
+  config.link.port = camera.port();
+  config.link.local_host = "127.0.0.1";
+  config.session.state_timeout = 60.0;  // the lost answers below are the test's, not a silence of the link
+  config.session.startup_timeout = WAIT;
+  const visca::ViscaModel model = config.settings.model;
+  auto backend = makeDeviceBackend<ViscaProtocol>(config);
+
+  std::thread starter([&] { backend->start(); });
+  ASSERT_EQ(camera.receive(), PAN_TILT_INQUIRY);
+  camera.answerPanTilt(0, 0);
+  ASSERT_EQ(camera.receive(), ZOOM_INQUIRY);
+  camera.answerZoom(0);
+  starter.join();
+  ASSERT_TRUE(backend->sample().link_up);
+  const std::uint64_t reports = backend->session().counters().state_reports.value();
+
+  // A round cut in two by a silence: its pan answered before, its zoom question lost; the next pan question lost,
+  // its zoom question answered after.
+  ASSERT_EQ(camera.receive(), PAN_TILT_INQUIRY);
+  camera.answerPanTilt(model.toSteps(PAN, 0.5), 0);
+  ASSERT_EQ(camera.receive(), ZOOM_INQUIRY);
+  ASSERT_EQ(camera.receive(), PAN_TILT_INQUIRY);  // after the zoom answer's reply timeout
+  ASSERT_EQ(camera.receive(), ZOOM_INQUIRY);
+  camera.answerZoom(0);
+  // A whole round: the camera is at 1.2 rad.
+  ASSERT_EQ(camera.receive(), PAN_TILT_INQUIRY);
+  camera.answerPanTilt(model.toSteps(PAN, 1.2), 0);
+  ASSERT_EQ(camera.receive(), ZOOM_INQUIRY);
+  camera.answerZoom(0);
+  ASSERT_TRUE(waitUntil([&] { return backend->session().counters().state_reports.value() > reports; }, WAIT));
+  EXPECT_NEAR(backend->sample().position[PAN], 1.2, 0.01);
+  EXPECT_EQ(backend->session().counters().state_reports.value(), reports + 1);
+  EXPECT_EQ(backend->session().counters().impossible_states.value(), 0u);
 }
 
 }  // namespace

@@ -70,6 +70,7 @@ Capabilities FlirProtocol::unitCapabilities() const
 void FlirProtocol::onConnected()
 {
   parser_.reset();
+  round_.broken();
   ready_ = false;
   // An E-series unit greets every TCP connection with a banner and takes commands once it ends. On a serial line, the
   // unit may still be saying something (a banner, the answer to a request of the last connection): let it finish.
@@ -307,7 +308,7 @@ void FlirProtocol::handleAnswer(const TransactionChannel::Request& request, cons
   }
   if (reply.kind != flir::Reply::Kind::VALUE || !std::isfinite(reply.value) || std::abs(reply.value) > MAX_POSITIONS)
   {
-    unusable(tag);
+    unusable();
     return;
   }
   const double value = reply.value;
@@ -332,7 +333,7 @@ void FlirProtocol::handleAnswer(const TransactionChannel::Request& request, cons
       speed_max_[1] = std::lround(value);
       if (!plausible())
       {
-        unusable(tag);
+        unusable();
         break;
       }
       ready_ = true;
@@ -341,14 +342,13 @@ void FlirProtocol::handleAnswer(const TransactionChannel::Request& request, cons
       break;
     case PAN_POSITION:
       polled_pan_ = -value * pan_resolution_;
-      pan_polled_ = true;
+      round_.answered(0);
       break;
     case TILT_POSITION:
-      if (pan_polled_)
+      if (round_.answered(1))
       {
         session_.reportState(AxisValues{ { polled_pan_, value * tilt_resolution_, 1.0 } });
       }
-      pan_polled_ = false;
       break;
     case SETUP:
     case COMMAND:
@@ -362,13 +362,10 @@ bool FlirProtocol::plausible() const
          speed_max_[0] > 0 && speed_max_[1] > 0;
 }
 
-void FlirProtocol::unusable(Tag tag)
+void FlirProtocol::unusable()
 {
   ++counters_.unusable_replies;
-  if (tag == PAN_POSITION)
-  {
-    pan_polled_ = false;  // the TP that follows has no pan to go with it
-  }
+  round_.broken();  // a TP that follows has no pan to go with it
   if (!ready_)
   {
     // The answers are out of step with the questions (something the unit said before was taken for one): start again
@@ -381,6 +378,7 @@ void FlirProtocol::onTimeout(const TransactionChannel::Request& lost)
 {
   const std::uint64_t dropped_before = parser_.droppedBytes();
   parser_.dropPartialReply();  // the limit reports of a calibration still under way stay
+  round_.broken();
   session_.reportDropped(parser_.droppedBytes() - dropped_before);
   if (!ready_ && lost.tag != COMMAND)
   {

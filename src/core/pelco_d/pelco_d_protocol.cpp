@@ -50,8 +50,12 @@ PelcoProtocol::PelcoProtocol(const PelcoSettings& settings, DeviceSession& sessi
   , channel_(
         session.context(), session.clock(), [&session](const std::string& bytes) { session.write(bytes); },
         replyTimeout(session.linkConfig(), settings.reply_timeout, PELCO_EXCHANGE_BYTES),
-        [this](const TransactionChannel::Request&) { parser_.reset(); })
+        [this](const TransactionChannel::Request&) {
+          parser_.reset();
+          round_.broken();
+        })
   , parser_(settings.address, settings.general_reply)
+  , round_(settings.axes[ZOOM].present ? 3 : 2)
 {
 }
 
@@ -81,6 +85,7 @@ void PelcoProtocol::onConnected()
 {
   channel_.reset();
   parser_.reset();
+  round_.broken();
 }
 
 void PelcoProtocol::onDisconnected()
@@ -213,6 +218,7 @@ void PelcoProtocol::handle(const pelco::FrameParser::Event& event)
   if ((event.general_reply && answered->tag != COMMAND) || (!event.general_reply && reply != expected_reply))
   {
     ++counters_.unexpected_frames;
+    round_.broken();
     return;
   }
   session_.ready();  // the device answers: that is all Pelco-D has to say about itself
@@ -222,33 +228,28 @@ void PelcoProtocol::handle(const pelco::FrameParser::Event& event)
     return;
   }
   const std::uint16_t value = event.frame.value();
+  std::size_t index = 0;
   switch (answered->tag)
   {
     case QUERY_PAN:
       polled_[PAN] = toRadians(pelco::decodePan(value));
-      answered_in_round_ = 1;
-      return;
+      break;
     case QUERY_TILT:
       polled_[TILT] = toRadians(pelco::decodeTilt(value, settings_.tilt_encoding));
-      answered_in_round_ = answered_in_round_ == 1 ? 2 : 0;
-      if (settings_.axes[ZOOM].present)
-      {
-        return;  // the zoom answer completes the state
-      }
+      index = 1;
       break;
     case QUERY_ZOOM:
       polled_[ZOOM] = settings_.positionToZoom(value);
-      answered_in_round_ = answered_in_round_ == 2 ? 3 : 0;
+      index = 2;
       break;
     default:
       return;
   }
-  const int whole_round = settings_.axes[ZOOM].present ? 3 : 2;
-  if (answered_in_round_ == whole_round)
+  // A state only from a whole round, never with an axis left from before a lost reply (a silence).
+  if (round_.answered(index))
   {
     session_.reportState(polled_);
   }
-  answered_in_round_ = 0;
 }
 
 }  // namespace ptz_action_server

@@ -41,11 +41,13 @@ ViscaProtocol::ViscaProtocol(const ViscaSettings& settings, DeviceSession& sessi
         replyTimeout(session.linkConfig(), settings.reply_timeout, VISCA_EXCHANGE_BYTES),
         [this](const TransactionChannel::Request& lost) {
           splitter_.reset();
+          round_.broken();
           if (lost.tag == ADDRESS_SET || lost.tag == IF_CLEAR || lost.tag == SEQUENCE_RESET)
           {
             channel_.retry(lost);  // the set-up goes on until the camera answers
           }
         })
+  , round_(settings.model.has_zoom ? 2 : 1)
 {
 }
 
@@ -69,6 +71,7 @@ void ViscaProtocol::onConnected()
   channel_.reset();
   splitter_.reset();
   sockets_.fill(std::nullopt);
+  round_.broken();
   sequence_ = 0;
   queueSetup();
 }
@@ -76,6 +79,7 @@ void ViscaProtocol::onConnected()
 void ViscaProtocol::onDisconnected()
 {
   channel_.reset();
+  round_.broken();
   set_up_ = false;
 }
 
@@ -300,7 +304,7 @@ void ViscaProtocol::handle(const visca::Packet& packet)
   }
   else if (reply.kind == Kind::ANSWER && (tag == PAN_TILT_INQUIRY || tag == ZOOM_INQUIRY))
   {
-    handleAnswer(reply);
+    handleAnswer(reply, tag);
   }
   else if (reply.kind == Kind::ADDRESS_SET && tag == ADDRESS_SET)
   {
@@ -321,41 +325,36 @@ void ViscaProtocol::handle(const visca::Packet& packet)
   }
 }
 
-void ViscaProtocol::handleAnswer(const visca::Reply& reply)
+void ViscaProtocol::handleAnswer(const visca::Reply& reply, Tag tag)
 {
+  // Read as the inquiry on the wire asked: a late answer to the other inquiry is not taken for this one's.
   std::int16_t pan = 0;
   std::int16_t tilt = 0;
   std::uint16_t zoom = 0;
-  if (visca::decodePanTiltAnswer(reply, pan, tilt))
+  const bool pan_tilt = tag == PAN_TILT_INQUIRY;
+  if (pan_tilt ? !visca::decodePanTiltAnswer(reply, pan, tilt) : !visca::decodeZoomAnswer(reply, zoom))
+  {
+    ++counters_.unexpected_replies;
+    round_.broken();
+    return;
+  }
+  session_.reportAlive();
+  if (pan_tilt)
   {
     polled_[PAN] = settings_.model.fromSteps(PAN, pan);
     polled_[TILT] = settings_.model.fromSteps(TILT, tilt);
-    session_.reportAlive();
-    pan_tilt_answered_ = true;
-    if (settings_.model.has_zoom)
-    {
-      return;  // the zoom answer completes the state
-    }
-  }
-  else if (visca::decodeZoomAnswer(reply, zoom))
-  {
-    polled_[ZOOM] = settings_.model.positionToZoom(zoom);
   }
   else
   {
-    ++counters_.unexpected_replies;
-    return;
+    polled_[ZOOM] = settings_.model.positionToZoom(zoom);
   }
-  if (!set_up_)
+  // Never a pan and tilt from before a lost answer (a silence) with a zoom from after it.
+  if (!round_.answered(pan_tilt ? 0 : 1) || !set_up_)
   {
     return;
   }
   session_.ready();
-  if (pan_tilt_answered_)  // never a pan and tilt left from before a lost answer (a silence)
-  {
-    session_.reportState(polled_);
-  }
-  pan_tilt_answered_ = false;
+  session_.reportState(polled_);
 }
 
 void ViscaProtocol::handleError(const visca::Reply& reply)

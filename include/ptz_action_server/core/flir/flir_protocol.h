@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "ptz_action_server/core/device/device_backend.h"
+#include "ptz_action_server/core/device/poll_round.h"
 #include "ptz_action_server/core/device/transaction_channel.h"
 #include "ptz_action_server/core/flir/flir_codec.h"
 
@@ -137,7 +138,7 @@ private:
   void handleReset(const flir::Reply& reply);
   void handleAnswer(const TransactionChannel::Request& request, const flir::Reply& reply);
   /// A query answered without its number, or a set-up that made no sense: counted; the set-up starts again.
-  void unusable(Tag tag);
+  void unusable();
   void onTimeout(const TransactionChannel::Request& lost);
   /// Forgets what is on the wire and sends the set-up once \p wait is over (at most banner_timeout from now).
   void setUpAfter(Wait wait);
@@ -160,7 +161,7 @@ private:
   TimePoint wait_deadline_{};    ///< the set-up goes out then, whatever the line does
   TimePoint last_bytes_at_{};    ///< when the unit last said anything
   bool ready_ = false;           ///< the set-up of this connection is complete
-  bool pan_polled_ = false;      ///< polled_pan_ is from the PP just before the TP being answered
+  PollRound round_{ 2 };         ///< PP, then TP: polled_pan_ goes with the TP answered right after it
   double polled_pan_ = 0.0;      ///< rad, from the last PP
   double pan_resolution_ = 0.0;  ///< rad per position
   double tilt_resolution_ = 0.0;

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "ptz_action_server/core/device/device_backend.h"
+#include "ptz_action_server/core/device/poll_round.h"
 #include "ptz_action_server/core/device/transaction_channel.h"
 #include "ptz_action_server/core/pelco_d/pelco_d_codec.h"
 
@@ -122,9 +123,7 @@ private:
 
   // I/O thread only.
   AxisValues polled_{ { 0.0, 0.0, 1.0 } };
-  /// How many axes of this poll's round (pan, then tilt, then zoom) have been answered in order: a state is
-  /// reported only when the round is whole, never with an axis left from before a lost reply (a silence).
-  int answered_in_round_ = 0;
+  PollRound round_;                                ///< pan, then tilt, then zoom (where the device has zoom)
   std::vector<pelco::FrameParser::Event> events_;  ///< reused for every read
 };
 

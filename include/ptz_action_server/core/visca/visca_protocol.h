@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "ptz_action_server/core/device/device_backend.h"
+#include "ptz_action_server/core/device/poll_round.h"
 #include "ptz_action_server/core/device/transaction_channel.h"
 #include "ptz_action_server/core/visca/visca_codec.h"
 #include "ptz_action_server/core/visca/visca_model.h"
@@ -129,7 +130,7 @@ private:
   void write(const std::string& bytes);
   void readPackets(const std::uint8_t* data, std::size_t size);
   void handle(const visca::Packet& packet);
-  void handleAnswer(const visca::Reply& reply);
+  void handleAnswer(const visca::Reply& reply, Tag tag);
   void handleError(const visca::Reply& reply);
   void handleControl(const visca::Packet& payload);
   void setUpDone();
@@ -149,7 +150,7 @@ private:
   std::uint32_t sequence_ = 0;
   std::array<std::optional<SocketUse>, 16> sockets_;
   AxisValues polled_{ { 0.0, 0.0, 1.0 } };
-  bool pan_tilt_answered_ = false;      ///< polled_'s pan and tilt answer this round's inquiry (the zoom completes it)
+  PollRound round_;                     ///< the pan-tilt answer, then the zoom answer (where the model has zoom)
   std::vector<visca::Packet> packets_;  ///< reused for every read
 };
 
