@@ -469,4 +469,30 @@ TEST(TransactionChannel, AnUrgentRequestGoesOutAheadOfTheQueue)
   EXPECT_EQ(written.back(), "B");
 }
 
+TEST(TransactionChannel, AReplyThatDoesNotAnswerTheRequestOnTheWireLeavesItWaitingForItsOwn)
+{
+  // A reply later than the drain, on a device whose replies say what they answer: it must not take the place of the
+  // reply of the request now on the wire, or every reply from then on would be matched one request behind.
+  boost::asio::io_context context;
+  ManualClock clock;
+  std::vector<std::string> written;
+  TransactionChannel channel(
+      context, clock, [&](const std::string& bytes) { written.push_back(bytes); }, 1.0,
+      [](const TransactionChannel::Request&) {});
+  channel.queue({ "PAN?", 1, true, 0 });
+  channel.queue({ "TILT?", 2, true, 0 });
+  const auto answers_tag = [](int tag) {
+    return [tag](const TransactionChannel::Request& on_wire) { return on_wire.tag == tag; };
+  };
+  // The pan answer came: the tilt question goes out.
+  ASSERT_EQ(channel.complete(answers_tag(1))->tag, 1);
+  EXPECT_EQ(written.back(), "TILT?");
+  // A late pan answer (of a question before) is dropped, and the tilt question is still the one on the wire.
+  EXPECT_FALSE(channel.complete(answers_tag(1)).has_value());
+  EXPECT_EQ(channel.lateReplies(), 1u);
+  const std::optional<TransactionChannel::Request> tilt = channel.complete(answers_tag(2));
+  ASSERT_TRUE(tilt.has_value());
+  EXPECT_EQ(tilt->tag, 2);
+}
+
 }  // namespace

@@ -82,7 +82,13 @@ void TransactionChannel::close()
 
 std::optional<TransactionChannel::Request> TransactionChannel::complete()
 {
-  if (clock_.now() < drain_until_ || outstanding_.empty())
+  return complete([](const Request&) { return true; });
+}
+
+std::optional<TransactionChannel::Request>
+TransactionChannel::complete(const std::function<bool(const Request&)>& answers)
+{
+  if (clock_.now() < drain_until_ || outstanding_.empty() || !answers(outstanding_.front()))
   {
     ++late_replies_;
     return std::nullopt;

@@ -206,20 +206,23 @@ void PelcoProtocol::handle(const pelco::FrameParser::Event& event)
     ++counters_.unexpected_frames;
     return;
   }
-  const std::optional<TransactionChannel::Request> answered = channel_.complete();
+  // The reply to the request on the wire if it is its kind of reply; otherwise the late reply of one before it (a pan
+  // answer while the tilt query waits), dropped, and the request on the wire waits for its own.
+  const auto can_answer = [&event, reply](const TransactionChannel::Request& on_wire) {
+    if (event.general_reply)
+    {
+      return on_wire.tag == COMMAND;
+    }
+    const int expected_reply = on_wire.tag == QUERY_PAN  ? pelco::PAN_REPLY :
+                               on_wire.tag == QUERY_TILT ? pelco::TILT_REPLY :
+                               on_wire.tag == QUERY_ZOOM ? pelco::ZOOM_REPLY :
+                                                           -1;
+    return reply == expected_reply;
+  };
+  const std::optional<TransactionChannel::Request> answered = channel_.complete(can_answer);
   if (!answered)
   {
     return;  // late: the channel counts it
-  }
-  const int expected_reply = answered->tag == QUERY_PAN  ? pelco::PAN_REPLY :
-                             answered->tag == QUERY_TILT ? pelco::TILT_REPLY :
-                             answered->tag == QUERY_ZOOM ? pelco::ZOOM_REPLY :
-                                                           -1;
-  if ((event.general_reply && answered->tag != COMMAND) || (!event.general_reply && reply != expected_reply))
-  {
-    ++counters_.unexpected_frames;
-    round_.broken();
-    return;
   }
   session_.ready();  // the device answers: that is all Pelco-D has to say about itself
   session_.reportAlive();

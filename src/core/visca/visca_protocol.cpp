@@ -290,8 +290,26 @@ void ViscaProtocol::handle(const visca::Packet& packet)
     default:
       break;
   }
-  // ACK, ANSWER, ADDRESS_SET, IF_CLEAR: the reply to the one request on the wire.
-  const std::optional<TransactionChannel::Request> answered = channel_.complete();
+  // ACK, ANSWER, ADDRESS_SET, IF_CLEAR: the reply to the one request on the wire, if it can be its reply (an ACK to a
+  // command, an answer of its inquiry's size); otherwise the late reply of one before it.
+  const auto can_answer = [&reply](const TransactionChannel::Request& on_wire) {
+    std::int16_t pan = 0;
+    std::int16_t tilt = 0;
+    std::uint16_t zoom = 0;
+    switch (reply.kind)
+    {
+      case Kind::ACK:
+        return on_wire.tag == COMMAND;
+      case Kind::ANSWER:
+        return on_wire.tag == PAN_TILT_INQUIRY ? visca::decodePanTiltAnswer(reply, pan, tilt) :
+                                                 on_wire.tag == ZOOM_INQUIRY && visca::decodeZoomAnswer(reply, zoom);
+      case Kind::ADDRESS_SET:
+        return on_wire.tag == ADDRESS_SET;
+      default:
+        return on_wire.tag == IF_CLEAR;
+    }
+  };
+  const std::optional<TransactionChannel::Request> answered = channel_.complete(can_answer);
   if (!answered)
   {
     return;  // late: the channel counts it

@@ -64,6 +64,10 @@ public:
 
   /// A reply arrived: the request it answers, or nothing (none outstanding, or draining after a timeout).
   std::optional<Request> complete();
+  /// A reply that \p answers tells apart arrived: the request on the wire if it answers it. Otherwise it is the late
+  /// reply of a request that timed out (counted, dropped) and the request on the wire still waits for its own: a
+  /// device that once answered later than the drain is not answered one request behind from then on.
+  std::optional<Request> complete(const std::function<bool(const Request&)>& answers);
   std::size_t queued() const
   {
     return queue_.size();
