@@ -452,14 +452,21 @@ TEST(TransactionChannel, RunsOnTheInjectedClock)
   EXPECT_EQ(answered->tag, 2);
 }
 
-TEST(TransactionChannel, AnUrgentRequestGoesOutAheadOfTheQueue)
+/// A channel with a reply timeout of 1 s on a ManualClock, its writes kept.
+class ChannelOnManualClock : public ::testing::Test
 {
-  boost::asio::io_context context;
-  ManualClock clock;
-  std::vector<std::string> written;
-  TransactionChannel channel(
-      context, clock, [&](const std::string& bytes) { written.push_back(bytes); }, 1.0,
-      [](const TransactionChannel::Request&) {});
+protected:
+  boost::asio::io_context context_;
+  ManualClock clock_;
+  std::vector<std::string> written_;
+  TransactionChannel channel_{ context_, clock_, [this](const std::string& bytes) { written_.push_back(bytes); }, 1.0,
+                               [](const TransactionChannel::Request&) {} };
+};
+
+TEST_F(ChannelOnManualClock, AnUrgentRequestGoesOutAheadOfTheQueue)
+{
+  TransactionChannel& channel = channel_;
+  std::vector<std::string>& written = written_;
   channel.queue({ "A", 1, true, 0 });
   channel.queue({ "B", 2, true, 0 });
   channel.sendUrgent({ "HALT", 3, true, 0 });
@@ -469,16 +476,12 @@ TEST(TransactionChannel, AnUrgentRequestGoesOutAheadOfTheQueue)
   EXPECT_EQ(written.back(), "B");
 }
 
-TEST(TransactionChannel, AReplyThatDoesNotAnswerTheRequestOnTheWireLeavesItWaitingForItsOwn)
+TEST_F(ChannelOnManualClock, AReplyThatDoesNotAnswerTheRequestOnTheWireLeavesItWaitingForItsOwn)
 {
   // A reply later than the drain, on a device whose replies say what they answer: it must not take the place of the
   // reply of the request now on the wire, or every reply from then on would be matched one request behind.
-  boost::asio::io_context context;
-  ManualClock clock;
-  std::vector<std::string> written;
-  TransactionChannel channel(
-      context, clock, [&](const std::string& bytes) { written.push_back(bytes); }, 1.0,
-      [](const TransactionChannel::Request&) {});
+  TransactionChannel& channel = channel_;
+  std::vector<std::string>& written = written_;
   channel.queue({ "PAN?", 1, true, 0 });
   channel.queue({ "TILT?", 2, true, 0 });
   const auto answers_tag = [](int tag) {
