@@ -258,8 +258,10 @@ TEST_F(PanelTest, OffersTheCameraAndShowsItsState)
     return observer_.has_state && text("state_pan") == ptz_action_server::panel::angleText(observer_.state.pan) &&
            text("state_mode") == "idle";
   })) << text("state_pan");
-  // The look_at_clicked_point switch stays greyed without its service.
-  EXPECT_FALSE(enabled("look_at_clicked_point"));
+  // The node offers look_at_clicked_point: once the panel's discovery (every second) has found the service, its switch
+  // is live (greyed without it: test_panel_model.cpp). It used to expect the switch greyed here, which held only while
+  // discovery had not yet run.
+  EXPECT_TRUE(waitFor([&] { return enabled("look_at_clicked_point"); }));
 }
 
 TEST_F(PanelTest, JogSendsAVelocityGoalWhileHeldAndStopsOnRelease)
