@@ -314,56 +314,48 @@ void ViscaProtocol::handle(const visca::Packet& packet)
   {
     return;  // late: the channel counts it
   }
-  const Tag tag = static_cast<Tag>(answered->tag);
-  if (reply.kind == Kind::ACK && tag == COMMAND)
+  // can_answer matched the reply's kind to the request's tag.
+  switch (reply.kind)
   {
-    sockets_[reply.socket] = SocketUse{ answered->command, answered->bytes };
-    session_.reportAlive();
-  }
-  else if (reply.kind == Kind::ANSWER && (tag == PAN_TILT_INQUIRY || tag == ZOOM_INQUIRY))
-  {
-    handleAnswer(reply, tag);
-  }
-  else if (reply.kind == Kind::ADDRESS_SET && tag == ADDRESS_SET)
-  {
-    const int cameras = reply.data[0] - 1;  // w is the next free address
-    if (settings_.address > cameras)
-    {
-      session_.failStartup("the VISCA chain has " + std::to_string(cameras) + " camera(s), none at address " +
-                           std::to_string(settings_.address));
+    case Kind::ACK:
+      sockets_[reply.socket] = SocketUse{ answered->command, answered->bytes };
+      session_.reportAlive();
+      return;
+    case Kind::ANSWER:
+      handleAnswer(reply, static_cast<Tag>(answered->tag));
+      return;
+    case Kind::ADDRESS_SET: {
+      const int cameras = reply.data[0] - 1;  // w is the next free address
+      if (settings_.address > cameras)
+      {
+        session_.failStartup("the VISCA chain has " + std::to_string(cameras) + " camera(s), none at address " +
+                             std::to_string(settings_.address));
+      }
+      return;
     }
-  }
-  else if (reply.kind == Kind::IF_CLEAR && tag == IF_CLEAR)
-  {
-    setUpDone();
-  }
-  else
-  {
-    ++counters_.unexpected_replies;
+    default:  // IF_CLEAR
+      setUpDone();
+      return;
   }
 }
 
 void ViscaProtocol::handleAnswer(const visca::Reply& reply, Tag tag)
 {
-  // Read as the inquiry on the wire asked: a late answer to the other inquiry is not taken for this one's.
+  // The answer of the inquiry on the wire, whose size can_answer checked.
   std::int16_t pan = 0;
   std::int16_t tilt = 0;
   std::uint16_t zoom = 0;
   const bool pan_tilt = tag == PAN_TILT_INQUIRY;
-  if (pan_tilt ? !visca::decodePanTiltAnswer(reply, pan, tilt) : !visca::decodeZoomAnswer(reply, zoom))
-  {
-    ++counters_.unexpected_replies;
-    round_.broken();
-    return;
-  }
   session_.reportAlive();
   if (pan_tilt)
   {
+    visca::decodePanTiltAnswer(reply, pan, tilt);
     polled_[PAN] = settings_.model.fromSteps(PAN, pan);
     polled_[TILT] = settings_.model.fromSteps(TILT, tilt);
   }
   else
   {
+    visca::decodeZoomAnswer(reply, zoom);
     polled_[ZOOM] = settings_.model.positionToZoom(zoom);
   }
   // Never a pan and tilt from before a lost answer (a silence) with a zoom from after it.
