@@ -21,7 +21,9 @@ namespace ptz_action_server
  * \brief A pseudo-terminal whose other end behaves like a serial line at \p baud. Owns its I/O thread.
  *
  * Received bytes reach the handler when the last of them would have arrived over the wire; sent bytes leave at
- * the line's pace. As on a real line, bytes sent or leaving while no client has the port open are lost (a
+ * the line's pace, in packets of up to 64 bytes as a USB serial adapter delivers them, each written to the terminal
+ * once its last byte has crossed the line (a frame reaches the client when it would have ended on the wire). As on a
+ * real line, bytes sent or leaving while no client has the port open are lost (a
  * pseudo-terminal would keep them for the next opener), and so is what a client had not read when it closed the port.
  * Faults: silent (input ignored, nothing sent), garbled output bytes, unplug (the port closes and the link disappears)
  * and replug (a new pseudo-terminal under the same link).
@@ -58,12 +60,6 @@ private:
     TimePoint at;
     std::vector<std::uint8_t> bytes;
   };
-  struct OutputByte
-  {
-    TimePoint at;  ///< when the byte has crossed the line
-    std::uint8_t byte;
-  };
-
   void openPort();
   void closePort();
   void run();
@@ -79,9 +75,9 @@ private:
   mutable std::mutex mutex_;  ///< guards the port, the queues and the path
   int master_ = -1;
   std::string pty_path_;
-  std::deque<OutputByte> output_;  ///< bytes waiting to be sent, in order
-  TimePoint output_free_at_{};     ///< when the last queued output byte has crossed the line
-  std::deque<Pending> input_;      ///< bytes received, waiting for their wire arrival time
+  std::deque<Pending> output_;  ///< packets waiting to be sent, in order, each due when its last byte has crossed
+  TimePoint output_free_at_{};  ///< when the last queued output byte has crossed the line
+  std::deque<Pending> input_;   ///< bytes received, waiting for their wire arrival time
   TimePoint input_free_at_{};
 
   std::atomic<std::uint64_t> bytes_lost_{ 0 };
