@@ -6,11 +6,10 @@
 #pragma once
 
 #include <atomic>
-#include <chrono>
+#include <condition_variable>
 #include <memory>
 #include <mutex>
 #include <string>
-#include <thread>
 
 #include "ptz_action_server/core/sim/sim_device_model.h"
 #include "ptz_action_server/emulators/device_port.h"
@@ -126,13 +125,9 @@ protected:
     // next request, as on a device that handles one request at a time.
     handlers.on_bytes = [this, on_bytes = std::move(handlers.on_bytes)](const std::uint8_t* data, std::size_t size,
                                                                         TimePoint arrived_at) {
-      const auto until = SteadyClock::now() + std::chrono::duration_cast<SteadyClock::duration>(
-                                                  std::chrono::duration<double>(reply_delay_.load()));
-      while (SteadyClock::now() < until && !closing_)
-      {
-        std::this_thread::sleep_for(std::chrono::milliseconds(2));
-      }
-      std::lock_guard<std::mutex> lock(handler_mutex_);
+      const TimePoint until = addSeconds(SteadyClock::now(), reply_delay_.load());
+      std::unique_lock<std::mutex> lock(handler_mutex_);
+      closing_changed_.wait_until(lock, until, [this] { return closing_.load(); });
       if (!closing_)  // closePort() may be under way: port_ is going
       {
         on_bytes(data, size, arrived_at);
@@ -148,6 +143,7 @@ protected:
       std::lock_guard<std::mutex> lock(handler_mutex_);  // waits for a handler under way; none runs after
       closing_ = true;
     }
+    closing_changed_.notify_all();  // a slow unit thinking over a request stops at once
     port_.reset();
   }
 
@@ -155,9 +151,10 @@ protected:
   mutable SimDeviceModel model_;  ///< mutable: sampling applies lagged commands
   ReceivedLog<Item> received_;
   std::unique_ptr<DevicePort> port_;
-  std::atomic<double> reply_delay_{ 0.0 };  ///< s, SimFaults::reply_delay
-  std::atomic<bool> closing_{ false };      ///< closePort() began: no handler runs any more
-  std::mutex handler_mutex_;                ///< held while a received-bytes handler runs
+  std::atomic<double> reply_delay_{ 0.0 };   ///< s, SimFaults::reply_delay
+  std::atomic<bool> closing_{ false };       ///< closePort() began: no handler runs any more
+  std::mutex handler_mutex_;                 ///< held while a received-bytes handler runs (or waits out the delay)
+  std::condition_variable closing_changed_;  ///< closePort() began
 };
 
 }  // namespace ptz_action_server
