@@ -68,6 +68,12 @@ double PanelClient::now() const
 
 void PanelClient::setNamespace(const std::string& ns)
 {
+  // The old camera's subscriptions and action clients end after mutex_ is released (these are destroyed after the
+  // lock, declared below): ending a subscription waits for its callback under way, which may be waiting for mutex_.
+  std::vector<ros::Subscriber> old_subscribers;
+  std::unique_ptr<PtzClient> old_velocity_client;
+  std::unique_ptr<PtzClient> old_absolute_client;
+  std::unique_ptr<PresetClient> old_preset_client;
   std::uint64_t generation = 0;
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -75,16 +81,12 @@ void PanelClient::setNamespace(const std::string& ns)
     {
       return;
     }
-    generation = ++generation_;
+    generation = ++generation_;  // from here on, the old camera's callbacks change nothing
     ns_ = ns;
-    for (ros::Subscriber& subscriber : subscribers_)
-    {
-      subscriber.shutdown();
-    }
-    subscribers_.clear();
-    velocity_client_.reset();
-    absolute_client_.reset();
-    preset_client_.reset();
+    old_subscribers.swap(subscribers_);
+    old_velocity_client = std::move(velocity_client_);
+    old_absolute_client = std::move(absolute_client_);
+    old_preset_client = std::move(preset_client_);
     jogging_ = false;
     watch_.reset();
     statuses_.clear();

@@ -12,6 +12,7 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QtTest/QTest>
+#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -375,6 +376,44 @@ TEST_F(PanelTest, GreysWithoutPtzStateAndRecovers)
   EXPECT_FALSE(enabled("preset_go"));
   panel()->setNamespace("/ptz");
   EXPECT_TRUE(waitFor([&] { return enabled("jog_right") && text("banner").empty(); }));
+}
+
+// Switching away from a camera while its states pour in: ending a subscription waits for its callback under way, and
+// that callback waits for the panel client's lock, so the client must not hold it then. It did, and the panel hung
+// (once, under load, in GreysWithoutPtzStateAndRecovers).
+TEST_F(PanelTest, SwitchingAwayFromACameraWhileItsStatesPourInNeverHangs)
+{
+  ros::NodeHandle flooding_camera("/flooding_camera");
+  ros::Publisher publisher =
+      flooding_camera.advertise<ptz_action_server::PtzState>(ptz_action_server::panel::STATE_TOPIC, 1000);
+  struct Flood
+  {
+    std::atomic<bool> on{ true };
+    std::thread thread;
+    ~Flood()
+    {
+      on = false;
+      thread.join();
+    }
+  } flood;
+  flood.thread = std::thread([&] {
+    ptz_action_server::PtzState state;
+    state.pan = 1.234f;
+    while (flood.on)
+    {
+      publisher.publish(state);
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+  });
+  const std::string flooding_pan = ptz_action_server::panel::angleText(1.234f);
+  for (int round = 0; round < 20; ++round)
+  {
+    panel()->setNamespace("/flooding_camera");
+    ASSERT_TRUE(waitFor([&] { return text("state_pan") == flooding_pan; })) << "round " << round;
+    panel()->setNamespace("/ptz");  // ends the flooding camera's subscriptions, their callbacks under way
+    const bool back = waitFor([&] { return text("state_pan") != flooding_pan && enabled("jog_right"); });
+    ASSERT_TRUE(back) << "round " << round;
+  }
 }
 
 TEST_F(PanelTest, GreysMotionWhileTheLinkIsDown)
