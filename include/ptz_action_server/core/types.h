@@ -117,6 +117,9 @@ struct AxisCapability
   bool absolute = true;       ///< goes to a commanded position (false: it only moves at a speed)
   bool velocity = true;       ///< moves at a commanded speed
   bool feedback = true;       ///< reports where it is (false: the sample's position of this axis means nothing)
+  /// Zoom only, for a zoom that cannot go to X-factors (`absolute` or `feedback` false): the device can still go to
+  /// its widest view, zoom 1, so a zoom 1 goal reaches goTo() as 1.0 (without it, a zoom 1 goal leaves the zoom alone).
+  bool widest_view = false;
   AxisRange range;            ///< position limits
   double max_speed = 1.0;     ///< largest speed the device accepts, per second
   double acceleration = 0.0;  ///< per second squared; 0 means "unknown, treat as instant"
