@@ -7,6 +7,7 @@
 
 #include "ptz_action_server/core/capabilities.h"
 #include "ptz_action_server/core/goal/goal_validation.h"
+#include "ptz_action_server/core/text.h"
 
 namespace ptz_action_server
 {
@@ -31,6 +32,17 @@ std::string GoalTranslator::convert(const PtzGoal& goal, ActionKind kind, const 
         if (capability.present && capability.feedback)
         {
           command.values[axis] += sample.position[axis];
+        }
+        else if (axis == ZOOM && !capability.present)
+        {
+          // The seed: "if the camera does not support zoom ... the zoom field is ignored".
+          if (values[axis] != 0.0)
+          {
+            command.note =
+                formatText("zoom offset %.4f X ignored: %s", values[axis],
+                           capability.limitation.empty() ? "the device has no zoom" : capability.limitation.c_str());
+          }
+          command.values[axis] = 0.0;
         }
         else if (values[axis] != 0.0 && reason.empty())
         {

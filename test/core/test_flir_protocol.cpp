@@ -189,10 +189,10 @@ TEST_F(FlirTest, CapabilitiesArePanAndTiltToPositionsAtSpeedsWithFeedbackAndNoZo
   EXPECT_FALSE(zoom.velocity);
   EXPECT_FALSE(zoom.feedback);
   EXPECT_EQ(zoom.limitation, "a FLIR PTU has no zoom");
-  // A zoom goal is refused in those words; a pan-tilt goal that leaves the zoom at 1 is not.
+  // A zoom goal is taken on pan and tilt and the zoom ignored, in those words (the seed names this very unit).
   const ValidatedGoal zoom_goal = validatePositionGoal({ 0.1, 0.1, 4.0 }, capabilities, false);
-  EXPECT_FALSE(zoom_goal.accepted);
-  EXPECT_EQ(zoom_goal.message, "a FLIR PTU has no zoom: zoom goals are not supported");
+  EXPECT_TRUE(zoom_goal.accepted);
+  EXPECT_EQ(zoom_goal.message, "zoom 4.0000 X ignored: a FLIR PTU has no zoom");
   EXPECT_TRUE(validatePositionGoal({ 0.1, 0.1, 1.0 }, capabilities, false).accepted);
   EXPECT_TRUE(capabilities.relative_moves);  // PO / TO
   EXPECT_FALSE(capabilities.device_presets);

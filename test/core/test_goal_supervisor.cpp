@@ -269,3 +269,72 @@ TEST_F(BlindZoomSupervisorTest, AGoalThatLeavesTheZoomAloneIsJudgedOnPanAndTiltO
   blind_.supervise(blind_.sample());
   EXPECT_EQ(goal->end, "SUCCEEDED: reached pan 0.5000 rad, tilt -0.1000 rad");
 }
+
+TEST_F(BlindZoomSupervisorTest, ZoomOneIsTheWidestViewAndTheTextsSaySoOnAZoomItCannotSee)
+{
+  const auto goal = submitBlind(positionGoal(0.5, -0.1, 1.0));
+  ASSERT_TRUE(goal->accepted) << goal->end;
+  EXPECT_EQ(backend_->commands, std::vector<std::string>{ "goTo 0.50 -0.10 nan" });  // no widest_view: left alone
+  backend_->at({ 0.5, -0.1, 7.0 }, false);
+  clock_->advance(0.1);
+  blind_.supervise(blind_.sample());
+  EXPECT_EQ(goal->end, "SUCCEEDED: reached pan 0.5000 rad, tilt -0.1000 rad (zoom 1 (the widest view) left as it is: "
+                       "this camera reports no zoom position)");
+}
+
+/// A pan-tilt unit: no zoom at all.
+class NoZoomSupervisorTest : public GoalSupervisorTest
+{
+protected:
+  static Capabilities panTiltUnit()
+  {
+    Capabilities limits = SimDeviceConfig::defaults().capabilities();
+    limits.axes[ZOOM] = absentAxis("a FLIR PTU has no zoom");
+    return limits;
+  }
+  NoZoomSupervisorTest() : unit_(backend_, panTiltUnit(), GoalMonitorConfig(), false, clock_)
+  {
+  }
+  std::shared_ptr<GoalLog> submitToUnit(const GoalConverter& convert, const std::string& action = "position_abs")
+  {
+    auto log = std::make_shared<GoalLog>();
+    unit_.submit(std::make_unique<RecordingGoal>(action, "unit", log), convert);
+    return log;
+  }
+  GoalSupervisor unit_;
+};
+
+TEST_F(NoZoomSupervisorTest, AZoomGoalIsJudgedOnPanAndTiltAndItsTextsSayTheZoomWasIgnored)
+{
+  const auto goal = submitToUnit(positionGoal(0.5, -0.1, 2.0));
+  ASSERT_TRUE(goal->accepted) << goal->end;
+  EXPECT_EQ(goal->accept_text, "zoom 2.0000 X ignored: a FLIR PTU has no zoom");
+  EXPECT_EQ(backend_->commands, std::vector<std::string>{ "goTo 0.50 -0.10 1.00" });
+  backend_->at({ 0.5, -0.1, 1.0 }, false);
+  clock_->advance(0.1);
+  unit_.supervise(unit_.sample());
+  EXPECT_EQ(goal->end, "SUCCEEDED: reached pan 0.5000 rad, tilt -0.1000 rad (zoom 2.0000 X ignored: a FLIR PTU has "
+                       "no zoom)");
+}
+
+TEST_F(NoZoomSupervisorTest, WhatTheConversionLeftOutComesBeforeTheValidationsNotes)
+{
+  const auto goal = submitToUnit(
+      [](const PtzSample&, GoalCommand& command) {
+        command.values = { 4.0, 0.0, 0.0 };
+        command.note = "zoom offset 1.5000 X ignored: a FLIR PTU has no zoom";
+        return std::string();
+      },
+      "position_rel");
+  ASSERT_FALSE(goal->accepted) << goal->end;  // pan 4 is out of range: the note never hides a refusal
+  EXPECT_EQ(goal->end, "REJECTED: pan 4.0000 rad is outside the limits [-3.1416, 3.1416] rad");
+  const auto offset = submitToUnit(
+      [](const PtzSample&, GoalCommand& command) {
+        command.values = { 0.2, 0.0, 0.0 };
+        command.note = "zoom offset 1.5000 X ignored: a FLIR PTU has no zoom";
+        return std::string();
+      },
+      "position_rel");
+  ASSERT_TRUE(offset->accepted) << offset->end;
+  EXPECT_EQ(offset->accept_text, "zoom offset 1.5000 X ignored: a FLIR PTU has no zoom");
+}

@@ -101,20 +101,75 @@ TEST(GoalValidation, VelocityAboveMaxSpeedIsRejectedOrClamped)
   EXPECT_NE(clamped.message.find("pan -2.0000 -> -1.5000 rad/s"), std::string::npos) << clamped.message;
 }
 
-TEST(GoalValidation, AZoomGoalOnADeviceWithoutZoomIsRefusedNamingWhatItLacks)
+TEST(GoalValidation, AZoomGoalOnADeviceWithoutZoomIsIgnoredAsTheSeedSays)
 {
   Capabilities limits = cameraLimits();
   limits.axes[ZOOM] = absentAxis();
-  // Zoom 1 (what it reports) and 0 (unset) ask nothing of it; 4 does.
-  EXPECT_TRUE(validatePositionGoal({ 0.1, 0.1, 1.0 }, limits, false).accepted);
-  const ValidatedGoal refused = validatePositionGoal({ 0.1, 0.1, 4.0 }, limits, false);
-  EXPECT_FALSE(refused.accepted);
-  EXPECT_EQ(refused.message, "the device has no zoom: zoom goals are not supported");
-  // Clamping never turns it into a goal reached at zoom 1.
-  EXPECT_FALSE(validatePositionGoal({ 0.1, 0.1, 4.0 }, limits, true).accepted);
-  EXPECT_EQ(validateVelocityGoal({ 0.0, 0.0, 0.5 }, limits, true).message, "the device has no zoom: zoom velocity "
-                                                                           "goals are not supported");
-  EXPECT_TRUE(validateVelocityGoal({ 0.2, 0.0, 0.0 }, limits, false).accepted);
+  // Zoom 1 (what it reports) and 0 (unset) ask nothing of it: accepted without a word.
+  for (double zoom : { 0.0, 1.0 })
+  {
+    const ValidatedGoal quiet = validatePositionGoal({ 0.1, 0.1, zoom }, limits, false);
+    ASSERT_TRUE(quiet.accepted) << quiet.message;
+    EXPECT_EQ(quiet.message, "");
+    EXPECT_DOUBLE_EQ(quiet.values[ZOOM], 1.0);
+  }
+  // Any other zoom is ignored, and the goal says so; it is judged on pan and tilt only.
+  for (bool clamp : { false, true })
+  {
+    const ValidatedGoal ignored = validatePositionGoal({ 0.1, 0.1, 4.0 }, limits, clamp);
+    ASSERT_TRUE(ignored.accepted) << ignored.message;
+    EXPECT_EQ(ignored.message, "zoom 4.0000 X ignored: the device has no zoom");
+    EXPECT_DOUBLE_EQ(ignored.values[ZOOM], 1.0);
+    EXPECT_TRUE(ignored.judged[PAN]);
+    EXPECT_TRUE(ignored.judged[TILT]);
+    EXPECT_FALSE(ignored.judged[ZOOM]);
+  }
+  // In the device's own words, after a clamping note.
+  limits.axes[ZOOM] = absentAxis("a FLIR PTU has no zoom");
+  EXPECT_EQ(validatePositionGoal({ 4.0, 0.1, -3.0 }, limits, true).message, "clamped pan 4.0000 -> 3.1416 rad; zoom "
+                                                                            "-3.0000 X ignored: a FLIR PTU has no "
+                                                                            "zoom");
+  // A zoom velocity too: the goal moves pan and tilt only.
+  const ValidatedGoal velocity = validateVelocityGoal({ 0.2, 0.0, 0.5 }, limits, false);
+  ASSERT_TRUE(velocity.accepted) << velocity.message;
+  EXPECT_EQ(velocity.message, "zoom velocity 0.5000 X/s ignored: a FLIR PTU has no zoom");
+  EXPECT_EQ(velocity.values, (AxisValues{ 0.2, 0.0, 0.0 }));
+  EXPECT_FALSE(velocity.judged[ZOOM]);
+  // NaN is still refused there: it is not a zoom, it is a broken goal.
+  EXPECT_FALSE(validatePositionGoal({ 0.1, 0.1, NaN }, limits, false).accepted);
+  EXPECT_FALSE(validateVelocityGoal({ 0.1, 0.1, INF }, limits, false).accepted);
+}
+
+TEST(GoalValidation, ZoomOneTheWidestViewIsAcceptedOnAZoomThatCannotBePositioned)
+{
+  Capabilities limits = cameraLimits();
+  AxisCapability& zoom = limits.axes[ZOOM];
+  zoom.feedback = false;
+  zoom.absolute = false;
+  zoom.limitation = "this Axis camera gives no zoom table";
+  zoom.remedy = "set axis/zoom_table";
+  // Without a way to its widest view: left alone (NaN), not judged, and said so.
+  const ValidatedGoal left = validatePositionGoal({ 0.1, 0.1, 1.0 }, limits, false);
+  ASSERT_TRUE(left.accepted) << left.message;
+  EXPECT_TRUE(std::isnan(left.values[ZOOM]));
+  EXPECT_FALSE(left.judged[ZOOM]);
+  EXPECT_EQ(left.message, "zoom 1 (the widest view) left as it is: this Axis camera gives no zoom table");
+  // With one: sent as 1, judged only where the device reports its zoom.
+  zoom.widest_view = true;
+  const ValidatedGoal sent = validatePositionGoal({ 0.1, 0.1, 1.0 }, limits, false);
+  ASSERT_TRUE(sent.accepted) << sent.message;
+  EXPECT_DOUBLE_EQ(sent.values[ZOOM], 1.0);
+  EXPECT_FALSE(sent.judged[ZOOM]);
+  EXPECT_EQ(sent.message, "zoom 1 sent as the widest view, not judged: this Axis camera gives no zoom table");
+  zoom.feedback = true;
+  const ValidatedGoal judged = validatePositionGoal({ 0.1, 0.1, 1.0 }, limits, false);
+  ASSERT_TRUE(judged.accepted) << judged.message;
+  EXPECT_TRUE(judged.judged[ZOOM]);
+  EXPECT_EQ(judged.message, "");
+  // Any other zoom is still refused, naming the setting that fixes it.
+  EXPECT_EQ(validatePositionGoal({ 0.1, 0.1, 2.0 }, limits, true).message, "this Axis camera gives no zoom table: zoom "
+                                                                           "goals are not supported; set "
+                                                                           "axis/zoom_table");
 }
 
 TEST(GoalValidation, TheDevicesOwnWordsAndRemedyNameWhatIsMissing)

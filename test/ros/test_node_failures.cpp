@@ -181,6 +181,36 @@ TEST_F(NodeTest, CapabilitiesAreLatchedAndAZoomTheDeviceCannotPositionIsRefusedN
     EXPECT_FALSE(std::isnan(before.zoom));
     return;  // the zoom goals of the other tests cover it
   }
+  if (!can.zoom.present)
+  {
+    // The seed: "if the camera does not support zoom (e.g. the Flir D46 PTU), the zoom field is ignored". Every action
+    // takes the goal on pan and tilt and says the zoom was ignored, in the device's words.
+    const std::string words = can.zoom.limitation.empty() ? "the device has no zoom" : can.zoom.limitation;
+    struct Ignored
+    {
+      PtzClient* client;
+      PtzGoal goal;
+      const char* text;
+    };
+    const std::vector<Ignored> ignored = {
+      { absolute_, makePtzGoal(0.3, 0.1, 2.0), "zoom 2.0000 X ignored: " },
+      { relative_, makePtzGoal(-0.1, 0.0, 1.5), "zoom offset 1.5000 X ignored: " },
+      { velocity_, makePtzGoal(0.0, 0.0, 0.5), "zoom velocity 0.5000 X/s ignored: " },
+    };
+    for (const Ignored& item : ignored)
+    {
+      item.client->sendGoal(item.goal);
+      ASSERT_TRUE(item.client->waitForResult(ros::Duration(GOAL_WAIT)));
+      const std::string text = item.client->getState().getText();
+      EXPECT_EQ(item.client->getState(), State::SUCCEEDED) << text;
+      EXPECT_NE(text.find(item.text + words), std::string::npos) << "'" << text << "' should say '" << item.text << "'";
+    }
+    ASSERT_TRUE(observer_->waitTicks(2));
+    EXPECT_NEAR(observer_->latest().pan, 0.2, 2 * TOLERANCE);  // 0.3, then 0.1 to the left of where it got
+    EXPECT_NEAR(observer_->latest().tilt, 0.1, 2 * TOLERANCE);
+    EXPECT_EQ(observer_->latest().zoom, 1.0f);  // a zoom it lacks is reported as 1
+    return;
+  }
   // A zoom it cannot position: a goal that asks for one is refused with the device's words, and nothing moves.
   struct Case
   {

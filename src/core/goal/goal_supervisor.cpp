@@ -37,7 +37,12 @@ void GoalSupervisor::submit(std::unique_ptr<GoalHandle> goal, const GoalConverte
     return;
   }
   command.values = validated.values;
-  activate(std::move(goal), command, validated.judged, command.track ? std::string() : validated.message);
+  std::string note = command.note;
+  if (!validated.message.empty())
+  {
+    note += (note.empty() ? "" : "; ") + validated.message;
+  }
+  activate(std::move(goal), command, validated.judged, command.track ? std::string() : note);
 }
 
 void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalCommand& command,

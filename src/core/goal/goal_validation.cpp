@@ -50,6 +50,63 @@ bool checkRange(Axis axis, double low, double high, bool velocity, bool clamp, V
   return true;
 }
 
+/// Adds \p note to the goal's notes (after any clamping note).
+void addNote(std::string& notes, const std::string& note)
+{
+  notes += (notes.empty() ? "" : "; ") + note;
+}
+
+/// What the device lacks on \p axis, in its own words when it has them.
+std::string lackOf(const AxisCapability& capability, const char* plain)
+{
+  return capability.limitation.empty() ? plain : capability.limitation;
+}
+
+/**
+ * \brief The seed's zoom rule for a zoom the goal cannot have as asked: true when the goal goes on without it.
+ *
+ * A device without zoom ignores the zoom field ("if the camera does not support zoom ... the zoom field is
+ * ignored"): \p notes says so unless the value asked nothing (0, unset; 1, the zoom it reports). A device with a zoom
+ * it cannot position takes zoom 0 as "leave it" and zoom 1 as its widest view (see commandedZoom()), judged only with
+ * feedback. Any other zoom on such a device is not the goal's to ignore: false.
+ */
+bool goesOnWithoutZoom(const AxisCapability& capability, bool velocity, ValidatedGoal& goal, std::string& notes)
+{
+  double& zoom = goal.values[ZOOM];
+  if (!capability.present)
+  {
+    if (zoom != 0.0 && !(zoom == 1.0 && !velocity))
+    {
+      addNote(notes, formatText("zoom %s%.4f %s ignored: %s", velocity ? "velocity " : "", zoom, unitOf(ZOOM, velocity),
+                                lackOf(capability, "the device has no zoom").c_str()));
+    }
+    zoom = velocity ? 0.0 : commandedZoom(capability, zoom);
+    return true;
+  }
+  if (velocity || (capability.absolute && capability.feedback) || (zoom != 0.0 && zoom != 1.0))
+  {
+    return false;
+  }
+  if (zoom == 1.0)
+  {
+    const std::string lack = lackOf(capability, "the device cannot go to a zoom position");
+    if (!capability.widest_view)
+    {
+      addNote(notes, "zoom 1 (the widest view) left as it is: " + lack);
+    }
+    else if (capability.feedback)
+    {
+      goal.judged[ZOOM] = true;
+    }
+    else
+    {
+      addNote(notes, "zoom 1 sent as the widest view, not judged: " + lack);
+    }
+  }
+  zoom = commandedZoom(capability, zoom);
+  return true;
+}
+
 ValidatedGoal validate(const AxisValues& values, const Capabilities& limits, bool clamp, bool velocity)
 {
   ValidatedGoal goal;
@@ -59,16 +116,19 @@ ValidatedGoal validate(const AxisValues& values, const Capabilities& limits, boo
   {
     return goal;
   }
+  std::string notes;  // what the goal's zoom became, after the clamping note
   for (Axis axis : ALL_AXES)
   {
     const AxisCapability& capability = limits.axes[axis];
+    if (axis == ZOOM && goesOnWithoutZoom(capability, velocity, goal, notes))
+    {
+      continue;
+    }
     const bool left_alone = velocity ? values[axis] == 0.0 && !(capability.present && capability.velocity) :
                                        leavesAxisAlone(limits, axis, values[axis]);
     if (left_alone)
     {
-      goal.values[axis] = velocity           ? 0.0 :
-                          capability.present ? std::numeric_limits<double>::quiet_NaN() :
-                                               capability.range.min;
+      goal.values[axis] = velocity ? 0.0 : capability.range.min;
       continue;
     }
     const std::string unsupported =
@@ -85,6 +145,10 @@ ValidatedGoal validate(const AxisValues& values, const Capabilities& limits, boo
       return goal;
     }
     goal.judged[axis] = true;
+  }
+  if (!notes.empty())
+  {
+    goal.message += (goal.message.empty() ? "" : "; ") + notes;
   }
   goal.accepted = true;
   return goal;
@@ -145,18 +209,22 @@ std::string findUnsupported(const Capabilities& capabilities, Axis axis, AxisReq
   return text;
 }
 
+double commandedZoom(const AxisCapability& zoom, double value)
+{
+  if (!zoom.present)
+  {
+    return zoom.range.min;
+  }
+  if (zoom.absolute && zoom.feedback)
+  {
+    return std::clamp(value, zoom.range.min, zoom.range.max);
+  }
+  return value == 1.0 && zoom.widest_view ? 1.0 : std::numeric_limits<double>::quiet_NaN();
+}
+
 bool leavesAxisAlone(const Capabilities& capabilities, Axis axis, double value)
 {
-  const AxisCapability& capability = capabilities.axes[axis];
-  if (capability.present && capability.absolute && capability.feedback)
-  {
-    return false;
-  }
-  if (axis == ZOOM)
-  {
-    return value == 0.0 || (!capability.present && value == 1.0);
-  }
-  return !capability.present && value == 0.0;
+  return !capabilities.axes[axis].present && value == 0.0;
 }
 
 ValidatedGoal validatePositionGoal(const AxisValues& target, const Capabilities& limits, bool clamp)

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ptz_action_server/core/goal/goal_validation.h"
+
 namespace ptz_action_server
 {
 namespace
@@ -25,7 +27,7 @@ double clampInto(double value, const AxisRange& range)
 
 FrameTracker::FrameTracker(const PtzKinematics& kinematics, const Capabilities& limits,
                            const FrameTrackerConfig& config, double zoom)
-  : kinematics_(kinematics), limits_(limits), config_(config), zoom_(zoom)
+  : kinematics_(kinematics), limits_(limits), config_(config), zoom_(commandedZoom(limits.axes[ZOOM], zoom))
 {
 }
 
@@ -94,7 +96,7 @@ AxisValues FrameTracker::aimAt(double stamp, double current_pan) const
       aim[PAN] += turn;
     }
   }
-  for (Axis axis : ALL_AXES)
+  for (Axis axis : { PAN, TILT })
   {
     if (limits_.axes[axis].present)
     {
@@ -117,9 +119,10 @@ GoalCommand FrameTracker::command(const PtzSample& current, double stamp, AxisVa
   const AxisValues rate = aimRate();
   for (Axis axis : ALL_AXES)
   {
-    if (!limits_.axes[axis].present)
+    const AxisCapability& capability = limits_.axes[axis];
+    if (!capability.present || !capability.absolute || !capability.feedback)
     {
-      continue;
+      continue;  // speed 0: nothing to steer by (a zoom without positions is left alone, or sent to its widest view)
     }
     const double error = aim[axis] - current.position[axis];
     // A clamped aim does not move: feeding the point's motion forward would push the axis into its limit.

@@ -425,10 +425,15 @@ TEST_P(DeviceContract, AFloodOfStatesIsTakenInAsItComesAndAGoalStillSucceeds)
 TEST_P(DeviceContract, ADeviceThatIgnoresAnAxisNeverGetsASucceededForIt)
 {
   const Capabilities capabilities = backend_->capabilities();
-  // An axis the device lacks (or cannot report): a goal that asks it to move is refused, naming it.
+  // An axis the device lacks (or cannot report): a goal that asks it to move is refused, naming it; but a zoom it
+  // lacks is ignored (the seed's rule: ZoomOfADeviceWithoutZoomIsIgnored).
   for (Axis axis : ALL_AXES)
   {
     const AxisCapability& capability = capabilities.axes[axis];
+    if (axis == ZOOM && !capability.present)
+    {
+      continue;
+    }
     if (!capability.present || !capability.feedback || !capability.absolute)
     {
       AxisValues target = device_->goal(0.2, 0.1);
@@ -458,6 +463,26 @@ TEST_P(DeviceContract, ADeviceThatIgnoresAnAxisNeverGetsASucceededForIt)
     ASSERT_TRUE(device_->ignoreAxis(axis, false));
     EXPECT_TRUE(waitUntil([&] { return !backend_->sample().moving; }, WAIT));
   }
+}
+
+TEST_P(DeviceContract, ZoomOfADeviceWithoutZoomIsIgnored)
+{
+  const AxisCapability zoom = backend_->capabilities().axes[ZOOM];
+  if (zoom.present)
+  {
+    GTEST_SKIP() << "this device has a zoom";
+  }
+  // The seed: "if the camera does not support zoom (e.g. the Flir D46 PTU), the zoom field is ignored". A goal with
+  // zoom 2 is judged on pan and tilt, and its text says the zoom was ignored, in the device's words.
+  AxisValues target = device_->goal(0.5, 0.1);
+  target[ZOOM] = 2.0;
+  const std::string end = runGoalToItsEnd(*backend_, target, 1.0);
+  EXPECT_EQ(end.rfind("SUCCEEDED: ", 0), 0u) << end;
+  const std::string words = zoom.limitation.empty() ? "the device has no zoom" : zoom.limitation;
+  EXPECT_NE(end.find("zoom 2.0000 X ignored: " + words), std::string::npos) << end;
+  const double tolerance = GoalMonitorConfig().tolerance[PAN] + 1e-3;  // what SUCCEEDED vouches for
+  EXPECT_NEAR(device_->deviceState().position[PAN], target[PAN], tolerance);
+  EXPECT_NEAR(device_->deviceState().position[TILT], target[TILT], tolerance);
 }
 
 INSTANTIATE_TEST_SUITE_P(Devices, DeviceContract, ::testing::ValuesIn(allDeviceFixtures()),

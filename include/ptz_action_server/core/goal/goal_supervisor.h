@@ -34,6 +34,9 @@ struct GoalCommand
   /// rejected); steer() then moves the device and the aim until the goal is cancelled, preempted or aborted.
   bool track = false;
   AxisValues values{};
+  /// What the conversion left out of the goal ("zoom offset 2.0000 X ignored: ..."): goes into the goal's texts
+  /// with the validation's notes.
+  std::string note;
 };
 
 /// A backend sample and the goal it was taken for.
@@ -60,7 +63,7 @@ public:
   virtual const std::string& action() const = 0;
   /// The goal's id, unique among the goals of its action.
   virtual const std::string& id() const = 0;
-  /// Accepts the goal; \p text is the clamping note, or empty.
+  /// Accepts the goal; \p text is what validation changed (clamping, a zoom ignored), or empty.
   virtual void accept(const std::string& text) = 0;
   virtual void reject(const std::string& text) = 0;
   /// \p remaining is goal minus current, per axis, in the goal's units.
@@ -140,7 +143,7 @@ private:
   /// Makes \p goal the active one and commands the device; the goal is judged on the \p judged axes only.
   void activate(std::unique_ptr<GoalHandle> goal, const GoalCommand& command,
                 const std::array<bool, AXIS_COUNT>& judged, const std::string& note);
-  /// The final status text keeps the clamping note of the accepted goal.
+  /// The final status text keeps the note of the accepted goal (clamping, a zoom ignored).
   std::string withNote(const std::string& text) const;
   /// supervise() for a sample known to belong to the active goal, judged as at \p taken_at.
   void judge(const PtzSample& sample, bool publish_feedback, TimePoint taken_at);
@@ -154,7 +157,7 @@ private:
 
   // Touched only on the supervisor's thread.
   std::unique_ptr<GoalHandle> active_goal_;
-  std::string note_;  ///< what validation changed in the active goal (clamping), empty if nothing
+  std::string note_;  ///< what validation changed in the active goal (clamping, a zoom ignored), empty if nothing
   std::unique_ptr<GoalMonitor> monitor_;
   bool stopping_ = false;  ///< the active goal was cancelled and waits for the device to rest
 

@@ -38,7 +38,8 @@ struct FrameTrackerConfig
 class FrameTracker
 {
 public:
-  /// \p zoom is held for the whole goal; \p limits clamp the aim and the speeds.
+  /// \p zoom is held for the whole goal, as validation commands it (commandedZoom()); \p limits clamp the aim and the
+  /// speeds.
   FrameTracker(const PtzKinematics& kinematics, const Capabilities& limits, const FrameTrackerConfig& config,
                double zoom);
 
