@@ -230,3 +230,29 @@ TEST_F(TrackingSupervisorTest, ALostLinkAbortsATrackingGoal)
 }
 
 }  // namespace
+
+TEST_F(FrameTrackerTest, TheZoomIsAimedAsValidationCommandsIt)
+{
+  // A pan-tilt unit ignores the goal's zoom: its aim holds the zoom it reports.
+  Capabilities unit = limits;
+  unit.axes[ZOOM] = absentAxis("a FLIR PTU has no zoom");
+  FrameTracker ignored(kinematics, unit, FrameTrackerConfig(), 2.0);
+  ignored.observe(onCircle(kinematics, 0.2), 1.0, clock.now());
+  EXPECT_DOUBLE_EQ(ignored.aimAt(1.0, 0.0)[ZOOM], 1.0);
+  // A zoom the node cannot position: zoom 0 leaves it alone (NaN, and no speed on it), zoom 1 is its widest view
+  // where it can go there.
+  Capabilities blind = limits;
+  blind.axes[ZOOM].absolute = false;
+  blind.axes[ZOOM].feedback = false;
+  FrameTracker left_alone(kinematics, blind, FrameTrackerConfig(), 0.0);
+  left_alone.observe(onCircle(kinematics, 0.2), 1.0, clock.now());
+  AxisValues aim;
+  const GoalCommand command = left_alone.command(at(0.0, 0.0), 1.0, aim);
+  EXPECT_TRUE(std::isnan(aim[ZOOM]));
+  EXPECT_EQ(command.values[ZOOM], 0.0);
+  EXPECT_GT(command.values[PAN], 0.0);
+  blind.axes[ZOOM].widest_view = true;
+  FrameTracker widest(kinematics, blind, FrameTrackerConfig(), 1.0);
+  widest.observe(onCircle(kinematics, 0.2), 1.0, clock.now());
+  EXPECT_DOUBLE_EQ(widest.aimAt(1.0, 0.0)[ZOOM], 1.0);
+}
