@@ -34,7 +34,7 @@ ptz_protocol(pelco_d
   TESTS test/core/test_pelco_d_codec.cpp test/core/test_pelco_d_protocol.cpp test/core/test_pelco_d_set_position.cpp
     test/core/contract/pelco_d_fixtures.cpp
   FUZZ pelco_d src/core/pelco_d/pelco_d_codec.cpp
-  ROSTESTS test/ros/serial_pelco_node.test
+  ROSTESTS test/ros/serial_pelco_node.test test/ros/pelco_no_set_position_node.test
 )
 
 ptz_protocol(visca

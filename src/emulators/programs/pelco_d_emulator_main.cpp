@@ -16,7 +16,7 @@ const char* USAGE = R"(usage: pelco_d_emulator [options]
 
 A Pelco-D PTZ camera (pan +-180, tilt +-90 degrees, zoom 1..24x) on a pseudo-terminal: stop, movement with speeds,
 absolute positions (0x4B, 0x4D, 0x4F), position queries (0x51/0x53/0x55 answered with 0x59/0x5B/0x5D) and presets,
-paced at the baud rate. Point the node at the link: backend:=serial with protocol: pelco_d, port: /tmp/ptz_pelco_d.
+paced at the baud rate. Point the node at the link: backend:=pelco_d port:=/tmp/ptz_pelco_d.
 
 Options:
   --address N            the camera's address, 1..255 (default 1)
