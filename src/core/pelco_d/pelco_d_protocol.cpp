@@ -44,10 +44,10 @@ pelco::SetPositionCheck::Config checkConfig(const PelcoSettings& settings)
   return config;
 }
 
-const char* const IGNORES_SET_POSITION = "this Pelco-D camera ignores set-position (0x4B, 0x4D, 0x4F): it stayed where "
-                                         "it was, and a speed command moved "
-                                         "it; position goals are steered on speed commands and its position queries "
-                                         "from the next goal on (set "
+/// The goal's fault and the warning when the check finds a device that ignores set-position.
+const char* const IGNORES_SET_POSITION = "this Pelco-D camera ignores set-position (0x4B, 0x4D, 0x4F): it stayed "
+                                         "where it was, and a speed command moved it; position goals are steered "
+                                         "on speed commands and its position queries from the next goal on (set "
                                          "pelco_d/set_position: false to say so from the start)";
 }  // namespace
 
@@ -151,6 +151,11 @@ void PelcoProtocol::goTo(const AxisValues& position)
     return;
   }
   channel_.clearQueue();  // what the previous command had not sent yet
+  if (set_position_check_.probing())
+  {
+    // The probe's speed would go on: a set-position may not end it.
+    queueFrame(pelco::stop(settings_.address), COMMAND);
+  }
   set_position_check_.cancel();
   const bool zoom = settings_.axes[ZOOM].present && !std::isnan(position[ZOOM]);
   if (!takesSetPosition())
