@@ -27,13 +27,14 @@ ptz_protocol(flir
 )
 
 ptz_protocol(pelco_d
-  CORE src/core/pelco_d/pelco_d_codec.cpp src/core/pelco_d/pelco_d_protocol.cpp
+  CORE src/core/pelco_d/pelco_d_codec.cpp src/core/pelco_d/pelco_d_protocol.cpp src/core/pelco_d/set_position_check.cpp
   PLUGIN src/plugins/pelco_d_backend_plugin.cpp
   EMULATOR src/emulators/pelco_d_emulator.cpp
   PROGRAM pelco_d_emulator src/emulators/programs/pelco_d_emulator_main.cpp
-  TESTS test/core/test_pelco_d_codec.cpp test/core/test_pelco_d_protocol.cpp test/core/contract/pelco_d_fixtures.cpp
+  TESTS test/core/test_pelco_d_codec.cpp test/core/test_pelco_d_protocol.cpp test/core/test_pelco_d_set_position.cpp
+    test/core/contract/pelco_d_fixtures.cpp
   FUZZ pelco_d src/core/pelco_d/pelco_d_codec.cpp
-  ROSTESTS test/ros/serial_pelco_node.test
+  ROSTESTS test/ros/serial_pelco_node.test test/ros/pelco_no_set_position_node.test
 )
 
 ptz_protocol(visca

@@ -18,6 +18,16 @@ SimDeviceConfig modelConfig(const PelcoDEmulatorConfig& config)
 }
 }  // namespace
 
+bool PelcoDEmulatorConfig::applyMode(const std::string& mode)
+{
+  if (mode != "standard" && mode != "no-set-position")
+  {
+    return false;
+  }
+  set_position = mode == "standard";
+  return true;
+}
+
 PelcoDEmulator::PelcoDEmulator(const PelcoDEmulatorConfig& config)
   : LineEmulator(modelConfig(config)), config_(config), parser_(config.address, false)
 {
@@ -79,6 +89,20 @@ std::vector<std::uint8_t> PelcoDEmulator::execute(const pelco::Frame& frame, Tim
   };
   const PtzSample now = model_.sample(at);
   const AxisRange& zoom = config_.device.axes[ZOOM].range;
+  const auto acknowledge = [&config = config_, address]() -> std::vector<std::uint8_t> {
+    if (!config.general_reply)
+    {
+      return {};
+    }
+    const std::uint8_t alarm = 0;
+    return { pelco::SYNC, address, alarm, static_cast<std::uint8_t>(address + alarm) };
+  };
+  const bool set_position =
+      frame.command2 == pelco::SET_PAN || frame.command2 == pelco::SET_TILT || frame.command2 == pelco::SET_ZOOM;
+  if (set_position && !config_.set_position)
+  {
+    return acknowledge();  // a camera without set-position: ignored like any command it does not know
+  }
   switch (frame.command2)
   {
     case pelco::QUERY_PAN:
@@ -139,12 +163,7 @@ std::vector<std::uint8_t> PelcoDEmulator::execute(const pelco::Frame& frame, Tim
       break;
     }
   }
-  if (!config_.general_reply)
-  {
-    return {};
-  }
-  const std::uint8_t alarm = 0;
-  return { pelco::SYNC, address, alarm, static_cast<std::uint8_t>(address + alarm) };
+  return acknowledge();
 }
 
 }  // namespace ptz_action_server

@@ -6,6 +6,8 @@
  */
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "line_test_support.h"
 #include "wait_until.h"
 
@@ -71,6 +73,19 @@ TEST_F(PelcoTest, VelocityGoalsBecomeMovementFramesWithScaledSpeeds)
   EXPECT_TRUE(waitUntil([&] { return !emulator_->sample().moving; }, WAIT));
 }
 
+TEST_F(PelcoTest, AnAxisLeftAloneGetsNoSetPosition)
+{
+  emulator_->received().clear();
+  const double zoom_before = emulator_->sample().position[ZOOM];
+  backend_->goTo({ 0.2, -0.1, std::numeric_limits<double>::quiet_NaN() });  // a goal that leaves the zoom alone
+  ASSERT_TRUE(waitUntil([&] { return atRest(*backend_, 0.2, -0.1); }, WAIT));
+  for (const pelco::Frame& frame : commandsReceived())
+  {
+    EXPECT_NE(frame.command2, pelco::SET_ZOOM) << "a zoom position went out: " << frame.value();
+  }
+  EXPECT_DOUBLE_EQ(emulator_->sample().position[ZOOM], zoom_before);
+}
+
 TEST_F(PelcoTest, GarbledRepliesAreDroppedAndCounted)
 {
   emulator_->port().setGarbleRatio(0.05);
@@ -127,6 +142,15 @@ TEST(PelcoTurbo, OnlyAConfiguredTurboByteGoesFasterThan0x3F)
   EXPECT_EQ(velocityFrame().data1, 0xFF);
   EXPECT_EQ(velocityFrame().command2, pelco::LEFT);
   EXPECT_TRUE(waitUntil([&] { return emulator.sample().velocity[PAN] < -2.9; }, WAIT));  // turbo, to the left
+  backend->stop();
+  EXPECT_TRUE(waitUntil([&] { return !emulator.sample().moving; }, WAIT));
+  // Turbo is one speed: a speed nearer the 0x3F speed (1.5) than turbo's (3.0) goes at 0x3F, never twice as fast as
+  // asked (a device steered on its speeds, closed-loop, would overshoot).
+  emulator.received().clear();
+  backend->moveAtVelocity({ 2.1, 0.0, 0.0 });
+  ASSERT_TRUE(waitUntil([&] { return velocityFrame().data1 != 0; }, WAIT));
+  EXPECT_EQ(velocityFrame().data1, pelco::MAX_SPEED);
+  EXPECT_EQ(velocityFrame().command2, pelco::RIGHT);
   backend->stop();
   EXPECT_TRUE(waitUntil([&] { return !emulator.sample().moving; }, WAIT));
 }

@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include "ptz_action_server/core/pelco_d/pelco_d_codec.h"
@@ -28,6 +29,15 @@ struct PelcoDEmulatorConfig
   /// rad/s of a pan speed byte above 0x3F (a turbo byte: 0x40 or 0xFF, by device); 0: the 0x3F speed, as a FLIR
   /// D300E treats any speed above 64.
   double pan_turbo_speed = 0.0;
+  /// false: a camera without set-position, as many conference cameras are (the PTZOptics ZCAM G2, ...: their
+  /// command tables list the position queries and no 0x4B, 0x4D, 0x4F): it ignores them like any command it does
+  /// not know (it stays where it is), and still answers the queries and moves at the speeds it is given.
+  bool set_position = true;
+
+  /// The emulator's --mode names: "standard", "no-set-position".
+  static constexpr const char* MODES = "standard, no-set-position";
+  /// Sets what \p mode plays; false for a name that is none of MODES.
+  bool applyMode(const std::string& mode);
 };
 
 /// A frame as it reached the device.
@@ -38,9 +48,9 @@ struct ReceivedFrame
 };
 
 /**
- * \brief Speaks Pelco-D on a pseudo-terminal: stop, movement with speeds, the extended absolute position commands,
- * position queries (answered with 0x59 / 0x5B / 0x5D) and presets. Frames for other addresses are ignored, frames
- * with a bad checksum are counted and dropped.
+ * \brief Speaks Pelco-D on a pseudo-terminal: stop, movement with speeds, the extended absolute position commands
+ * (unless PelcoDEmulatorConfig::set_position is false), position queries (answered with 0x59 / 0x5B / 0x5D) and
+ * presets. Frames for other addresses are ignored, frames with a bad checksum are counted and dropped.
  */
 class PelcoDEmulator : public LineEmulator<ReceivedFrame>
 {

@@ -1,6 +1,7 @@
 #include "ptz_action_server/core/pelco_d/pelco_d_protocol.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "ptz_action_server/core/units.h"
 
@@ -10,6 +11,11 @@ namespace
 {
 /// A query and its reply: two frames.
 constexpr std::size_t PELCO_EXCHANGE_BYTES = 2 * pelco::FRAME_SIZE;
+/// The speed byte of the set-position check's probe: a quarter of the top speed, toward the target.
+constexpr int PROBE_SPEED = 0x10;
+/// What the check counts as movement: a tenth of a degree (ten position units), a hundredth of the zoom range.
+constexpr double MOVED_DEGREES = 0.1;
+constexpr double MOVED_ZOOM_SHARE = 0.01;
 
 /// A speed (rad/s, X/s) as a Pelco speed byte 1..0x3F, signed; 0 stays 0.
 int speedByte(double speed, double max_speed)
@@ -27,6 +33,22 @@ int direction(double value)
 {
   return value > 0.0 ? 1 : (value < 0.0 ? -1 : 0);
 }
+
+pelco::SetPositionCheck::Config checkConfig(const PelcoSettings& settings)
+{
+  pelco::SetPositionCheck::Config config;
+  config.wait = settings.set_position_wait;
+  config.moved[PAN] = config.moved[TILT] = toRadians(MOVED_DEGREES);
+  const AxisRange& zoom = settings.axes[ZOOM].range;
+  config.moved[ZOOM] = MOVED_ZOOM_SHARE * (zoom.max - zoom.min);
+  return config;
+}
+
+/// The goal's fault and the warning when the check finds a device that ignores set-position.
+const char* const IGNORES_SET_POSITION = "this Pelco-D camera ignores set-position (0x4B, 0x4D, 0x4F): it stayed "
+                                         "where it was, and a speed command moved it; position goals are steered "
+                                         "on speed commands and its position queries from the next goal on (set "
+                                         "pelco_d/set_position: false to say so from the start)";
 }  // namespace
 
 std::uint16_t PelcoSettings::zoomToPosition(double zoom) const
@@ -56,6 +78,7 @@ PelcoProtocol::PelcoProtocol(const PelcoSettings& settings, DeviceSession& sessi
         })
   , parser_(settings.address, settings.general_reply)
   , round_(settings.axes[ZOOM].present ? 3 : 2)
+  , set_position_check_(checkConfig(settings))
 {
 }
 
@@ -72,10 +95,23 @@ Capabilities PelcoProtocol::capabilities() const
   {
     capabilities.axes[PAN].max_speed = std::max(settings_.axes[PAN].max_speed, settings_.turbo_speed);
   }
+  if (!takesSetPosition())
+  {
+    // It moves at a speed and answers the position queries: the node steers its position goals on them.
+    const bool configured = settings_.set_position == PelcoSetPosition::NO;
+    for (AxisCapability& axis : capabilities.axes)
+    {
+      axis.absolute = false;
+      axis.limitation = configured ? "pelco_d/set_position is false: this camera takes no set-position (0x4B, 0x4D, "
+                                     "0x4F)" :
+                                     "this Pelco-D camera ignores set-position (0x4B, 0x4D, 0x4F)";
+      axis.remedy = configured ? "" : "set pelco_d/set_position: false to say so from the start";
+    }
+  }
   if (!capabilities.axes[ZOOM].present)
   {
     capabilities.axes[ZOOM] = absentAxis("this Pelco-D device is configured without zoom");
-    capabilities.axes[ZOOM].remedy = "set serial/pelco/zoom/present if it has one";
+    capabilities.axes[ZOOM].remedy = "set pelco_d/zoom/present if it has one";
   }
   capabilities.device_presets = true;  // set, clear and go to preset (0x03, 0x05, 0x07)
   return capabilities;
@@ -91,6 +127,7 @@ void PelcoProtocol::onConnected()
 void PelcoProtocol::onDisconnected()
 {
   channel_.reset();
+  set_position_check_.cancel();
 }
 
 void PelcoProtocol::poll()
@@ -114,14 +151,46 @@ void PelcoProtocol::goTo(const AxisValues& position)
     return;
   }
   channel_.clearQueue();  // what the previous command had not sent yet
+  if (set_position_check_.probing())
+  {
+    // The probe's speed would go on: a set-position may not end it.
+    queueFrame(pelco::stop(settings_.address), COMMAND);
+  }
+  set_position_check_.cancel();
+  const bool zoom = settings_.axes[ZOOM].present && !std::isnan(position[ZOOM]);
+  if (!takesSetPosition())
+  {
+    // The node steers such a device on speed commands; a caller that did not is told why nothing moves.
+    if (!std::isnan(position[PAN]) || !std::isnan(position[TILT]) || zoom)
+    {
+      session_.reportFault("not sent: " + capabilities().axes[PAN].limitation, session_.currentCommand());
+    }
+    return;
+  }
   const std::uint8_t address = settings_.address;
-  queueFrame(pelco::withValue(address, pelco::SET_PAN, pelco::encodePan(toDegrees(position[PAN]))), COMMAND);
-  queueFrame(
-      pelco::withValue(address, pelco::SET_TILT, pelco::encodeTilt(toDegrees(position[TILT]), settings_.tilt_encoding)),
-      COMMAND);
-  if (settings_.axes[ZOOM].present)
+  if (!std::isnan(position[PAN]))
+  {
+    queueFrame(pelco::withValue(address, pelco::SET_PAN, pelco::encodePan(toDegrees(position[PAN]))), COMMAND);
+  }
+  if (!std::isnan(position[TILT]))
+  {
+    queueFrame(pelco::withValue(address, pelco::SET_TILT,
+                                pelco::encodeTilt(toDegrees(position[TILT]), settings_.tilt_encoding)),
+               COMMAND);
+  }
+  if (zoom)
   {
     queueFrame(pelco::withValue(address, pelco::SET_ZOOM, settings_.zoomToPosition(position[ZOOM])), COMMAND);
+  }
+  // Only from rest: a device still moving at a speed would seem to obey a set-position it ignores.
+  if (settings_.set_position == PelcoSetPosition::AUTO && !session_.estimate().moving)
+  {
+    AxisValues target = position;
+    target[ZOOM] = zoom ? position[ZOOM] : std::numeric_limits<double>::quiet_NaN();
+    if (set_position_check_.begin(reported_, target, session_.now()))
+    {
+      checked_command_ = session_.currentCommand();
+    }
   }
 }
 
@@ -132,9 +201,12 @@ void PelcoProtocol::moveAtVelocity(const AxisValues& velocity)
     return;
   }
   channel_.clearQueue();  // what the previous command had not sent yet
+  set_position_check_.cancel();
   const int zoom = settings_.axes[ZOOM].present ? direction(velocity[ZOOM]) : 0;
-  // Faster than the speed at 0x3F: only turbo goes faster (speedByte returns more than 0x3F, move() sends the byte).
-  const bool turbo = settings_.turbo_byte != 0 && std::abs(velocity[PAN]) > settings_.axes[PAN].max_speed;
+  // Turbo is one speed, not a range: the byte nearest the speed asked, so that a device steered on its speeds never
+  // turns twice as fast as asked (speeds between the 0x3F speed and the midpoint go at the 0x3F speed).
+  const bool turbo = settings_.turbo_byte != 0 &&
+                     std::abs(velocity[PAN]) > 0.5 * (settings_.axes[PAN].max_speed + settings_.turbo_speed);
   const int pan = turbo ? (velocity[PAN] > 0.0 ? pelco::MAX_SPEED + 1 : -(pelco::MAX_SPEED + 1)) :
                           speedByte(velocity[PAN], settings_.axes[PAN].max_speed);
   queueFrame(pelco::move(settings_.address, pan, speedByte(velocity[TILT], settings_.axes[TILT].max_speed), zoom,
@@ -148,6 +220,12 @@ void PelcoProtocol::stop()
   {
     return;
   }
+  set_position_check_.cancel();
+  stopNow();
+}
+
+void PelcoProtocol::stopNow()
+{
   channel_.clearQueue();  // what the previous command had not sent yet
   const pelco::Bytes bytes = pelco::encode(pelco::stop(settings_.address));
   channel_.sendUrgent(TransactionChannel::Request{ std::string(bytes.begin(), bytes.end()), COMMAND,
@@ -251,8 +329,42 @@ void PelcoProtocol::handle(const pelco::FrameParser::Event& event)
   // A state only from a whole round, never with an axis left from before a lost reply (a silence).
   if (round_.answered(index))
   {
+    reported_ = polled_;
     session_.reportState(polled_);
+    checkSetPosition();
   }
+}
+
+void PelcoProtocol::checkSetPosition()
+{
+  switch (set_position_check_.update(reported_, session_.now()))
+  {
+    case pelco::SetPositionCheck::Step::PROBE: {
+      // The target's direction on each axis it has to move (turbo never: a probe is slow).
+      const std::array<int, AXIS_COUNT>& toward = set_position_check_.directions();
+      queueFrame(pelco::move(settings_.address, toward[PAN] * PROBE_SPEED, toward[TILT] * PROBE_SPEED,
+                             settings_.axes[ZOOM].present ? toward[ZOOM] : 0),
+                 COMMAND);
+      break;
+    }
+    case pelco::SetPositionCheck::Step::IGNORED:
+      stopNow();
+      setPositionIgnored();
+      break;
+    case pelco::SetPositionCheck::Step::STUCK:
+      stopNow();  // it does not move at a speed either: the goal stalls as on any device
+      break;
+    default:
+      break;
+  }
+}
+
+void PelcoProtocol::setPositionIgnored()
+{
+  set_position_ignored_ = true;
+  session_.setCapabilities(capabilities());
+  session_.warn(IGNORES_SET_POSITION);
+  session_.reportFault(IGNORES_SET_POSITION, checked_command_);
 }
 
 }  // namespace ptz_action_server

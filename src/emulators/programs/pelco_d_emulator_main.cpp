@@ -16,7 +16,7 @@ const char* USAGE = R"(usage: pelco_d_emulator [options]
 
 A Pelco-D PTZ camera (pan +-180, tilt +-90 degrees, zoom 1..24x) on a pseudo-terminal: stop, movement with speeds,
 absolute positions (0x4B, 0x4D, 0x4F), position queries (0x51/0x53/0x55 answered with 0x59/0x5B/0x5D) and presets,
-paced at the baud rate. Point the node at the link: backend:=serial with protocol: pelco_d, port: /tmp/ptz_pelco_d.
+paced at the baud rate. Point the node at the link: backend:=pelco_d port:=/tmp/ptz_pelco_d.
 
 Options:
   --address N            the camera's address, 1..255 (default 1)
@@ -24,6 +24,14 @@ Options:
                          default) or up_positive (30 above is 3000, 45 below is 31500)
   --general-reply        answer every command with a 4-byte general reply
   --turbo-speed R        rad/s of a pan speed byte above 0x3F (turbo); default: the 0x3F speed
+  --mode MODE            a camera as found in the field (default standard):
+                           standard         takes the set-position commands 0x4B, 0x4D, 0x4F
+                           no-set-position  a conference camera without them (the PTZOptics ZCAM G2's command table
+                                            lists only the queries): it answers the position queries and moves at a
+                                            speed, and ignores a set-position like any command it does not know (it
+                                            stays where it is; a general reply only with --general-reply); the node
+                                            steers it with pelco_d/set_position: false, or finds it out on the first
+                                            goal (auto)
 )";
 }  // namespace
 
@@ -58,6 +66,14 @@ int main(int argc, char** argv)
         {
           config.general_reply = true;
         }
+        else if (arg == "--mode")
+        {
+          const std::string mode = value();
+          if (!config.applyMode(mode))
+          {
+            emulator_main::fail(PROGRAM, "--mode " + mode + " is none of " + config.MODES, usage.c_str());
+          }
+        }
         else
         {
           return false;
@@ -67,5 +83,6 @@ int main(int argc, char** argv)
   return emulator_main::runSerialDevice<ptz_action_server::PelcoDEmulator>(
       PROGRAM, config, options,
       ", address " + std::to_string(config.address) + ", tilt " +
-          ptz_action_server::pelco::toString(config.tilt_encoding));
+          ptz_action_server::pelco::toString(config.tilt_encoding) +
+          (config.set_position ? "" : ", no set-position (ignores 0x4B, 0x4D, 0x4F)"));
 }
