@@ -1,3 +1,8 @@
+/**
+ * \file
+ * \brief The DigiView base message: the CRC, pack() and unpack() (the format table is digiview_formats.cpp, the
+ * payloads digiview_payloads.cpp).
+ */
 #include "ptz_action_server/core/digiview/digiview_codec.h"
 
 #include <algorithm>

@@ -1,8 +1,14 @@
+/**
+ * \file
+ * \brief What DigiView says to the digiview backend (half of DigiViewProtocol; digiview_aiming.cpp is what goals
+ * send): subscriptions, the stream cut into messages, states, SYSTEM_STATUS and HALT, answers to SETs, diagnostics.
+ */
 #include "ptz_action_server/core/digiview/digiview_protocol.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <vector>
 
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
