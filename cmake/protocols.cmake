@@ -48,15 +48,19 @@ ptz_protocol(visca
 )
 
 ptz_protocol(digiview
-  CORE src/core/digiview/digiview_codec.cpp src/core/digiview/digiview_payloads.cpp
-    src/core/digiview/digiview_protocol.cpp
+  CORE src/core/digiview/digiview_codec.cpp src/core/digiview/digiview_formats.cpp
+    src/core/digiview/digiview_payloads.cpp src/core/digiview/digiview_protocol.cpp
+    src/core/digiview/digiview_aiming.cpp
   PLUGIN src/plugins/digiview_backend_plugin.cpp
   EMULATOR src/emulators/digiview_emulator.cpp src/emulators/digiview_emulator_answers.cpp
   PROGRAM digiview_emulator src/emulators/programs/digiview_emulator_main.cpp
-  TESTS test/core/test_digiview_emulator.cpp test/core/test_digiview_goldens.cpp test/core/test_digiview_messages.cpp
-    test/core/test_digiview_protocol.cpp test/core/contract/digiview_fixtures.cpp
-  FUZZ digiview src/core/digiview/digiview_codec.cpp src/core/digiview/digiview_payloads.cpp
+  TESTS test/core/test_digiview_emulator.cpp test/core/test_digiview_goldens.cpp
+    test/core/test_digiview_goldens_v1_2.cpp test/core/test_digiview_messages.cpp test/core/test_digiview_protocol.cpp
+    test/core/test_digiview_halt.cpp test/core/contract/digiview_fixtures.cpp
+  FUZZ digiview src/core/digiview/digiview_codec.cpp src/core/digiview/digiview_formats.cpp
+    src/core/digiview/digiview_payloads.cpp
   ROSTESTS test/ros/digiview_node.test test/ros/digiview_node_v1_0.test test/ros/digiview_node_v1_1.test
+    test/ros/digiview_node_v1_2.test
 )
 
 ptz_protocol(mavlink_gimbal

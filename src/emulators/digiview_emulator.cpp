@@ -85,6 +85,23 @@ void DigiViewEmulator::setRefuse(bool refuse)
   refuse_ = refuse;
 }
 
+void DigiViewEmulator::setHalted(bool halted)
+{
+  if (!hasAppStatus(config_.wire.format))
+  {
+    return;
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  halted_ = halted;
+  if (halted)
+  {
+    for (auto& view : models_)
+    {
+      view.second.stop(SteadyClock::now());
+    }
+  }
+}
+
 void DigiViewEmulator::setFaults(const SimFaults& faults)
 {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -236,9 +253,9 @@ void DigiViewEmulator::subscribe(const SessionPtr& session, const IntervalReques
     session->subscriptions.erase(key);
     return;
   }
-  if (request.interval_ms < MIN_INTERVAL_MS)
+  if (request.interval_ms < minIntervalOf(config_.wire.format))
   {
-    return;  // below DigiView's minimum: ignored
+    return;  // below DigiView's minimum: no subscription
   }
   Subscription& subscription = session->subscriptions[key];
   subscription.request = request;

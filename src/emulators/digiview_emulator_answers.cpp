@@ -29,11 +29,12 @@ SimDeviceModel* DigiViewEmulator::model(const CameraId& camera)
 
 bool DigiViewEmulator::current(ParamType param, const CameraId& camera, Message& message)
 {
-  const Format format = config_.wire.format;
+  const Wire& wire = config_.wire;
   std::lock_guard<std::mutex> lock(mutex_);
   if (param == ParamType::SYSTEM_STATUS)
   {
-    message = packSystemStatus(format, MessageType::CURRENT_PARAMETERS, SystemStatus{ 1, 0, 45.5 });
+    const std::uint8_t status = halted_ ? APP_STATUS_HALT : runningStatus(wire.format);
+    message = packSystemStatus(wire, MessageType::CURRENT_PARAMETERS, SystemStatus{ status, 0, 45.5 });
     return true;
   }
   if (param == ParamType::VIDEO_OUTPUT)
@@ -49,7 +50,7 @@ bool DigiViewEmulator::current(ParamType param, const CameraId& camera, Message&
     const std::vector<BoundingBox> views = viewsOf(config_.layout_mode);
     output.num_user_views = static_cast<std::uint8_t>(views.size());
     std::copy(views.begin(), views.end(), output.views.begin());
-    message = packVideoOutput(format, MessageType::CURRENT_PARAMETERS, output);
+    message = packVideoOutput(wire, MessageType::CURRENT_PARAMETERS, output);
     return true;
   }
   SimDeviceModel* view = model(camera);
@@ -64,7 +65,7 @@ bool DigiViewEmulator::current(ParamType param, const CameraId& camera, Message&
     targeting.camera = camera;
     targeting.yaw = state.position[PAN];
     targeting.pitch = state.position[TILT];
-    message = packTargeting(format, MessageType::CURRENT_PARAMETERS, targeting);
+    message = packTargeting(wire, MessageType::CURRENT_PARAMETERS, targeting);
     return true;
   }
   if (param == ParamType::CAM_OPTICS_AND_CONTROL)
@@ -72,7 +73,7 @@ bool DigiViewEmulator::current(ParamType param, const CameraId& camera, Message&
     CamOpticsAndControl optics;
     optics.camera = camera;
     optics.fov = state.position[ZOOM];
-    message = packOptics(format, MessageType::CURRENT_PARAMETERS, optics);
+    message = packOptics(wire, MessageType::CURRENT_PARAMETERS, optics);
     return true;
   }
   return false;
@@ -88,10 +89,14 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
   {
     return;
   }
-  const Format format = config_.wire.format;
-  auto answer = [&](MessageType type, ParamType param_type) { reply(session, packBare(format, type, param_type)); };
-  const ParamType about =
-      size > 10 && isParamType(bytes[10]) ? static_cast<ParamType>(bytes[10]) : ParamType::SYSTEM_STATUS;
+  const Wire& wire = config_.wire;
+  const Format format = wire.format;
+  auto answer = [&](MessageType type, ParamType param_type) { reply(session, packBare(wire, type, param_type)); };
+  ParamType about = ParamType::SYSTEM_STATUS;
+  if (size <= 10 || !paramFromWire(format, bytes[10], about))
+  {
+    about = ParamType::SYSTEM_STATUS;
+  }
   switch (error)
   {
     case UnpackError::NONE:
@@ -121,9 +126,10 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
         answer(MessageType::DATA_ERROR, param);
         return;
       }
-      // 1.0, 1.1: interval_ms subscribes (100 ms or more) or cancels (0); a GET with less is ignored, as a
-      // GET_INTERVAL.
-      if (message.interval_ms != 0 && message.interval_ms < MIN_INTERVAL_MS)
+      // From 1.0 on: interval_ms subscribes (minIntervalOf() or more) or cancels (0); a GET with less is ignored, as
+      // a GET_INTERVAL, or in 1.2 answered once.
+      const bool too_short = message.interval_ms != 0 && message.interval_ms < minIntervalOf(format);
+      if (too_short && !shortIntervalIsOneShot(format))
       {
         return;
       }
@@ -131,7 +137,7 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
       if (current(param, camera, state))
       {
         reply(session, state);
-        if (subscribesWithGet(format))
+        if (subscribesWithGet(format) && !too_short)
         {
           subscribe(session, IntervalRequest{ param, camera, message.interval_ms });
         }
@@ -160,6 +166,20 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
         return;
       }
       const TimePoint now = SteadyClock::now();
+      if (param == ParamType::SYSTEM_STATUS && hasAppStatus(format))
+      {
+        // Its documentation: a SET switches only between RUNNING and HALT.
+        SystemStatus status;
+        if (unpackSystemStatus(message, status) != UnpackError::NONE ||
+            (status.status != APP_STATUS_RUNNING && status.status != APP_STATUS_HALT))
+        {
+          answer(MessageType::DATA_ERROR, param);
+          return;
+        }
+        setHalted(status.status == APP_STATUS_HALT);
+        answer(MessageType::ACKNOWLEDGEMENT, param);
+        return;
+      }
       if (param == ParamType::CAM_TARGETING)
       {
         CamTargeting targeting;
@@ -174,7 +194,7 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
         {
           return;  // unknown view: ignored
         }
-        if (targeting.targeting_mode == 0)
+        if (targeting.targeting_mode == 0 && !halted_)
         {
           const PtzSample state = view->sample(now);
           const double yaw = targeting.euler_delta ? state.position[PAN] + targeting.yaw : targeting.yaw;
@@ -205,7 +225,7 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
         {
           fov = view->sample(now).position[ZOOM] / std::pow(ZOOM_STEP, optics.zoom);
         }
-        if (fov >= NARROWEST_FOV && fov <= WIDEST_FOV)  // outside: ignored, as DigiView does
+        if (fov >= NARROWEST_FOV && fov <= WIDEST_FOV && !halted_)  // outside: ignored, as DigiView does
         {
           view->goToAxis(ZOOM, fov, now);
         }

@@ -44,7 +44,7 @@ inline std::vector<digiview::BoundingBox> viewsOf(std::uint8_t layout_mode)
 }
 }  // namespace digiview_views
 
-/// A subscription (0.5: GET_INTERVAL, 1.0 and 1.1: a GET with interval_ms): its request and when it reports next.
+/// A subscription (0.5: GET_INTERVAL, later a GET with interval_ms): its request and when it reports next.
 struct DigiViewEmulator::Subscription
 {
   digiview::IntervalRequest request;

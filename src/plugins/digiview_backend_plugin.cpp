@@ -1,3 +1,5 @@
+#include <ros/console.h>
+
 #include "device_plugin.h"
 #include "ptz_action_server/core/digiview/digiview_protocol.h"
 
@@ -19,13 +21,25 @@ struct DigiViewPlugin
   {
     const ParamReader& params = device.own;
     DigiViewSettings& digiview = config.settings;
-    digiview::parseFormat(params.choice("format", "0.5", { "0.5", "1.0", "1.1" }), digiview.wire.format);
-    digiview::parseChecksumRule(params.choice("checksum", "required", { "required", "zero_accepted" }),
-                                digiview.wire.checksum);
-    digiview.stream_name = params.text("stream_name", digiview.stream_name);
-    if (digiview.stream_name.empty() || digiview.stream_name.size() > digiview::NAME_SIZE)
+    digiview::Format format = digiview::Format::V0_5;
+    digiview::parseFormat(params.choice("format", "0.5", { "0.5", "1.0", "1.1", "1.2" }), format);
+    // The unit the format's documentation gives unless set; "1.1" without it says once what changed.
+    digiview::AngleUnit angles = digiview::documentedAngleUnit(format);
+    digiview::parseAngleUnit(params.choice("angle_unit", digiview::toString(angles), { "radians", "degrees" }), angles);
+    const std::string notice = DigiViewSettings::angleUnitNotice(format, params.resolve("angle_unit"));
+    if (!params.has("angle_unit") && !notice.empty())
     {
-      throw ConfigError("parameter " + params.resolve("stream_name") + " must have 1 to 8 characters");
+      ROS_WARN("%s", notice.c_str());
+    }
+    digiview::ChecksumRule checksum = digiview::ChecksumRule::REQUIRED;
+    digiview::parseChecksumRule(params.choice("checksum", "required", { "required", "zero_accepted" }), checksum);
+    digiview.wire = digiview::Wire(format, checksum, angles);
+    digiview.stream_name = params.text("stream_name", digiview.stream_name);
+    const std::size_t name_size = digiview::nameSizeOf(format);
+    if (digiview.stream_name.empty() || digiview.stream_name.size() > name_size)
+    {
+      throw ConfigError("parameter " + params.resolve("stream_name") + " must have 1 to " + std::to_string(name_size) +
+                        " characters in format " + digiview::toString(format));
     }
     digiview.cam_id = static_cast<std::uint8_t>(params.integer("cam_id", digiview.cam_id, 0, 3));
     digiview.fov_wide = params.number("fov_wide", digiview.fov_wide, 0.1, 3.14);

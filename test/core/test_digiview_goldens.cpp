@@ -1,19 +1,21 @@
 /**
  * \file
- * \brief The DigiView codec against the golden frames (digiview_golden_frames.h: for 0.5 and 1.0 what the published
- * implementations print, for 1.1 computed from its layout), in every format: packing gives them byte for byte,
- * unpacking reads them, and what is read packs back the same.
+ * \brief The DigiView codec against the golden frames (digiview_golden_frames.h: for 0.5, 1.0 and 1.2 what the
+ * published implementations print, for 1.1 computed from its layout), in every format: packing gives them byte for
+ * byte, unpacking reads them, and what is read packs back the same.
  */
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "digiview_golden_frames.h"
 #include "digiview_test_formats.h"
 #include "ptz_action_server/core/digiview/digiview_codec.h"
+#include "ptz_action_server/core/units.h"
 
 using namespace ptz_action_server;
 using namespace ptz_action_server::digiview;
@@ -21,26 +23,20 @@ using namespace ptz_action_server::digiview_golden;
 
 namespace
 {
-std::string toHex(const Bytes& bytes)
-{
-  static const char* const DIGITS = "0123456789ABCDEF";
-  std::string text;
-  for (std::uint8_t byte : bytes)
-  {
-    text += DIGITS[byte >> 4];
-    text += DIGITS[byte & 0x0F];
-  }
-  return text;
-}
-
 const CameraId MAIN_1{ "main", 1 };
 
-CamTargeting goldenTargeting()
+/// The radians of an angle the goldens give in \p format's documented unit (the published caller's float).
+double documented(Format format, double value)
+{
+  return documentedAngleUnit(format) == AngleUnit::DEGREES ? toRadians(value) : value;
+}
+
+CamTargeting goldenTargeting(Format format)
 {
   CamTargeting targeting;
   targeting.camera = MAIN_1;
-  targeting.yaw = 0.5;
-  targeting.pitch = -0.25;
+  targeting.yaw = documented(format, 0.5);
+  targeting.pitch = documented(format, -0.25);
   targeting.lock_flags = 3;
   targeting.x_offset = 0.5;
   targeting.y_offset = -0.25;
@@ -75,13 +71,13 @@ struct Golden
 };
 
 template <class Payload>
-std::function<UnpackError(const Message&, Message&)> rereading(UnpackError (*unpack)(const Message&, Payload&),
-                                                               Message (*pack)(Format, MessageType, const Payload&))
+std::function<UnpackError(const Message&, Message&)>
+rereading(UnpackError (*unpack)(const Message&, Payload&), Message (*pack)(const Wire&, MessageType, const Payload&))
 {
   return [unpack, pack](const Message& message, Message& again) {
     Payload payload;
     const UnpackError error = unpack(message, payload);
-    again = pack(message.format, message.message_type, payload);
+    again = pack(message.wire(), message.message_type, payload);
     again.timestamp = message.timestamp;
     return error;
   };
@@ -89,7 +85,7 @@ std::function<UnpackError(const Message&, Message&)> rereading(UnpackError (*unp
 
 UnpackError rereadBare(const Message& message, Message& again)
 {
-  again = packBare(message.format, message.message_type, message.param_type);
+  again = packBare(message.wire(), message.message_type, message.param_type);
   return UnpackError::NONE;
 }
 
@@ -102,23 +98,26 @@ const std::vector<Golden>& goldens()
   const auto get = [](const Message& message, Message& again) {
     CameraId camera;
     const UnpackError error = unpackCamera(message, camera);
-    again = packGet(message.format, message.param_type, camera);
+    again = packGet(message.wire(), message.param_type, camera);
     return error;
   };
   static const std::vector<Golden> GOLDENS = {
     { "SET CAM_TARGETING",
-      [](Format format) { return packTargeting(format, MessageType::SET_PARAMETERS, goldenTargeting()); }, targeting,
-      SET_CAM_TARGETING },
+      [](Format format) { return packTargeting(format, MessageType::SET_PARAMETERS, goldenTargeting(format)); },
+      targeting, SET_CAM_TARGETING },
     { "SET CAM_OPTICS",
       [](Format format) {
-        return packOptics(format, MessageType::SET_PARAMETERS, CamOpticsAndControl{ MAIN_1, 0, 0.6, 1 });
+        return packOptics(format, MessageType::SET_PARAMETERS,
+                          CamOpticsAndControl{ MAIN_1, 0, documented(format, 0.6), 1 });
       },
       optics, SET_CAM_OPTICS },
     { "GET CAM_TARGETING", [](Format format) { return packGet(format, digiview::ParamType::CAM_TARGETING, MAIN_1); },
       get, GET_CAM_TARGETING },
     { "CURRENT SYSTEM_STATUS",
       [](Format format) {
-        return packSystemStatus(format, MessageType::CURRENT_PARAMETERS, SystemStatus{ 1, 0, 45.5 });
+        // The published 1.2 golden reports RUNNING (app_status 2); the others were printed with status 1.
+        const std::uint8_t status = format == Format::V1_2 ? APP_STATUS_RUNNING : 1;
+        return packSystemStatus(format, MessageType::CURRENT_PARAMETERS, SystemStatus{ status, 0, 45.5 });
       },
       status, CURRENT_SYSTEM_STATUS },
     { "CURRENT VIDEO_OUTPUT",
@@ -193,35 +192,38 @@ TEST_P(DigiViewGoldens, TheFieldsReadAreThePublishedValues)
   ASSERT_EQ(unpackTargeting(read(goldens()[0]), targeting), UnpackError::NONE);
   EXPECT_EQ(targeting.camera.stream_name, "main");
   EXPECT_EQ(targeting.camera.cam_id, 1);
-  EXPECT_DOUBLE_EQ(targeting.yaw, 0.5);
-  EXPECT_DOUBLE_EQ(targeting.pitch, -0.25);
+  EXPECT_NEAR(targeting.yaw, documented(GetParam(), 0.5), 1e-12);
+  EXPECT_NEAR(targeting.pitch, documented(GetParam(), -0.25), 1e-12);
   EXPECT_DOUBLE_EQ(targeting.x_offset, 16383 / 32767.0);  // truncated
   EXPECT_DOUBLE_EQ(targeting.y_offset, -8191 / 32767.0);
   EXPECT_DOUBLE_EQ(targeting.target_latitude, 59.329);  // 0.5: from @28, not from its copy @32
   EXPECT_DOUBLE_EQ(targeting.target_longitude, 18.068);
   EXPECT_DOUBLE_EQ(targeting.target_altitude, 120.5);
   EXPECT_EQ(targeting.detection_id, -1);  // 1.1: FF FF @40; the others carry none
+  EXPECT_EQ(targeting.view_id, -1);       // 1.2: FF FF @50, no detection lock; the others carry none
+  EXPECT_EQ(targeting.track_id, 0);
+  EXPECT_FALSE(targeting.lock_target);
 
   SystemStatus status;
   ASSERT_EQ(unpackSystemStatus(read(goldens()[3]), status), UnpackError::NONE);
-  EXPECT_EQ(status.status, 1);
+  EXPECT_EQ(status.status, GetParam() == Format::V1_2 ? APP_STATUS_RUNNING : 1);
   EXPECT_DOUBLE_EQ(status.jetson_temp, 45.5);  // int32 x 1000, not a float
 
   VideoOutput output;
   ASSERT_EQ(unpackVideoOutput(read(goldens()[4]), output), UnpackError::NONE);
-  EXPECT_EQ(output.num_user_views, 4);  // its own byte @15
+  EXPECT_EQ(output.num_user_views, 4);  // its own byte @15 (@23 in 1.2)
   EXPECT_EQ(output.layout_mode, 4);
   EXPECT_EQ(output.width, 1920);
   EXPECT_EQ(output.fps, 30);
   EXPECT_EQ(output.views[3].x, 960);
   EXPECT_EQ(output.views[3].h, 540);
-  EXPECT_EQ(output.detection_overlay_box.x, 1600);  // @48 after four views
+  EXPECT_EQ(output.detection_overlay_box.x, 1600);  // @48 after four views (@56 in 1.2)
   EXPECT_EQ(output.detection_overlay_box.h, 1080);
   EXPECT_EQ(output.single_detection_size, 160);
 
   const Message ack = read(goldens()[7]);
-  EXPECT_EQ(ack.message_type, MessageType::ACKNOWLEDGEMENT);  // wire 5 in 0.5, 4 in 1.0 and 1.1
-  EXPECT_EQ(ack.param_type, digiview::ParamType::CAM_TARGETING);
+  EXPECT_EQ(ack.message_type, MessageType::ACKNOWLEDGEMENT);      // wire 5 in 0.5, 4 later
+  EXPECT_EQ(ack.param_type, digiview::ParamType::CAM_TARGETING);  // wire 7, 13 in 1.2
 }
 
 TEST_P(DigiViewGoldens, AChecksumByteOfZeroIsTakenOnlyWhenTheRuleSaysSoAndIsReported)
@@ -265,7 +267,7 @@ TEST(DigiViewGoldenExtras, FormatSpecificFrames)
       toHex(packInterval(Format::V1_1, IntervalRequest{ digiview::ParamType::CAM_TARGETING, MAIN_1, 100 }).pack()),
       GET_CAM_TARGETING_EVERY_100_MS_V1_1);
   // 1.1: detection_id, int16 @40 of CAM_TARGETING's data, packed and read.
-  CamTargeting detection = goldenTargeting();
+  CamTargeting detection = goldenTargeting(Format::V1_1);
   detection.targeting_mode = 2;
   detection.detection_id = 1234;
   EXPECT_EQ(toHex(packTargeting(Format::V1_1, MessageType::SET_PARAMETERS, detection).pack()),
@@ -300,9 +302,15 @@ TEST(DigiViewGoldenExtras, TheFormatsAreToldApartByLengthAndTheirTypeNumbers)
   Message message;
   const Bytes v0_5 = fromHex(ack.frame.v0_5);
   const Bytes v1_0 = fromHex(ack.frame.v1_0);
+  const Bytes v1_2 = fromHex(ack.frame.v1_2);
   EXPECT_EQ(Message::unpack(v0_5.data(), v0_5.size(), Wire{ Format::V1_0 }, message), UnpackError::BAD_SIZE);
   EXPECT_EQ(Message::unpack(v1_0.data(), v1_0.size(), Wire{ Format::V0_5 }, message), UnpackError::BAD_SIZE);
-  // Wire values: 0.5 as the seed; 1.0 and 1.1 have no GET_INTERVAL and every reply one lower.
+  EXPECT_EQ(Message::unpack(v1_2.data(), v1_2.size(), Wire{ Format::V1_1 }, message), UnpackError::BAD_SIZE);
+  EXPECT_EQ(Message::unpack(v1_0.data(), v1_0.size(), Wire{ Format::V1_2 }, message), UnpackError::BAD_SIZE);
+  EXPECT_EQ(formatsOfSize(80), "0.5");
+  EXPECT_EQ(formatsOfSize(88), "1.0 or 1.1");
+  EXPECT_EQ(formatsOfSize(96), "1.2");
+  // Wire values: 0.5 as the seed; later formats have no GET_INTERVAL and every reply one lower.
   const std::vector<std::pair<MessageType, int>> v1_0_values = {
     { MessageType::EMPTY, 0 },          { MessageType::GET_PARAMETERS, 1 },
     { MessageType::SET_PARAMETERS, 2 }, { MessageType::CURRENT_PARAMETERS, 3 },
@@ -317,7 +325,7 @@ TEST(DigiViewGoldenExtras, TheFormatsAreToldApartByLengthAndTheirTypeNumbers)
     MessageType back = MessageType::EMPTY;
     ASSERT_TRUE(toWire(Format::V0_5, type, wire));
     EXPECT_EQ(wire, static_cast<std::uint8_t>(type));
-    for (Format renumbered : { Format::V1_0, Format::V1_1 })
+    for (Format renumbered : { Format::V1_0, Format::V1_1, Format::V1_2 })
     {
       EXPECT_EQ(toWire(renumbered, type, wire), value >= 0) << toString(type);
       if (value >= 0)
@@ -333,12 +341,58 @@ TEST(DigiViewGoldenExtras, TheFormatsAreToldApartByLengthAndTheirTypeNumbers)
   EXPECT_FALSE(fromWire(Format::V1_0, 9, type));
   EXPECT_FALSE(fromWire(Format::V1_1, 9, type));
   EXPECT_FALSE(fromWire(Format::V0_5, 10, type));
+  EXPECT_FALSE(fromWire(Format::V1_2, 10, type));
   EXPECT_FALSE(toWire(Format::V1_0, MessageType::GET_INTERVAL, wire));
+  // 1.2 adds DEBUG as 9; the others have none.
+  ASSERT_TRUE(fromWire(Format::V1_2, 9, type));
+  EXPECT_EQ(type, MessageType::DEBUG);
+  ASSERT_TRUE(toWire(Format::V1_2, MessageType::DEBUG, wire));
+  EXPECT_EQ(wire, 9);
+  for (Format format : { Format::V0_5, Format::V1_0, Format::V1_1 })
+  {
+    EXPECT_FALSE(toWire(format, MessageType::DEBUG, wire)) << toString(format);
+  }
+  // Parameter types: the seed's numbers until 1.1; 1.2 renumbers them (CAM_TARGETING 13, CAM_OPTICS 14, 12 unused).
+  const std::vector<std::tuple<digiview::ParamType, int, int>> params = {
+    { digiview::ParamType::SYSTEM_STATUS, 0, 0 },
+    { digiview::ParamType::VIDEO_OUTPUT, 3, 3 },
+    { digiview::ParamType::DETECTED_ROI, 6, 6 },
+    { digiview::ParamType::CAM_TARGETING, 7, 13 },
+    { digiview::ParamType::CAM_OPTICS_AND_CONTROL, 8, 14 },
+    { digiview::ParamType::SINGLE_TARGET_TRACKING, 12, 18 },
+    { digiview::ParamType::CALIBRATION, -1, 19 },
+    { digiview::ParamType::NAVIGATION, -1, 20 },
+    { digiview::ParamType::LENS, -1, 7 },
+    { digiview::ParamType::CAM_CONTROL_MODE, -1, 11 },
+  };
+  for (const auto& [param, before, now] : params)
+  {
+    digiview::ParamType back = digiview::ParamType::AI;
+    for (Format format : FORMATS)
+    {
+      const int expected = format == Format::V1_2 ? now : before;
+      EXPECT_EQ(paramToWire(format, param, wire), expected >= 0) << toString(param) << " " << toString(format);
+      if (expected >= 0)
+      {
+        EXPECT_EQ(wire, expected) << toString(param);
+        ASSERT_TRUE(paramFromWire(format, wire, back));
+        EXPECT_EQ(back, param);
+      }
+    }
+  }
+  digiview::ParamType param = digiview::ParamType::AI;
+  EXPECT_FALSE(paramFromWire(Format::V1_2, 12, param));  // CAM_CROP_MODE, retired
+  EXPECT_FALSE(paramFromWire(Format::V1_2, 21, param));
+  EXPECT_FALSE(paramFromWire(Format::V1_1, 13, param));
   // What a format cannot carry is not packed.
   EXPECT_THROW(packBare(Format::V1_0, MessageType::GET_INTERVAL, digiview::ParamType::CAM_TARGETING).pack(),
                std::invalid_argument);
   EXPECT_THROW(packBare(Format::V1_1, MessageType::GET_INTERVAL, digiview::ParamType::CAM_TARGETING).pack(),
                std::invalid_argument);
+  EXPECT_THROW(packBare(Format::V1_2, MessageType::GET_INTERVAL, digiview::ParamType::CAM_TARGETING).pack(),
+               std::invalid_argument);
+  EXPECT_THROW(packDebug(Format::V1_1, DebugValues{}).pack(), std::invalid_argument);
+  EXPECT_THROW(packGet(Format::V1_1, digiview::ParamType::NAVIGATION, MAIN_1).pack(), std::invalid_argument);
   Message with_interval = packGet(Format::V0_5, digiview::ParamType::CAM_TARGETING, MAIN_1);
   with_interval.interval_ms = 100;
   EXPECT_THROW(with_interval.pack(), std::invalid_argument);
@@ -364,6 +418,6 @@ TEST(DigiViewGoldenExtras, OneAndOneOneReadEachOtherButForDetectionId)
   CamTargeting as_1_1;
   ASSERT_EQ(Message::unpack(v1_0.data(), v1_0.size(), Wire{ Format::V1_1 }, message), UnpackError::NONE);
   ASSERT_EQ(unpackTargeting(message, as_1_1), UnpackError::NONE);
-  EXPECT_DOUBLE_EQ(as_1_1.yaw, 0.5);
+  EXPECT_NEAR(as_1_1.yaw, documented(Format::V1_1, 0.5), 1e-12);  // the same 500, in 1.1's unit
   EXPECT_EQ(as_1_1.detection_id, 0);
 }

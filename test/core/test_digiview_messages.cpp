@@ -60,7 +60,8 @@ CameraId mainCamera(std::uint8_t cam_id = 0)
   return CameraId{ "main", cam_id };
 }
 
-/// The codec tests that hold in every format.
+/// The codec tests that hold in every format. Angles in radians on the wire here, whatever the format documents, so
+/// that the scaled values are the same numbers in all (test_digiview_goldens.cpp checks degrees).
 class DigiViewMessages : public ::testing::TestWithParam<Format>
 {
 protected:
@@ -68,14 +69,29 @@ protected:
   {
     return GetParam();
   }
+  Wire wire() const
+  {
+    return Wire(GetParam(), ChecksumRule::REQUIRED, AngleUnit::RADIANS);
+  }
   Layout layout() const
   {
     return layoutOf(GetParam());
   }
+  /// Where the fields after the stream name start in the data: 8, or 16 in 1.2.
+  std::size_t b() const
+  {
+    return nameSizeOf(GetParam());
+  }
+  std::uint8_t paramWire(digiview::ParamType param) const
+  {
+    std::uint8_t value = 0;
+    EXPECT_TRUE(paramToWire(GetParam(), param, value));
+    return value;
+  }
   Message unpacked(const Bytes& bytes) const
   {
     Message message;
-    EXPECT_EQ(Message::unpack(bytes.data(), bytes.size(), Wire{ format() }, message), UnpackError::NONE);
+    EXPECT_EQ(Message::unpack(bytes.data(), bytes.size(), wire(), message), UnpackError::NONE);
     return message;
   }
 };
@@ -109,28 +125,34 @@ TEST_P(DigiViewMessages, HeaderChecksumAndTruncatedFields)
   targeting.y_offset = -1.0;
   targeting.target_latitude = -89.9999;
   targeting.target_altitude = 1e12;  // far outside int32: saturated (the published cast is undefined)
-  Message message = packTargeting(format(), MessageType::SET_PARAMETERS, targeting);
+  Message message = packTargeting(wire(), MessageType::SET_PARAMETERS, targeting);
   message.timestamp = 0x0102030405060708ull;
   const Bytes bytes = message.pack();
   ASSERT_EQ(bytes.size(), layout().size);
   EXPECT_EQ((std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + 11)),
-            (std::vector<std::uint8_t>{ 0x08, 0x07, 0x06, 0x05, 0x04, 0x03, 0x02, 0x01, 0x00, 0x02, 0x07 }));
+            (std::vector<std::uint8_t>{ 0x08, 0x07, 0x06, 0x05, 0x04, 0x03, 0x02, 0x01, 0x00, 0x02,
+                                        paramWire(digiview::ParamType::CAM_TARGETING) }));
   const std::size_t data = layout().data_offset;
+  const std::size_t after_name = data + b();
   EXPECT_EQ(std::string(reinterpret_cast<const char*>(&bytes[data]), 4), "main");
-  EXPECT_EQ(bytes[data + 4] | bytes[data + 7], 0);  // NUL-padded
-  EXPECT_EQ(bytes[data + 8], 2);                    // cam_id
-  EXPECT_EQ(int32At(bytes, data + 11), 1234);
-  EXPECT_EQ(int32At(bytes, data + 15), -1);
-  EXPECT_EQ(int32At(bytes, data + 19), 0);
-  EXPECT_EQ(bytes[data + 23], 3);
-  EXPECT_EQ(int16At(bytes, data + 24), 16383);   // 0.5 x 32767 = 16383.5, truncated
-  EXPECT_EQ(int16At(bytes, data + 26), -32767);  // never -32768
-  EXPECT_EQ(int32At(bytes, data + 28), -89999);
-  EXPECT_EQ(int32At(bytes, data + (format() == Format::V0_5 ? 40 : 36)), std::numeric_limits<std::int32_t>::max());
-  // 1.1 appends detection_id after the altitude (-1 unless set: no detection); 1.0 leaves those bytes zero.
+  EXPECT_EQ(bytes[data + 4] | bytes[after_name - 1], 0);  // NUL-padded
+  EXPECT_EQ(bytes[after_name], 2);                        // cam_id
+  EXPECT_EQ(int32At(bytes, after_name + 3), 1234);
+  EXPECT_EQ(int32At(bytes, after_name + 7), -1);
+  EXPECT_EQ(int32At(bytes, after_name + 11), 0);
+  EXPECT_EQ(bytes[after_name + 15], 3);
+  EXPECT_EQ(int16At(bytes, after_name + 16), 16383);   // 0.5 x 32767 = 16383.5, truncated
+  EXPECT_EQ(int16At(bytes, after_name + 18), -32767);  // never -32768
+  EXPECT_EQ(int32At(bytes, after_name + 20), -89999);
+  EXPECT_EQ(int32At(bytes, after_name + (format() == Format::V0_5 ? 32 : 28)),
+            std::numeric_limits<std::int32_t>::max());
+  // After the altitude: 1.1's detection_id (-1 unless set: no detection), 1.2's track_id 0, view_id -1 (no lock),
+  // lock_target 0; 1.0 leaves those bytes zero.
   if (format() != Format::V0_5)
   {
-    EXPECT_EQ(int16At(bytes, data + 40), format() == Format::V1_1 ? -1 : 0);
+    EXPECT_EQ(int16At(bytes, after_name + 32), format() == Format::V1_1 ? -1 : 0);
+    EXPECT_EQ(int16At(bytes, after_name + 34), format() == Format::V1_2 ? -1 : 0);
+    EXPECT_EQ(bytes[after_name + 36], 0);
   }
   // The checksum covers every byte before it; padding is zero.
   EXPECT_EQ(bytes[layout().checksum_offset], bitwiseCrc(bytes.data(), layout().checksum_offset));
@@ -139,18 +161,18 @@ TEST_P(DigiViewMessages, HeaderChecksumAndTruncatedFields)
     EXPECT_EQ(bytes[at], 0) << at;
   }
   targeting.yaw = std::nan("");
-  EXPECT_EQ(int32At(packTargeting(format(), MessageType::SET_PARAMETERS, targeting).pack(), data + 11), 0);
+  EXPECT_EQ(int32At(packTargeting(wire(), MessageType::SET_PARAMETERS, targeting).pack(), after_name + 3), 0);
   // In single precision, as the published packer: -0.511f x 1000 is -510.99997, so a yaw of -511 mrad read from
   // DigiView goes back as -510 (the fuzzer's round trips allow that one unit).
   targeting.yaw = -0.511;
-  EXPECT_EQ(int32At(packTargeting(format(), MessageType::SET_PARAMETERS, targeting).pack(), data + 11), -510);
+  EXPECT_EQ(int32At(packTargeting(wire(), MessageType::SET_PARAMETERS, targeting).pack(), after_name + 3), -510);
 }
 
 TEST_P(DigiViewMessages, WhereEachFormatPutsTheSubscriptionInterval)
 {
   const Bytes interval =
-      packInterval(format(), IntervalRequest{ digiview::ParamType::CAM_TARGETING, mainCamera(1), 250 }).pack();
-  EXPECT_EQ(interval[10], 7);
+      packInterval(wire(), IntervalRequest{ digiview::ParamType::CAM_TARGETING, mainCamera(1), 250 }).pack();
+  EXPECT_EQ(interval[10], paramWire(digiview::ParamType::CAM_TARGETING));
   if (format() == Format::V0_5)
   {
     EXPECT_EQ(interval[9], 4);                   // GET_INTERVAL
@@ -168,8 +190,8 @@ TEST_P(DigiViewMessages, WhereEachFormatPutsTheSubscriptionInterval)
   EXPECT_EQ(request.param, digiview::ParamType::CAM_TARGETING);
   EXPECT_EQ(request.interval_ms, 250u);
   EXPECT_EQ(request.camera.cam_id, 1);
-  // A plain GET: a subscription request with interval 0 in 1.0 and 1.1 (a one-shot GET), none in 0.5.
-  const Message get = unpacked(packGet(format(), digiview::ParamType::CAM_TARGETING, mainCamera()).pack());
+  // A plain GET: a subscription request with interval 0 from 1.0 on (a one-shot GET), none in 0.5.
+  const Message get = unpacked(packGet(wire(), digiview::ParamType::CAM_TARGETING, mainCamera()).pack());
   EXPECT_EQ(unpackInterval(get, request), subscribesWithGet(format()) ? UnpackError::NONE : UnpackError::BAD_DATA);
   EXPECT_EQ(request.interval_ms, 0u);
 }
@@ -190,7 +212,10 @@ TEST_P(DigiViewMessages, RoundTripOfEveryMessageAPtzClientNeeds)
   targeting.target_longitude = 179.999;
   targeting.target_altitude = -1000.0;
   targeting.detection_id = -32768;
-  Message message = unpacked(packTargeting(format(), MessageType::CURRENT_PARAMETERS, targeting).pack());
+  targeting.track_id = 65535;
+  targeting.view_id = -32768;
+  targeting.lock_target = true;
+  Message message = unpacked(packTargeting(wire(), MessageType::CURRENT_PARAMETERS, targeting).pack());
   EXPECT_EQ(message.message_type, MessageType::CURRENT_PARAMETERS);
   EXPECT_EQ(message.format, format());
   CamTargeting back;
@@ -209,16 +234,20 @@ TEST_P(DigiViewMessages, RoundTripOfEveryMessageAPtzClientNeeds)
   EXPECT_DOUBLE_EQ(back.target_longitude, 179.999);
   EXPECT_DOUBLE_EQ(back.target_altitude, -1000.0);
   EXPECT_EQ(back.detection_id, format() == Format::V1_1 ? -32768 : -1);  // only 1.1 carries it
+  EXPECT_EQ(back.track_id, format() == Format::V1_2 ? 65535 : 0);        // only 1.2 carries these
+  EXPECT_EQ(back.view_id, format() == Format::V1_2 ? -32768 : -1);
+  EXPECT_EQ(back.lock_target, format() == Format::V1_2);
 
   message = unpacked(
-      packOptics(format(), MessageType::SET_PARAMETERS, CamOpticsAndControl{ mainCamera(2), 127, 3.14, 1 }).pack());
+      packOptics(wire(), MessageType::SET_PARAMETERS, CamOpticsAndControl{ mainCamera(2), 127, 3.14, 2 }).pack());
   CamOpticsAndControl optics;
   ASSERT_EQ(unpackOptics(message, optics), UnpackError::NONE);
   EXPECT_EQ(optics.zoom, 127);
   EXPECT_DOUBLE_EQ(optics.fov, 3.14);
   EXPECT_EQ(optics.camera.cam_id, 2);
+  EXPECT_EQ(optics.crop_mode, format() == Format::V1_2 ? 1 : 2);  // 1.2 has none: the default
 
-  message = unpacked(packSystemStatus(format(), MessageType::CURRENT_PARAMETERS, SystemStatus{ 3, 0, 71.5 }).pack());
+  message = unpacked(packSystemStatus(wire(), MessageType::CURRENT_PARAMETERS, SystemStatus{ 3, 0, 71.5 }).pack());
   SystemStatus status;
   ASSERT_EQ(unpackSystemStatus(message, status), UnpackError::NONE);
   EXPECT_EQ(status.status, 3);
@@ -236,12 +265,12 @@ TEST_P(DigiViewMessages, RoundTripOfEveryMessageAPtzClientNeeds)
   output.views[2] = BoundingBox{ 9, 9, 9, 9 };  // not one of the two: not sent
   output.detection_overlay_box = BoundingBox{ 1, 2, 3, 4 };
   output.single_detection_size = 96;
-  const Bytes output_bytes = packVideoOutput(format(), MessageType::CURRENT_PARAMETERS, output).pack();
-  const std::size_t data = layout().data_offset;
-  EXPECT_EQ(output_bytes[data + 13], 2);  // the layout, alone in its byte
-  EXPECT_EQ(output_bytes[data + 15], 2);  // num_user_views
-  EXPECT_EQ(int16At(output_bytes, data + 32), 1);
-  EXPECT_EQ(int16At(output_bytes, data + 40), 96);
+  const Bytes output_bytes = packVideoOutput(wire(), MessageType::CURRENT_PARAMETERS, output).pack();
+  const std::size_t after_name = layout().data_offset + b();
+  EXPECT_EQ(output_bytes[after_name + 5], 2);  // the layout, alone in its byte
+  EXPECT_EQ(output_bytes[after_name + 7], 2);  // num_user_views
+  EXPECT_EQ(int16At(output_bytes, after_name + 24), 1);
+  EXPECT_EQ(int16At(output_bytes, after_name + 32), 96);
   VideoOutput output_back;
   ASSERT_EQ(unpackVideoOutput(unpacked(output_bytes), output_back), UnpackError::NONE);
   EXPECT_EQ(output_back.num_user_views, 2);
@@ -255,7 +284,7 @@ TEST_P(DigiViewMessages, RoundTripOfEveryMessageAPtzClientNeeds)
   for (MessageType type : { MessageType::ACKNOWLEDGEMENT, MessageType::CHECKSUM_ERROR, MessageType::DATA_ERROR,
                             MessageType::FORBIDDEN, MessageType::UNKNOWN, MessageType::QUIT })
   {
-    message = unpacked(packBare(format(), type, digiview::ParamType::CAM_TARGETING).pack());
+    message = unpacked(packBare(wire(), type, digiview::ParamType::CAM_TARGETING).pack());
     EXPECT_EQ(message.message_type, type);
     EXPECT_EQ(message.param_type, digiview::ParamType::CAM_TARGETING);
   }
@@ -264,10 +293,11 @@ TEST_P(DigiViewMessages, RoundTripOfEveryMessageAPtzClientNeeds)
 TEST_P(DigiViewMessages, EveryMalformedMessageHasOneReasonAndLeavesDefinedOutputs)
 {
   const std::size_t data = layout().data_offset;
+  const std::size_t after_name = data + b();
   const std::size_t checksum = layout().checksum_offset;
   CamTargeting targeting;
   targeting.camera = mainCamera();
-  const Bytes good = packTargeting(format(), MessageType::SET_PARAMETERS, targeting).pack();
+  const Bytes good = packTargeting(wire(), MessageType::SET_PARAMETERS, targeting).pack();
   auto with = [&](std::size_t at, std::uint8_t value, bool fix_checksum = true) {
     Bytes bytes = good;
     bytes[at] = value;
@@ -281,7 +311,7 @@ TEST_P(DigiViewMessages, EveryMalformedMessageHasOneReasonAndLeavesDefinedOutput
     Bytes bytes = good;
     for (std::size_t index = 0; index < 4; ++index)
     {
-      bytes[data + at + index] = static_cast<std::uint8_t>(static_cast<std::uint32_t>(value) >> (8 * index));
+      bytes[after_name + at + index] = static_cast<std::uint8_t>(static_cast<std::uint32_t>(value) >> (8 * index));
     }
     bytes[checksum] = crc8(bytes.data(), checksum);
     return bytes;
@@ -299,29 +329,32 @@ TEST_P(DigiViewMessages, EveryMalformedMessageHasOneReasonAndLeavesDefinedOutput
     { "one byte short", good, size - 1, UnpackError::BAD_SIZE, UnpackError::NONE },
     { "bad checksum", with(checksum, static_cast<std::uint8_t>(good[checksum] ^ 0x5A), false), size,
       UnpackError::BAD_CHECKSUM, UnpackError::NONE },
-    { "a flipped data bit", with(data + 9, static_cast<std::uint8_t>(good[data + 9] ^ 0x01), false), size,
+    { "a flipped data bit", with(after_name + 1, static_cast<std::uint8_t>(good[after_name + 1] ^ 0x01), false), size,
       UnpackError::BAD_CHECKSUM, UnpackError::NONE },
     { "version 1", with(8, 1), size, UnpackError::BAD_VERSION, UnpackError::NONE },
     { "message type 10", with(9, 10), size, UnpackError::BAD_MESSAGE_TYPE, UnpackError::NONE },
     { "message type 254", with(9, 254), size, UnpackError::BAD_MESSAGE_TYPE, UnpackError::NONE },
-    { "param type 13", with(10, 13), size, UnpackError::BAD_PARAM_TYPE, UnpackError::NONE },
-    { "cam_id 4", with(data + 8, 4), size, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "targeting mode 4", with(data + 9, 4), size, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "euler_delta 2", with(data + 10, 2), size, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "lock flags 8", with(data + 23, 8), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "a param type the format has not", with(10, format() == Format::V1_2 ? 12 : 13), size,
+      UnpackError::BAD_PARAM_TYPE, UnpackError::NONE },
+    { "param type 21", with(10, 21), size, UnpackError::BAD_PARAM_TYPE, UnpackError::NONE },
+    { "cam_id 4", with(after_name, 4), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "targeting mode 4", with(after_name + 1, 4), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "euler_delta 2", with(after_name + 2, 2), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "lock flags 8", with(after_name + 15, 8), size, UnpackError::NONE, UnpackError::BAD_DATA },
     { "a control character in the stream name", with(data + 1, 0x07), size, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "yaw 3.2 rad", withInt32(11, 3200), size, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "pitch -1.6 rad", withInt32(15, -1600), size, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "latitude 91", withInt32(28, 91000), size, UnpackError::NONE, UnpackError::BAD_DATA },
-    { "longitude 180", withInt32(format() == Format::V0_5 ? 36 : 32, 180000), size, UnpackError::NONE,
+    { "yaw 3.2 rad", withInt32(3, 3200), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "pitch -1.6 rad", withInt32(7, -1600), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "latitude 91", withInt32(20, 91000), size, UnpackError::NONE, UnpackError::BAD_DATA },
+    { "longitude 180", withInt32(format() == Format::V0_5 ? 28 : 24, 180000), size, UnpackError::NONE,
       UnpackError::BAD_DATA },
+    { "lock_target 2 (1.2; unused bytes before)", with(after_name + 36, 2), size, UnpackError::NONE,
+      format() == Format::V1_2 ? UnpackError::BAD_DATA : UnpackError::NONE },
   };
   for (const Case& item : cases)
   {
     Message message;
     message.timestamp = 42;
-    EXPECT_EQ(Message::unpack(item.bytes.data(), item.size, Wire{ format() }, message), item.message_error)
-        << item.name;
+    EXPECT_EQ(Message::unpack(item.bytes.data(), item.size, wire(), message), item.message_error) << item.name;
     if (item.message_error != UnpackError::NONE)
     {
       EXPECT_EQ(message.timestamp, 0u) << item.name;  // defined: a default message
@@ -330,18 +363,32 @@ TEST_P(DigiViewMessages, EveryMalformedMessageHasOneReasonAndLeavesDefinedOutput
     CamTargeting read;
     read.yaw = 9.0;
     EXPECT_EQ(unpackTargeting(message, read), item.data_error) << item.name;
-    EXPECT_EQ(read.yaw, 0.0) << item.name;
+    if (item.data_error != UnpackError::NONE)
+    {
+      EXPECT_EQ(read.yaw, 0.0) << item.name;
+    }
+  }
+  // In degrees the limits are +-180 and +-90: 179.999 is a yaw, 180.001 is not.
+  const Wire degrees(format(), ChecksumRule::REQUIRED, AngleUnit::DEGREES);
+  for (const auto& [raw, error] :
+       { std::make_pair(179999, UnpackError::NONE), std::make_pair(180001, UnpackError::BAD_DATA) })
+  {
+    const Bytes bytes = withInt32(3, raw);
+    Message message;
+    ASSERT_EQ(Message::unpack(bytes.data(), bytes.size(), degrees, message), UnpackError::NONE);
+    CamTargeting read;
+    EXPECT_EQ(unpackTargeting(message, read), error) << raw;
   }
   // An optics unpack of a targeting message is refused too; so is a VIDEO_OUTPUT with more than four views.
   const Message message = unpacked(good);
   CamOpticsAndControl optics;
   EXPECT_EQ(unpackOptics(message, optics), UnpackError::BAD_DATA);
-  Message output = packVideoOutput(format(), MessageType::CURRENT_PARAMETERS, VideoOutput{});
-  output.data[15] = 5;
+  Message output = packVideoOutput(wire(), MessageType::CURRENT_PARAMETERS, VideoOutput{});
+  output.data[b() + 7] = 5;
   VideoOutput read;
   EXPECT_EQ(unpackVideoOutput(output, read), UnpackError::BAD_DATA);
   Message none;
-  EXPECT_EQ(Message::unpack(nullptr, size, Wire{ format() }, none), UnpackError::BAD_SIZE);
+  EXPECT_EQ(Message::unpack(nullptr, size, wire(), none), UnpackError::BAD_SIZE);
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, DigiViewMessages, ::testing::ValuesIn(digiview_test::FORMATS),

@@ -7,148 +7,38 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "startup_error.h"
 #include "wait_until.h"
 
-#include <boost/asio/ip/tcp.hpp>
-#include <boost/asio/read.hpp>
-#include <boost/asio/write.hpp>
-
-#include "digiview_golden_frames.h"
+#include "digiview_test_devices.h"
 #include "digiview_test_formats.h"
-#include "ptz_action_server/core/digiview/digiview_protocol.h"
 #include "ptz_action_server/core/text.h"
-#include "ptz_action_server/emulators/digiview_emulator.h"
 
 using namespace ptz_action_server;
 using namespace ptz_action_server::digiview;
+using namespace ptz_action_server::digiview_devices;
 
 namespace
 {
-constexpr double WAIT = 10.0;
-
-DeviceConfig<DigiViewProtocol> backendConfig(std::uint16_t port, Format format, LinkKind transport = LinkKind::TCP)
-{
-  DeviceConfig<DigiViewProtocol> config;
-  config.link.port = port;
-  config.link.kind = transport;
-  config.settings.wire.format = format;
-  config.settings.acceleration = 4.0;  // as the emulator turns
-  config.session.startup_timeout = WAIT;
-  config.session.state_timeout = 1.0;  // generous: a busy test machine may starve the I/O threads
-  return config;
-}
-
-DigiViewEmulatorConfig emulatorConfig(Format format, LinkKind transport = LinkKind::TCP)
-{
-  DigiViewEmulatorConfig config;
-  config.wire.format = format;
-  config.transport = transport;
-  return config;
-}
-
 /// A message of \p type about \p param asking for reports every \p interval ms (0: none, or a cancel).
 std::function<bool(const ReceivedMessage&)> is(MessageType type, digiview::ParamType param, std::uint32_t interval = 0)
 {
   return [type, param, interval](const ReceivedMessage& item) {
-    IntervalRequest request;  // 0.5: GET_INTERVAL's data; 1.0, 1.1: a GET's interval_ms
+    IntervalRequest request;  // 0.5: GET_INTERVAL's data; later a GET's interval_ms
     const std::uint32_t asked = unpackInterval(item.message, request) == UnpackError::NONE ? request.interval_ms : 0;
     return item.error == UnpackError::NONE && item.message.message_type == type && item.message.param_type == param &&
            asked == interval;
   };
 }
 
-/// The subscription to \p param at \p interval ms in \p format: 0.5 GET_INTERVAL, 1.0 and 1.1 a GET with interval_ms.
+/// The subscription to \p param at \p interval ms in \p format: 0.5 GET_INTERVAL, later a GET with interval_ms.
 std::function<bool(const ReceivedMessage&)> subscription(Format format, digiview::ParamType param,
                                                          std::uint32_t interval)
 {
   return is(subscribesWithGet(format) ? MessageType::GET_PARAMETERS : MessageType::GET_INTERVAL, param, interval);
 }
-
-/**
- * A DigiView that answers GETs with the frames the published implementations print: VIDEO_OUTPUT and SYSTEM_STATUS
- * byte for byte as published-wire-facts.md section 1.5 has them (stream "main", four views), the view's state packed
- * by this codec. One TCP client, on its own thread.
- */
-class PublishedDigiView
-{
-public:
-  explicit PublishedDigiView(Format format)
-    : format_(format)
-    , acceptor_(context_, boost::asio::ip::tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0))
-    , socket_(context_)
-    , request_(layoutOf(format).size)
-  {
-    acceptor_.async_accept(socket_, [this](const boost::system::error_code& error) {
-      if (!error)
-      {
-        read();
-      }
-    });
-    thread_ = std::thread([this] { context_.run(); });
-  }
-  ~PublishedDigiView()
-  {
-    context_.stop();
-    thread_.join();
-  }
-  std::uint16_t port() const
-  {
-    return acceptor_.local_endpoint().port();
-  }
-
-private:
-  void read()
-  {
-    boost::asio::async_read(socket_, boost::asio::buffer(request_),
-                            [this](const boost::system::error_code& error, std::size_t) {
-                              if (!error)
-                              {
-                                answer();
-                                read();
-                              }
-                            });
-  }
-  void answer()
-  {
-    Message request;
-    CameraId camera;
-    if (Message::unpack(request_.data(), request_.size(), Wire{ format_ }, request) != UnpackError::NONE ||
-        request.message_type != MessageType::GET_PARAMETERS || unpackCamera(request, camera) != UnpackError::NONE)
-    {
-      return;
-    }
-    Bytes reply;
-    if (request.param_type == digiview::ParamType::VIDEO_OUTPUT)
-    {
-      reply = digiview_golden::fromHex(digiview_golden::CURRENT_VIDEO_OUTPUT.in(format_));
-    }
-    else if (request.param_type == digiview::ParamType::SYSTEM_STATUS)
-    {
-      reply = digiview_golden::fromHex(digiview_golden::CURRENT_SYSTEM_STATUS.in(format_));
-    }
-    else if (request.param_type == digiview::ParamType::CAM_TARGETING)
-    {
-      CamTargeting targeting;
-      targeting.camera = camera;
-      reply = packTargeting(format_, MessageType::CURRENT_PARAMETERS, targeting).pack();
-    }
-    else if (request.param_type == digiview::ParamType::CAM_OPTICS_AND_CONTROL)
-    {
-      reply = packOptics(format_, MessageType::CURRENT_PARAMETERS, CamOpticsAndControl{ camera, 0, 1.2, 1 }).pack();
-    }
-    boost::system::error_code ignored;
-    boost::asio::write(socket_, boost::asio::buffer(reply), ignored);
-  }
-
-  const Format format_;
-  boost::asio::io_context context_;
-  boost::asio::ip::tcp::acceptor acceptor_;
-  boost::asio::ip::tcp::socket socket_;
-  Bytes request_;
-  std::thread thread_;
-};
 
 class DigiViewBackend : public ::testing::TestWithParam<Format>
 {
@@ -238,7 +128,7 @@ TEST_P(DigiViewBackend, ADigiViewOfAFormatOfAnotherSizeFailsAtStartSayingSo)
     {
       continue;  // 1.0 and 1.1 read each other (see OneAndOneOneReadEachOtherButForDetectionId)
     }
-    const char* names = layoutOf(other).size == 80 ? "0.5" : "1.0 or 1.1";
+    const std::string names = formatsOfSize(layoutOf(other).size);  // "0.5", "1.0 or 1.1", "1.2"
     for (LinkKind transport : { LinkKind::TCP, LinkKind::UDP })
     {
       DigiViewEmulator emulator(emulatorConfig(other, transport));
@@ -247,14 +137,14 @@ TEST_P(DigiViewBackend, ADigiViewOfAFormatOfAnotherSizeFailsAtStartSayingSo)
       const std::string expected =
           formatText("DigiView speaks format %s (%zu-byte messages), but format is set to "
                      "\"%s\" (%zu-byte messages)",
-                     names, layoutOf(other).size, toString(GetParam()), layoutOf(GetParam()).size);
+                     names.c_str(), layoutOf(other).size, toString(GetParam()), layoutOf(GetParam()).size);
       EXPECT_NE(text.find(expected), std::string::npos)
           << toString(other) << " " << toString(transport) << ": " << text;
     }
   }
 }
 
-TEST_P(DigiViewBackend, AimsInDirectionalModeAndInOneOneNamesNoDetection)
+TEST_P(DigiViewBackend, AimsInDirectionalModeAndNamesNoDetection)
 {
   DigiViewEmulator emulator(emulatorConfig(GetParam()));
   auto backend = makeDeviceBackend<DigiViewProtocol>(backendConfig(emulator.port(), GetParam()));
@@ -277,10 +167,15 @@ TEST_P(DigiViewBackend, AimsInDirectionalModeAndInOneOneNamesNoDetection)
     EXPECT_EQ(sent.targeting_mode, 0);
     EXPECT_NEAR(sent.yaw, 0.3, 1e-3);
     EXPECT_NEAR(sent.pitch, -0.2, 1e-3);
-    // 1.1 carries detection_id -1 (no detection: FF FF); the others have no such field.
+    // 1.1 carries detection_id -1 (no detection: FF FF), 1.2 track_id 0 and view_id -1 (no detection lock); the
+    // others have no such field.
     EXPECT_EQ(sent.detection_id, -1);
-    const std::size_t at = layoutOf(GetParam()).data_offset + 40;
-    if (GetParam() == Format::V1_1)
+    EXPECT_EQ(sent.view_id, -1);
+    EXPECT_EQ(sent.track_id, 0);
+    EXPECT_FALSE(sent.lock_target);
+    const std::size_t tail = layoutOf(GetParam()).data_offset + nameSizeOf(GetParam()) + 32;
+    const std::size_t at = GetParam() == Format::V1_2 ? tail + 2 : tail;
+    if (GetParam() == Format::V1_1 || GetParam() == Format::V1_2)
     {
       const Bytes bytes = item.message.pack();
       EXPECT_EQ(bytes[at], 0xFF);
@@ -313,6 +208,44 @@ TEST_P(DigiViewBackend, ADigiViewThatLeavesTheChecksumZeroIsUsedOnlyWhenTheSetti
   EXPECT_GT(lenient->protocol<DigiViewProtocol>().counters().unverified, 0u);
   EXPECT_EQ(lenient->protocol<DigiViewProtocol>().counters().bad[static_cast<std::size_t>(UnpackError::BAD_CHECKSUM)],
             0u);
+}
+
+TEST_P(DigiViewBackend, AimsInTheConfiguredAngleUnit)
+{
+  // Either unit on any format (a setting: DigiViews in the field may differ from their documentation); the backend
+  // and the emulator agree, and the wire carries the angle x 1000 in that unit.
+  for (AngleUnit unit : { AngleUnit::RADIANS, AngleUnit::DEGREES })
+  {
+    DigiViewEmulatorConfig emulator_config = emulatorConfig(GetParam());
+    emulator_config.wire.angles = unit;
+    DigiViewEmulator emulator(emulator_config);
+    DeviceConfig<DigiViewProtocol> config = backendConfig(emulator.port(), GetParam());
+    config.settings.wire.angles = unit;
+    auto backend = makeDeviceBackend<DigiViewProtocol>(config);
+    ASSERT_EQ(startupError(*backend), "") << toString(unit);
+    backend->goTo(AxisValues{ { 0.3, -0.2, 2.0 } });
+    auto targeting = [](const ReceivedMessage& item) {
+      return item.error == UnpackError::NONE && item.message.message_type == MessageType::SET_PARAMETERS &&
+             item.message.param_type == digiview::ParamType::CAM_TARGETING;
+    };
+    ASSERT_TRUE(emulator.received().waitFor(targeting, WAIT)) << toString(unit);
+    for (const ReceivedMessage& item : emulator.received().items())
+    {
+      if (targeting(item))
+      {
+        const Bytes bytes = item.message.pack();
+        const std::size_t yaw_at = layoutOf(GetParam()).data_offset + nameSizeOf(GetParam()) + 3;
+        const std::int32_t raw = static_cast<std::int32_t>(bytes[yaw_at] | (bytes[yaw_at + 1] << 8) |
+                                                           (bytes[yaw_at + 2] << 16) | (bytes[yaw_at + 3] << 24));
+        EXPECT_EQ(raw, unit == AngleUnit::DEGREES ? 17188 : 300) << toString(unit);  // 0.3 rad = 17.1887 degrees
+      }
+    }
+    EXPECT_TRUE(waitUntil([&] { return std::abs(backend->sample().position[PAN] - 0.3) < 0.01; }, WAIT))
+        << toString(unit);
+    // fov = fov_wide / 2 out and back in the same unit: zoom 2.
+    EXPECT_TRUE(waitUntil([&] { return std::abs(backend->sample().position[ZOOM] - 2.0) < 0.02; }, WAIT))
+        << toString(unit);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, DigiViewBackend, ::testing::ValuesIn(digiview_test::FORMATS),

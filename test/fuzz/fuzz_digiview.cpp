@@ -1,7 +1,7 @@
 /**
  * \file
  * \brief libFuzzer target: DigiView Message::unpack and every payload unpack, on arbitrary bytes, in every format
- * (0.5, 1.0, 1.1) and both checksum rules.
+ * (0.5, 1.0, 1.1, 1.2), both checksum rules and both angle units.
  *
  * Beyond "no crash, no out-of-bounds read" (ASan, UBSan), it checks that a refused message leaves a default message,
  * that a checksum byte of 0 is taken unverified only where the rule allows it, that what unpacks packs back to the
@@ -41,7 +41,7 @@ Bytes canonical(const std::uint8_t* data, Format format)
   Bytes bytes(data, data + layout.size);
   if (layout.interval_offset != 0)
   {
-    bytes[layout.interval_offset - 1] = 0;  // 1.0, 1.1: the padding byte before interval_ms
+    bytes[layout.interval_offset - 1] = 0;  // from 1.0 on: the padding byte before interval_ms
   }
   std::fill(bytes.begin() + static_cast<std::ptrdiff_t>(layout.checksum_offset) + 1, bytes.end(), 0);
   bytes[layout.checksum_offset] = crc8(bytes.data(), layout.checksum_offset);
@@ -51,7 +51,7 @@ Bytes canonical(const std::uint8_t* data, Format format)
 /// \p message's payload unpacked, packed again and unpacked again: still valid, and \p same says the values held.
 template <class Payload, class Same>
 void checkRepacked(const Message& message, UnpackError (*unpack)(const Message&, Payload&),
-                   Message (*pack)(Format, MessageType, const Payload&), Same same)
+                   Message (*pack)(const Wire&, MessageType, const Payload&), Same same)
 {
   Payload first;
   const UnpackError error = unpack(message, first);
@@ -60,10 +60,10 @@ void checkRepacked(const Message& message, UnpackError (*unpack)(const Message&,
     check(error == UnpackError::BAD_DATA);
     return;
   }
-  const Bytes bytes = pack(message.format, message.message_type, first).pack();
+  const Bytes bytes = pack(message.wire(), message.message_type, first).pack();
   Message again;
   Payload second;
-  check(Message::unpack(bytes.data(), bytes.size(), Wire{ message.format }, again) == UnpackError::NONE);
+  check(Message::unpack(bytes.data(), bytes.size(), message.wire(), again) == UnpackError::NONE);
   check(unpack(again, second) == UnpackError::NONE);
   check(same(first, second));
 }
@@ -82,7 +82,8 @@ void checkPayloads(const Message& message)
            withinOneUnit(a.x_offset, b.x_offset, 32767.0) && withinOneUnit(a.y_offset, b.y_offset, 32767.0) &&
            withinOneUnit(a.target_latitude, b.target_latitude, 1000.0) &&
            withinOneUnit(a.target_longitude, b.target_longitude, 1000.0) &&
-           withinOneUnit(a.target_altitude, b.target_altitude, 1000.0) && a.detection_id == b.detection_id;
+           withinOneUnit(a.target_altitude, b.target_altitude, 1000.0) && a.detection_id == b.detection_id &&
+           a.track_id == b.track_id && a.view_id == b.view_id && a.lock_target == b.lock_target;
   });
   checkRepacked(message, &unpackOptics, &packOptics, [](const CamOpticsAndControl& a, const CamOpticsAndControl& b) {
     return sameCamera(a.camera, b.camera) && a.zoom == b.zoom && a.crop_mode == b.crop_mode &&
@@ -111,12 +112,21 @@ void checkPayloads(const Message& message)
   }
   if (unpackInterval(message, request) == UnpackError::NONE)
   {
-    const Bytes bytes = packInterval(message.format, request).pack();
+    const Bytes bytes = packInterval(message.wire(), request).pack();
     Message again;
     IntervalRequest twice;
-    check(Message::unpack(bytes.data(), bytes.size(), Wire{ message.format }, again) == UnpackError::NONE);
+    check(Message::unpack(bytes.data(), bytes.size(), message.wire(), again) == UnpackError::NONE);
     check(unpackInterval(again, twice) == UnpackError::NONE && twice.interval_ms == request.interval_ms &&
           twice.param == request.param && sameCamera(twice.camera, request.camera));
+  }
+  DebugValues values;
+  if (unpackDebug(message, values) == UnpackError::NONE)  // 1.2 only
+  {
+    const Bytes bytes = packDebug(message.wire(), values).pack();
+    Message again;
+    DebugValues twice;
+    check(Message::unpack(bytes.data(), bytes.size(), message.wire(), again) == UnpackError::NONE);
+    check(unpackDebug(again, twice) == UnpackError::NONE && twice == values);
   }
 }
 
@@ -147,6 +157,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     {
       checkUnpacked(data, size, Wire{ format, rule });
     }
+    checkUnpacked(data, size, Wire(format, ChecksumRule::REQUIRED, AngleUnit::RADIANS));
+    checkUnpacked(data, size, Wire(format, ChecksumRule::REQUIRED, AngleUnit::DEGREES));
     // The same bytes cut or zero-padded to the format's size, with a correct checksum, so that the fuzzer reaches
     // the payload checks whatever the input's length.
     const Layout layout = layoutOf(format);

@@ -1,7 +1,7 @@
 /**
  * \file
- * \brief A DigiView emulator: answers the messages of format 0.5, 1.0 or 1.1 over TCP or UDP, with virtual views that
- * slew.
+ * \brief A DigiView emulator: answers the messages of format 0.5, 1.0, 1.1 or 1.2 over TCP or UDP, angles in either
+ * unit, with virtual views that slew.
  */
 #pragma once
 
@@ -26,18 +26,18 @@ struct DigiViewEmulatorConfig
   std::string host = "127.0.0.1";
   std::uint16_t port = 0;              ///< 0: an ephemeral port (see port())
   LinkKind transport = LinkKind::TCP;  ///< TCP or UDP
-  /// The format it speaks (0.5: 80-byte messages, 1.0 and 1.1: 88), and what it takes for a checksum from its
-  /// clients.
+  /// The format it speaks (0.5: 80-byte messages, 1.0 and 1.1: 88, 1.2: 96), the unit of its angles (the format's
+  /// documented one unless set), and what it takes for a checksum from its clients.
   digiview::Wire wire;
   /// false: every message it sends carries a checksum byte of 0, as from a DigiView built on the published helpers,
   /// which never fill it.
   bool fill_checksum = true;
-  std::vector<std::string> streams{ "main" };
-  std::uint8_t layout_mode = 4;  ///< 4: four user views in a 2x2 grid
-  double slew_rate = 1.0;        ///< rad/s a view turns at
-  double acceleration = 4.0;     ///< rad/s^2
-  double fov_rate = 1.0;         ///< rad/s the field of view changes at
-  double initial_fov = 1.2;      ///< rad
+  std::vector<std::string> streams{ "main" };  ///< names of at most nameSizeOf(format) characters
+  std::uint8_t layout_mode = 4;                ///< 4: four user views in a 2x2 grid
+  double slew_rate = 1.0;                      ///< rad/s a view turns at
+  double acceleration = 4.0;                   ///< rad/s^2
+  double fov_rate = 1.0;                       ///< rad/s the field of view changes at
+  double initial_fov = 1.2;                    ///< rad
 };
 
 /// A message as it reached the emulator.
@@ -53,14 +53,16 @@ struct ReceivedMessage
  * \brief Behaves as DigiView does towards a PTZ client.
  *
  * Speaks one format (config.wire), cutting a TCP stream by its size. ACKNOWLEDGEMENT for accepted SETs (CAM_TARGETING
- * in directional mode, absolute or delta; CAM_OPTICS_AND_CONTROL), CURRENT_PARAMETERS for GETs (SYSTEM_STATUS,
- * VIDEO_OUTPUT, CAM_TARGETING, CAM_OPTICS_AND_CONTROL), periodic CURRENT_PARAMETERS for subscriptions (0.5:
- * GET_INTERVAL, answered by its reports only; 1.0, 1.1: a GET with interval_ms, answered at once too; at least 100 ms
- * subscribes, 0 cancels, a request with less is ignored), CHECKSUM_ERROR for a bad checksum, DATA_ERROR for data out of
- * range, UNKNOWN for types it does not know or model, FORBIDDEN for SETs while told to refuse, and QUIT closes the
- * connection. Requests about an unknown stream or camera are ignored, as the seed says. Every client is served at
- * once (a session per TCP connection or UDP peer). Its DevicePort owns the I/O thread; subscriptions are kept on
- * its tick.
+ * in directional mode, absolute or delta; CAM_OPTICS_AND_CONTROL; from 1.1 on SYSTEM_STATUS RUNNING or HALT, the only
+ * SET its documentation gives it), CURRENT_PARAMETERS for GETs (SYSTEM_STATUS, VIDEO_OUTPUT, CAM_TARGETING,
+ * CAM_OPTICS_AND_CONTROL), periodic CURRENT_PARAMETERS for subscriptions (0.5: GET_INTERVAL, answered by its reports
+ * only; from 1.0 on a GET with interval_ms, answered at once too; minIntervalOf(format) or more subscribes, 0 cancels,
+ * a request with less is ignored, or in 1.2 answered once), CHECKSUM_ERROR for a bad checksum, DATA_ERROR for data out
+ * of range, UNKNOWN for types it does not know or model, FORBIDDEN for SETs while told to refuse, and QUIT closes the
+ * connection. Requests about an unknown stream or camera are ignored, as the seed says. Halted (1.1 on), it reports
+ * SYSTEM_STATUS HALT and goes on answering and reporting, but its views stop and SETs of a view are acknowledged and
+ * not applied (nothing published says more; the emulator's choice). Every client is served at once (a session per TCP
+ * connection or UDP peer). Its DevicePort owns the I/O thread; subscriptions are kept on its tick.
  */
 class DigiViewEmulator : public EmulatorFaults
 {
@@ -85,6 +87,13 @@ public:
   }
   /// Refuse: every SET is answered FORBIDDEN.
   void setRefuse(bool refuse);
+  /// Halted (SYSTEM_STATUS HALT, formats 1.1 and 1.2; a client's SET SYSTEM_STATUS does the same): the views stop
+  /// where they are and SETs of a view do nothing until it runs again. Ignored in 0.5 and 1.0, which have no HALT.
+  void setHalted(bool halted);
+  bool halted() const
+  {
+    return halted_;
+  }
   /// Fault hooks of every view's motion model: a stalled axis accepts every command and silently stays where it is.
   void setFaults(const SimFaults& faults);
   /// Closes every TCP connection (the client sees the connection drop).
@@ -136,6 +145,7 @@ private:
   std::atomic<bool> endless_{ false };
   std::atomic<unsigned> flood_{ 1 };
   std::atomic<bool> refuse_{ false };
+  std::atomic<bool> halted_{ false };
 
   mutable std::mutex mutex_;  ///< guards the models and the session map (which only the I/O thread changes)
   mutable std::map<std::pair<std::string, std::uint8_t>, SimDeviceModel> models_;  ///< mutable: sampling

@@ -10,8 +10,8 @@ namespace digiview
 {
 using namespace detail;
 
-/// Where a format puts CAM_TARGETING's coordinates: 0.5 as its packer writes them (latitude twice), 1.0 and 1.1 in
-/// order.
+/// Where a format puts CAM_TARGETING's coordinates after the camera id (@b: the end of the name): 0.5 as its packer
+/// writes them (latitude twice), from 1.0 on in order.
 struct CoordinateOffsets
 {
   std::size_t latitude;
@@ -19,38 +19,46 @@ struct CoordinateOffsets
   std::size_t altitude;
 };
 
-CoordinateOffsets coordinatesOf(Format format)
+CoordinateOffsets coordinatesOf(Format format, std::size_t b)
 {
-  return format == Format::V0_5 ? CoordinateOffsets{ 28, 36, 40 } : CoordinateOffsets{ 28, 32, 36 };
+  return format == Format::V0_5 ? CoordinateOffsets{ b + 20, b + 28, b + 32 } :
+                                  CoordinateOffsets{ b + 20, b + 24, b + 28 };
 }
 
-/// 1.1 appends detection_id to CAM_TARGETING, after the altitude.
-constexpr std::size_t DETECTION_ID_OFFSET = 40;
+/// After the altitude: 1.1's detection_id, or 1.2's track_id, view_id and lock_target.
+constexpr std::size_t TARGETING_TAIL = 32;
 
-Message packTargeting(Format format, MessageType type, const CamTargeting& targeting)
+Message packTargeting(const Wire& wire, MessageType type, const CamTargeting& targeting)
 {
-  Message message = withPayload(format, type, ParamType::CAM_TARGETING);
-  Payload payload(message.data);
+  Message message = withPayload(wire, type, ParamType::CAM_TARGETING);
+  Payload payload(message);
+  const std::size_t b = payload.afterName();
   writeCamera(payload, targeting.camera);
-  payload.u8(9, targeting.targeting_mode);
-  payload.u8(10, targeting.euler_delta ? 1 : 0);
-  payload.scaled32(11, targeting.yaw, MILLI_SCALE);
-  payload.scaled32(15, targeting.pitch, MILLI_SCALE);
-  payload.scaled32(19, targeting.roll, MILLI_SCALE);
-  payload.u8(23, targeting.lock_flags);
-  payload.scaled16(24, targeting.x_offset);
-  payload.scaled16(26, targeting.y_offset);
-  const CoordinateOffsets at = coordinatesOf(format);
-  if (format == Format::V0_5)
+  payload.u8(b + 1, targeting.targeting_mode);
+  payload.u8(b + 2, targeting.euler_delta ? 1 : 0);
+  payload.angle(b + 3, targeting.yaw);
+  payload.angle(b + 7, targeting.pitch);
+  payload.angle(b + 11, targeting.roll);
+  payload.u8(b + 15, targeting.lock_flags);
+  payload.scaled16(b + 16, targeting.x_offset);
+  payload.scaled16(b + 18, targeting.y_offset);
+  const CoordinateOffsets at = coordinatesOf(wire.format, b);
+  if (wire.format == Format::V0_5)
   {
-    payload.scaled32(32, targeting.target_latitude, MILLI_SCALE);  // the 0.5 packer writes it twice
+    payload.scaled32(b + 24, targeting.target_latitude, MILLI_SCALE);  // the 0.5 packer writes it twice
   }
   payload.scaled32(at.latitude, targeting.target_latitude, MILLI_SCALE);
   payload.scaled32(at.longitude, targeting.target_longitude, MILLI_SCALE);
   payload.scaled32(at.altitude, targeting.target_altitude, MILLI_SCALE);
-  if (format == Format::V1_1)
+  if (wire.format == Format::V1_1)
   {
-    payload.u16(DETECTION_ID_OFFSET, static_cast<std::uint16_t>(targeting.detection_id));
+    payload.u16(b + TARGETING_TAIL, static_cast<std::uint16_t>(targeting.detection_id));
+  }
+  else if (wire.format == Format::V1_2)
+  {
+    payload.u16(b + TARGETING_TAIL, targeting.track_id);
+    payload.u16(b + TARGETING_TAIL + 2, static_cast<std::uint16_t>(targeting.view_id));
+    payload.u8(b + TARGETING_TAIL + 4, targeting.lock_target ? 1 : 0);
   }
   return message;
 }
@@ -62,32 +70,36 @@ UnpackError unpackTargeting(const Message& message, CamTargeting& targeting)
   {
     return UnpackError::BAD_DATA;
   }
-  const Reader reader(message.data);
-  const std::int32_t yaw = reader.i32(11);
-  const std::int32_t pitch = reader.i32(15);
-  const std::int32_t roll = reader.i32(19);
-  const std::int16_t x_offset = reader.i16(24);
-  const std::int16_t y_offset = reader.i16(26);
-  const CoordinateOffsets at = coordinatesOf(message.format);
+  const Reader reader(message);
+  const std::size_t b = reader.afterName();
+  const std::int32_t yaw = reader.i32(b + 3);
+  const std::int32_t pitch = reader.i32(b + 7);
+  const std::int32_t roll = reader.i32(b + 11);
+  const std::int16_t x_offset = reader.i16(b + 16);
+  const std::int16_t y_offset = reader.i16(b + 18);
+  const CoordinateOffsets at = coordinatesOf(message.format, b);
   const std::int32_t latitude = reader.i32(at.latitude);
   const std::int32_t longitude = reader.i32(at.longitude);
   const std::int32_t altitude = reader.i32(at.altitude);
+  const AngleLimits limits = reader.angleLimits();
+  const bool v1_2 = message.format == Format::V1_2;
   CamTargeting read;
-  const bool valid = readCamera(reader, read.camera) && reader.u8(9) <= 3 && reader.u8(10) <= 1 &&
-                     within(yaw, -MAX_YAW, MAX_YAW) && within(pitch, -MAX_PITCH, MAX_PITCH) &&
-                     within(roll, -MAX_PITCH, MAX_PITCH) && reader.u8(23) <= 7 && x_offset >= -32767 &&
-                     y_offset >= -32767 && within(latitude, -90000, 90000) && within(longitude, -180000, 179999) &&
-                     within(altitude, -1000000, 10000000);
+  const bool valid =
+      readCamera(reader, read.camera) && reader.u8(b + 1) <= 3 && reader.u8(b + 2) <= 1 &&
+      within(yaw, -limits.half_turn, limits.half_turn) && within(pitch, -limits.quarter_turn, limits.quarter_turn) &&
+      within(roll, -limits.quarter_turn, limits.quarter_turn) && reader.u8(b + 15) <= 7 && x_offset >= -32767 &&
+      y_offset >= -32767 && within(latitude, -90000, 90000) && within(longitude, -180000, 179999) &&
+      within(altitude, -1000000, 10000000) && (!v1_2 || reader.u8(b + TARGETING_TAIL + 4) <= 1);
   if (!valid)
   {
     return UnpackError::BAD_DATA;
   }
-  read.targeting_mode = reader.u8(9);
-  read.euler_delta = reader.u8(10) != 0;
-  read.yaw = unscaled(yaw, MILLI_SCALE);
-  read.pitch = unscaled(pitch, MILLI_SCALE);
-  read.roll = unscaled(roll, MILLI_SCALE);
-  read.lock_flags = reader.u8(23);
+  read.targeting_mode = reader.u8(b + 1);
+  read.euler_delta = reader.u8(b + 2) != 0;
+  read.yaw = reader.radians(yaw);
+  read.pitch = reader.radians(pitch);
+  read.roll = reader.radians(roll);
+  read.lock_flags = reader.u8(b + 15);
   read.x_offset = unscaled(x_offset, OFFSET_SCALE);
   read.y_offset = unscaled(y_offset, OFFSET_SCALE);
   read.target_latitude = unscaled(latitude, MILLI_SCALE);
@@ -95,20 +107,30 @@ UnpackError unpackTargeting(const Message& message, CamTargeting& targeting)
   read.target_altitude = unscaled(altitude, MILLI_SCALE);
   if (message.format == Format::V1_1)
   {
-    read.detection_id = reader.i16(DETECTION_ID_OFFSET);  // any value: DigiView judges it in detection mode
+    read.detection_id = reader.i16(b + TARGETING_TAIL);  // any value: DigiView judges it in detection mode
+  }
+  else if (v1_2)
+  {
+    read.track_id = reader.u16(b + TARGETING_TAIL);
+    read.view_id = reader.i16(b + TARGETING_TAIL + 2);
+    read.lock_target = reader.u8(b + TARGETING_TAIL + 4) != 0;
   }
   targeting = read;
   return UnpackError::NONE;
 }
 
-Message packOptics(Format format, MessageType type, const CamOpticsAndControl& optics)
+Message packOptics(const Wire& wire, MessageType type, const CamOpticsAndControl& optics)
 {
-  Message message = withPayload(format, type, ParamType::CAM_OPTICS_AND_CONTROL);
-  Payload payload(message.data);
+  Message message = withPayload(wire, type, ParamType::CAM_OPTICS_AND_CONTROL);
+  Payload payload(message);
+  const std::size_t b = payload.afterName();
   writeCamera(payload, optics.camera);
-  payload.u8(9, static_cast<std::uint8_t>(optics.zoom));
-  payload.scaled32(10, optics.fov, MILLI_SCALE);
-  payload.u8(14, optics.crop_mode);
+  payload.u8(b + 1, static_cast<std::uint8_t>(optics.zoom));
+  payload.angle(b + 2, optics.fov);
+  if (wire.format != Format::V1_2)  // 1.2 has no crop_mode
+  {
+    payload.u8(b + 6, optics.crop_mode);
+  }
   return message;
 }
 
@@ -119,25 +141,31 @@ UnpackError unpackOptics(const Message& message, CamOpticsAndControl& optics)
   {
     return UnpackError::BAD_DATA;
   }
-  const Reader reader(message.data);
+  const Reader reader(message);
+  const std::size_t b = reader.afterName();
+  const bool has_crop = message.format != Format::V1_2;
   CamOpticsAndControl read;
-  const auto zoom = static_cast<std::int8_t>(reader.u8(9));
-  const std::int32_t fov = reader.i32(10);
-  if (!readCamera(reader, read.camera) || zoom == -128 || !within(fov, 0, MAX_YAW) || reader.u8(14) > 2)
+  const auto zoom = static_cast<std::int8_t>(reader.u8(b + 1));
+  const std::int32_t fov = reader.i32(b + 2);
+  if (!readCamera(reader, read.camera) || zoom == -128 || !within(fov, 0, reader.angleLimits().half_turn) ||
+      (has_crop && reader.u8(b + 6) > 2))
   {
     return UnpackError::BAD_DATA;
   }
   read.zoom = zoom;
-  read.fov = unscaled(fov, MILLI_SCALE);
-  read.crop_mode = reader.u8(14);
+  read.fov = reader.radians(fov);
+  if (has_crop)
+  {
+    read.crop_mode = reader.u8(b + 6);
+  }
   optics = read;
   return UnpackError::NONE;
 }
 
-Message packSystemStatus(Format format, MessageType type, const SystemStatus& status)
+Message packSystemStatus(const Wire& wire, MessageType type, const SystemStatus& status)
 {
-  Message message = withPayload(format, type, ParamType::SYSTEM_STATUS);
-  Payload payload(message.data);
+  Message message = withPayload(wire, type, ParamType::SYSTEM_STATUS);
+  Payload payload(message);
   payload.u8(0, status.status);
   payload.u8(1, status.error);
   payload.scaled32(2, status.jetson_temp, MILLI_SCALE);
@@ -151,9 +179,12 @@ UnpackError unpackSystemStatus(const Message& message, SystemStatus& status)
   {
     return UnpackError::BAD_DATA;
   }
-  const Reader reader(message.data);
+  const Reader reader(message);
   const std::int32_t temperature = reader.i32(2);
-  if (reader.u8(0) > 3 || reader.u8(1) != 0 || !within(temperature, 0, 105000))
+  // The seed's status 0..3 and error "always 0" before 1.1; app_status 0..4 (HALT) and any error from 1.1 on.
+  const bool app_status = hasAppStatus(message.format);
+  if (reader.u8(0) > (app_status ? APP_STATUS_HALT : 3) || (!app_status && reader.u8(1) != 0) ||
+      !within(temperature, 0, 105000))
   {
     return UnpackError::BAD_DATA;
   }
@@ -163,26 +194,27 @@ UnpackError unpackSystemStatus(const Message& message, SystemStatus& status)
   return UnpackError::NONE;
 }
 
-Message packVideoOutput(Format format, MessageType type, const VideoOutput& output)
+Message packVideoOutput(const Wire& wire, MessageType type, const VideoOutput& output)
 {
-  Message message = withPayload(format, type, ParamType::VIDEO_OUTPUT);
-  Payload payload(message.data);
+  Message message = withPayload(wire, type, ParamType::VIDEO_OUTPUT);
+  Payload payload(message);
+  const std::size_t b = payload.afterName();
   payload.name(0, output.stream_name);
-  payload.u16(8, output.width);
-  payload.u16(10, output.height);
-  payload.u8(12, output.fps);
-  payload.u8(13, output.layout_mode);
-  payload.u8(14, output.detection_overlay_mode);
+  payload.u16(b, output.width);
+  payload.u16(b + 2, output.height);
+  payload.u8(b + 4, output.fps);
+  payload.u8(b + 5, output.layout_mode);
+  payload.u8(b + 6, output.detection_overlay_mode);
   // As the published helpers: a SET carries no views; otherwise num_user_views (at most 4), then that many boxes.
   const std::size_t views =
       type == MessageType::SET_PARAMETERS ? 0 : std::min<std::size_t>(output.num_user_views, output.views.size());
-  payload.u8(15, static_cast<std::uint8_t>(views));
+  payload.u8(b + 7, static_cast<std::uint8_t>(views));
   for (std::size_t index = 0; index < views; ++index)
   {
-    payload.box(16 + 8 * index, output.views[index]);
+    payload.box(b + 8 + 8 * index, output.views[index]);
   }
-  payload.box(16 + 8 * views, output.detection_overlay_box);
-  payload.u16(24 + 8 * views, output.single_detection_size);
+  payload.box(b + 8 + 8 * views, output.detection_overlay_box);
+  payload.u16(b + 16 + 8 * views, output.single_detection_size);
   return message;
 }
 
@@ -193,13 +225,14 @@ UnpackError unpackVideoOutput(const Message& message, VideoOutput& output)
   {
     return UnpackError::BAD_DATA;
   }
-  const Reader reader(message.data);
+  const Reader reader(message);
+  const std::size_t b = reader.afterName();
   VideoOutput read;
-  read.width = reader.u16(8);
-  read.height = reader.u16(10);
-  read.layout_mode = reader.u8(13);
-  read.detection_overlay_mode = reader.u8(14);
-  read.num_user_views = reader.u8(15);
+  read.width = reader.u16(b);
+  read.height = reader.u16(b + 2);
+  read.layout_mode = reader.u8(b + 5);
+  read.detection_overlay_mode = reader.u8(b + 6);
+  read.num_user_views = reader.u8(b + 7);
   const bool valid = reader.name(0, read.stream_name) && within(read.width, 640, 1920) &&
                      within(read.height, 480, 1080) && read.layout_mode <= 6 && read.detection_overlay_mode <= 5 &&
                      read.num_user_views <= read.views.size();
@@ -207,22 +240,22 @@ UnpackError unpackVideoOutput(const Message& message, VideoOutput& output)
   {
     return UnpackError::BAD_DATA;
   }
-  read.fps = reader.u8(12);
+  read.fps = reader.u8(b + 4);
   const std::size_t views = read.num_user_views;
   for (std::size_t index = 0; index < views; ++index)
   {
-    read.views[index] = reader.box(16 + 8 * index);
+    read.views[index] = reader.box(b + 8 + 8 * index);
   }
-  read.detection_overlay_box = reader.box(16 + 8 * views);
-  read.single_detection_size = reader.u16(24 + 8 * views);
+  read.detection_overlay_box = reader.box(b + 8 + 8 * views);
+  read.single_detection_size = reader.u16(b + 16 + 8 * views);
   output = read;
   return UnpackError::NONE;
 }
 
-Message packGet(Format format, ParamType param, const CameraId& camera)
+Message packGet(const Wire& wire, ParamType param, const CameraId& camera)
 {
-  Message message = withPayload(format, MessageType::GET_PARAMETERS, param);
-  Payload payload(message.data);
+  Message message = withPayload(wire, MessageType::GET_PARAMETERS, param);
+  Payload payload(message);
   writeCamera(payload, camera);
   return message;
 }
@@ -230,7 +263,7 @@ Message packGet(Format format, ParamType param, const CameraId& camera)
 UnpackError unpackCamera(const Message& message, CameraId& camera)
 {
   camera = CameraId();
-  const Reader reader(message.data);
+  const Reader reader(message);
   CameraId read;
   if (!readCamera(reader, read))
   {
@@ -240,16 +273,16 @@ UnpackError unpackCamera(const Message& message, CameraId& camera)
   return UnpackError::NONE;
 }
 
-Message packInterval(Format format, const IntervalRequest& request)
+Message packInterval(const Wire& wire, const IntervalRequest& request)
 {
-  if (subscribesWithGet(format))
+  if (subscribesWithGet(wire.format))
   {
-    Message message = packGet(format, request.param, request.camera);
+    Message message = packGet(wire, request.param, request.camera);
     message.interval_ms = request.interval_ms;
     return message;
   }
-  Message message = withPayload(format, MessageType::GET_INTERVAL, request.param);
-  Payload payload(message.data);
+  Message message = withPayload(wire, MessageType::GET_INTERVAL, request.param);
+  Payload payload(message);
   writeCamera(payload, request.camera);
   payload.u32(12, request.interval_ms);
   return message;
@@ -261,7 +294,7 @@ UnpackError unpackInterval(const Message& message, IntervalRequest& request)
   const bool get_interval = message.message_type == MessageType::GET_INTERVAL;  // only 0.5 has one
   const bool get_with_interval =
       subscribesWithGet(message.format) && message.message_type == MessageType::GET_PARAMETERS;
-  const Reader reader(message.data);
+  const Reader reader(message);
   IntervalRequest read;
   if (!(get_interval || get_with_interval) || !readCamera(reader, read.camera))
   {
@@ -273,9 +306,35 @@ UnpackError unpackInterval(const Message& message, IntervalRequest& request)
   return UnpackError::NONE;
 }
 
-Message packBare(Format format, MessageType type, ParamType param)
+Message packBare(const Wire& wire, MessageType type, ParamType param)
 {
-  return withPayload(format, type, param);
+  return withPayload(wire, type, param);
+}
+
+Message packDebug(const Wire& wire, const DebugValues& values)
+{
+  Message message = withPayload(wire, MessageType::DEBUG, ParamType::SYSTEM_STATUS);
+  Payload payload(message);
+  for (std::size_t index = 0; index < values.size(); ++index)
+  {
+    payload.u32(4 * index, static_cast<std::uint32_t>(values[index]));
+  }
+  return message;
+}
+
+UnpackError unpackDebug(const Message& message, DebugValues& values)
+{
+  values = DebugValues{};
+  if (message.message_type != MessageType::DEBUG)
+  {
+    return UnpackError::BAD_DATA;
+  }
+  const Reader reader(message);
+  for (std::size_t index = 0; index < values.size(); ++index)
+  {
+    values[index] = reader.i32(4 * index);
+  }
+  return UnpackError::NONE;
 }
 
 }  // namespace digiview

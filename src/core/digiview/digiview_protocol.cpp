@@ -1,8 +1,14 @@
+/**
+ * \file
+ * \brief What DigiView says to the digiview backend (half of DigiViewProtocol; digiview_aiming.cpp is what goals
+ * send): subscriptions, the stream cut into messages, states, SYSTEM_STATUS and HALT, answers to SETs, diagnostics.
+ */
 #include "ptz_action_server/core/digiview/digiview_protocol.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <vector>
 
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
@@ -13,8 +19,8 @@ namespace
 {
 using namespace digiview;
 
-constexpr double NARROWEST_FOV = 0.1;  ///< rad, DigiView's smallest field of view
-constexpr std::uint32_t STATE_INTERVAL_MS = MIN_INTERVAL_MS;
+constexpr double NARROWEST_FOV = 0.1;             ///< rad, DigiView's smallest field of view
+constexpr std::uint32_t STATE_INTERVAL_MS = 100;  ///< every format takes it (1.2's minimum is 50 ms)
 constexpr std::size_t MAX_PENDING_SETS = 64;
 constexpr std::size_t MAX_BAD_IN_A_ROW = 3;  ///< stream: bad messages in a row that reopen the connection
 constexpr double ZOOM_RATE = 2.0;            ///< X/s of velocity goals on zoom
@@ -26,24 +32,35 @@ bool sameCamera(const CameraId& a, const CameraId& b)
   return a.stream_name == b.stream_name && a.cam_id == b.cam_id;
 }
 
-/// The formats whose messages are \p size bytes, for messages: "0.5", "1.0 or 1.1".
-std::string formatsOfSize(std::size_t size)
+/// What is subscribed: the view's state, and from 1.1 on SYSTEM_STATUS (which can say HALT).
+std::vector<ParamType> subscribedParams(Format format)
 {
-  std::string names;
-  for (Format format : FORMATS)
+  std::vector<ParamType> params{ ParamType::CAM_TARGETING, ParamType::CAM_OPTICS_AND_CONTROL };
+  if (hasAppStatus(format))
   {
-    if (layoutOf(format).size == size)
-    {
-      names += (names.empty() ? "" : " or ") + std::string(toString(format));
-    }
+    params.push_back(ParamType::SYSTEM_STATUS);
   }
-  return names;
+  return params;
 }
+
 }  // namespace
 
 double DigiViewSettings::zoomMax() const
 {
   return zoom_max > 0.0 ? zoom_max : fov_wide / NARROWEST_FOV;
+}
+
+std::string DigiViewSettings::angleUnitNotice(Format format, const std::string& setting)
+{
+  if (format != Format::V1_1)
+  {
+    return "";
+  }
+  return formatText("format \"1.1\" without %s is deprecated: 1.1 now sends angles and fov in degrees, as its own "
+                    "documentation (docs.md at 305a8ab) gives them, where this package sent radians before; set %s to "
+                    "\"degrees\" to keep this, or to \"radians\" for a DigiView that takes radians "
+                    "(doc/backends/digiview.md)",
+                    setting.c_str(), setting.c_str());
 }
 
 DigiViewProtocol::DigiViewProtocol(const DigiViewSettings& settings, DeviceSession& session)
@@ -79,6 +96,7 @@ void DigiViewProtocol::onConnected()
   described_ = false;
   targeted_ = false;
   understood_ = false;
+  halted_ = false;  // learnt again from this connection's SYSTEM_STATUS
   buffered_ = 0;
   bad_in_a_row_ = 0;
   opening_size_ = 0;
@@ -89,16 +107,19 @@ void DigiViewProtocol::onConnected()
 void DigiViewProtocol::subscribe()
 {
   heard_at_ = subscribed_at_ = session_.now();
-  const Format format = settings_.wire.format;
-  send(packGet(format, ParamType::VIDEO_OUTPUT, settings_.camera()));
-  send(packGet(format, ParamType::SYSTEM_STATUS, settings_.camera()));
-  for (ParamType param : { ParamType::CAM_TARGETING, ParamType::CAM_OPTICS_AND_CONTROL })
+  const Wire& wire = settings_.wire;
+  send(packGet(wire, ParamType::VIDEO_OUTPUT, settings_.camera()));
+  if (!hasAppStatus(wire.format))
   {
-    if (format == Format::V0_5)
+    send(packGet(wire, ParamType::SYSTEM_STATUS, settings_.camera()));  // once: it cannot say HALT
+  }
+  for (ParamType param : subscribedParams(wire.format))
+  {
+    if (!subscribesWithGet(wire.format))
     {
-      send(packGet(format, param, settings_.camera()));  // a 0.5 GET_INTERVAL is answered only by its reports
+      send(packGet(wire, param, settings_.camera()));  // a 0.5 GET_INTERVAL is answered only by its reports
     }
-    send(packInterval(format, IntervalRequest{ param, settings_.camera(), STATE_INTERVAL_MS }));
+    send(packInterval(wire, IntervalRequest{ param, settings_.camera(), STATE_INTERVAL_MS }));
   }
 }
 
@@ -200,7 +221,7 @@ void DigiViewProtocol::handle(const std::uint8_t* bytes, std::size_t size)
 
 void DigiViewProtocol::checkOtherFormat(const std::uint8_t* bytes, std::size_t size)
 {
-  // A datagram is one message. On a stream, the connection's first bytes must be two messages of the other size (one
+  // A datagram is one message. On a stream, the connection's first bytes must be two messages of another size (one
   // could verify by chance). Formats of the same size (1.0, 1.1) read each other: nothing to tell.
   const bool datagrams = session_.carriesDatagrams();
   for (Format other : FORMATS)
@@ -222,8 +243,7 @@ void DigiViewProtocol::checkOtherFormat(const std::uint8_t* bytes, std::size_t s
     for (std::size_t at = 0; at < needed && understood; at += other_size)
     {
       Message probe;
-      understood =
-          Message::unpack(first + at, other_size, Wire{ other, ChecksumRule::REQUIRED }, probe) == UnpackError::NONE;
+      understood = Message::unpack(first + at, other_size, Wire(other), probe) == UnpackError::NONE;
     }
     if (understood)
     {
@@ -254,11 +274,7 @@ void DigiViewProtocol::handleState(const Message& message)
   }
   else if (message.param_type == ParamType::SYSTEM_STATUS)
   {
-    SystemStatus status;
-    if (unpackSystemStatus(message, status) == UnpackError::NONE)
-    {
-      system_status_ = status.status;
-    }
+    handleStatus(message);
     return;
   }
   else if (message.param_type == ParamType::CAM_TARGETING)
@@ -290,6 +306,40 @@ void DigiViewProtocol::handleState(const Message& message)
   if (described_ && targeted_)
   {
     session_.ready();
+  }
+}
+
+void DigiViewProtocol::handleStatus(const Message& message)
+{
+  SystemStatus status;
+  if (unpackSystemStatus(message, status) != UnpackError::NONE)
+  {
+    return;
+  }
+  system_status_ = status.status;
+  setHalted(hasAppStatus(settings_.wire.format) && status.status == APP_STATUS_HALT);
+  if (halted_)
+  {
+    // A halted DigiView answers, whether or not it still reports a view that does not move: the link is there.
+    session_.reportAlive();
+  }
+}
+
+void DigiViewProtocol::setHalted(bool halted)
+{
+  if (halted == halted_)
+  {
+    return;
+  }
+  halted_ = halted;
+  if (halted)
+  {
+    velocity_timer_.cancel();
+    const std::string text = formatText("%s is halted (SYSTEM_STATUS HALT): its views do not turn until DigiView is "
+                                        "set running again; goals are refused meanwhile",
+                                        deviceName().c_str());
+    session_.warn(text);
+    session_.reportFault(text, session_.currentCommand());  // the goal in flight, if any, ends
   }
 }
 
@@ -335,86 +385,6 @@ void DigiViewProtocol::send(const Message& message)
   session_.write(bytes.data(), bytes.size());
 }
 
-void DigiViewProtocol::sendTargets(const AxisValues& target)
-{
-  CamTargeting targeting;
-  targeting.camera = settings_.camera();
-  targeting.targeting_mode = 0;  // directional
-  targeting.yaw = target[PAN];
-  targeting.pitch = target[TILT];
-  targeting.lock_flags = settings_.lock_flags;
-  send(packTargeting(settings_.wire.format, MessageType::SET_PARAMETERS, targeting));
-  CamOpticsAndControl optics;
-  optics.camera = settings_.camera();
-  optics.fov = settings_.fov_wide / std::clamp(target[ZOOM], 1.0, settings_.zoomMax());
-  optics.crop_mode = settings_.crop_mode;
-  send(packOptics(settings_.wire.format, MessageType::SET_PARAMETERS, optics));
-}
-
-void DigiViewProtocol::goTo(const AxisValues& position)
-{
-  velocity_timer_.cancel();
-  sendTargets(position);
-}
-
-void DigiViewProtocol::moveAtVelocity(const AxisValues& velocity)
-{
-  if (std::all_of(velocity.begin(), velocity.end(), [](double value) { return value == 0.0; }))
-  {
-    stop();
-    return;
-  }
-  velocity_origin_ = session_.estimate().position;
-  velocity_ = velocity;
-  velocity_started_ = session_.now();
-  velocity_timer_.cancel();
-  velocityTick();
-}
-
-void DigiViewProtocol::velocityTick()
-{
-  // DigiView has no velocity command: the target moves on from where the view was, at the asked rate.
-  const double elapsed = secondsBetween(velocity_started_, session_.now());
-  const Capabilities limits = capabilities();
-  AxisValues target{};
-  for (Axis axis : ALL_AXES)
-  {
-    const AxisRange& range = limits.axes[axis].range;
-    target[axis] = std::clamp(velocity_origin_[axis] + velocity_[axis] * elapsed, range.min, range.max);
-  }
-  sendTargets(target);
-  velocity_timer_.expires_after(toDuration(settings_.velocity_period));
-  velocity_timer_.async_wait([this](const boost::system::error_code& error) {
-    if (!error && !session_.closing())
-    {
-      velocityTick();
-    }
-  });
-}
-
-void DigiViewProtocol::stop()
-{
-  velocity_timer_.cancel();
-  // Hold where the view would come to rest: where it is, plus its braking distance if the turn decelerates.
-  const PtzSample now = session_.estimate();
-  AxisValues hold = now.position;
-  if (settings_.acceleration > 0.0)
-  {
-    for (Axis axis : { PAN, TILT })
-    {
-      hold[axis] += now.velocity[axis] * std::abs(now.velocity[axis]) / (2.0 * settings_.acceleration);
-    }
-  }
-  sendTargets(hold);
-}
-
-void DigiViewProtocol::hold()
-{
-  // Back after a loss: whatever DigiView still does belongs to a goal that has ended. Hold the view where it is.
-  velocity_timer_.cancel();
-  sendTargets(session_.estimate().position);
-}
-
 void DigiViewProtocol::onClosing()
 {
   velocity_timer_.cancel();
@@ -423,20 +393,23 @@ void DigiViewProtocol::onClosing()
 void DigiViewProtocol::shutdown()
 {
   velocity_timer_.cancel();
-  for (ParamType param : { ParamType::CAM_TARGETING, ParamType::CAM_OPTICS_AND_CONTROL })
+  for (ParamType param : subscribedParams(settings_.wire.format))
   {
-    send(packInterval(settings_.wire.format, IntervalRequest{ param, settings_.camera(), 0 }));
+    send(packInterval(settings_.wire, IntervalRequest{ param, settings_.camera(), 0 }));
   }
-  send(packBare(settings_.wire.format, MessageType::QUIT, ParamType::SYSTEM_STATUS));
+  send(packBare(settings_.wire, MessageType::QUIT, ParamType::SYSTEM_STATUS));
 }
 
 void DigiViewProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   values.emplace_back("view", formatText("stream '%s' camera %u of %u", settings_.stream_name.c_str(), settings_.cam_id,
                                          num_user_views_.load()));
-  values.emplace_back("format", formatText("%s (%zu-byte messages), checksum %s", toString(settings_.wire.format),
-                                           message_size_, toString(settings_.wire.checksum)));
-  values.emplace_back("system status", std::to_string(system_status_.load()));
+  values.emplace_back("format",
+                      formatText("%s (%zu-byte messages), angles in %s, checksum %s", toString(settings_.wire.format),
+                                 message_size_, toString(settings_.wire.angles), toString(settings_.wire.checksum)));
+  const std::uint8_t status = system_status_;
+  values.emplace_back("system status", formatText("%u (%s)%s", status, describeStatus(settings_.wire.format, status),
+                                                  halted_ ? ": goals refused until it runs again" : ""));
   addCounts(values, { { "messages", counters_.messages },
                       { "states", counters_.states },
                       { "acknowledged", counters_.acknowledged },

@@ -1,6 +1,6 @@
 /**
  * \file
- * \brief digiview_emulator: a DigiView emulator (message format 0.5, 1.0 or 1.1) with virtual views that slew.
+ * \brief digiview_emulator: a DigiView emulator (message format 0.5, 1.0, 1.1 or 1.2) with virtual views that slew.
  */
 #include <cstdio>
 #include <string>
@@ -14,23 +14,27 @@ const char* PROGRAM = "digiview_emulator";
 const char* USAGE = R"(usage: digiview_emulator [options]
 
 Answers as DigiView does (CRC-8/BLUETOOTH over the bytes before the checksum): ACKNOWLEDGEMENT for SET
-CAM_TARGETING and CAM_OPTICS_AND_CONTROL, CURRENT_PARAMETERS for GETs and subscriptions (>= 100 ms, 0 cancels;
-format 0.5: GET_INTERVAL, 1.0 and 1.1: a GET with interval_ms), CHECKSUM_ERROR, DATA_ERROR, UNKNOWN, FORBIDDEN when
-told to refuse; QUIT closes the connection.
+CAM_TARGETING and CAM_OPTICS_AND_CONTROL (and SYSTEM_STATUS RUNNING / HALT from 1.1 on), CURRENT_PARAMETERS for GETs
+and subscriptions (>= 100 ms, 1.2: >= 50 ms; 0 cancels; format 0.5: GET_INTERVAL, later a GET with interval_ms),
+CHECKSUM_ERROR, DATA_ERROR, UNKNOWN, FORBIDDEN when told to refuse; QUIT closes the connection.
 
 Options:
   --host HOST            address to listen on (default 127.0.0.1)
   --port PORT            port (default 5500; 0 = any free port)
   --transport tcp|udp    default tcp
-  --format 0.5|1.0|1.1   the message format (msg_defs.hpp revision): 0.5 (80 bytes, 72c80d2; default), 1.0 (88 bytes,
-                         interval_ms in the header; 835b28e) or 1.1 (1.0 with CAM_TARGETING's detection_id; 305a8ab)
+  --format F             the message format (msg_defs.hpp revision): 0.5 (80 bytes, 72c80d2; default), 1.0 (88 bytes,
+                         interval_ms in the header; 835b28e), 1.1 (1.0 with CAM_TARGETING's detection_id; 305a8ab)
+                         or 1.2 (96 bytes, 16-character streams, CAM_TARGETING 13; 1cbc39f)
+  --angle-unit U         radians or degrees: the unit of angles and fov on the wire (default: the format's
+                         documentation's, radians for 0.5 and 1.0, degrees for 1.1 and 1.2)
   --checksum RULE        required (default) or zero_accepted: a client's checksum byte of 0 is taken unverified
   --unfilled-checksum    send a checksum byte of 0, as a DigiView built on the published helpers (they never fill it)
-  --stream NAME          a stream name (default main; repeat for more streams)
+  --stream NAME          a stream name (default main; repeat for more streams; 1.2: up to 16 characters)
   --layout N             layout mode 0..6 (default 4: four user views)
   --rate R               rad/s a view turns at (default 1.0)
   --acceleration A       rad/s^2 (default 4.0)
   --refuse               answer every SET with FORBIDDEN
+  --halted               start halted (1.1, 1.2: SYSTEM_STATUS HALT, views do not move until a client sets RUNNING)
   --silent               start silent: read and ignore everything, send nothing
   --silent-after S       fall silent S seconds after start
 Signals: SIGUSR1 toggles silence, SIGUSR2 drops every connection; SIGINT / SIGTERM end the program.
@@ -45,6 +49,8 @@ int main(int argc, char** argv)
   config.streams.clear();
   bool silent = false;
   bool refuse = false;
+  bool halted = false;
+  std::string angle_unit;
   emulator_main::Schedule schedule;
   emulator_main::parseArguments(
       argc, argv, PROGRAM, USAGE, [&](const std::string& arg, const emulator_main::Value& value) {
@@ -62,7 +68,11 @@ int main(int argc, char** argv)
         else if (arg == "--format")
         {
           ptz_action_server::digiview::parseFormat(
-              emulator_main::choice(PROGRAM, value(), arg, { "0.5", "1.0", "1.1" }, USAGE), config.wire.format);
+              emulator_main::choice(PROGRAM, value(), arg, { "0.5", "1.0", "1.1", "1.2" }, USAGE), config.wire.format);
+        }
+        else if (arg == "--angle-unit")
+        {
+          angle_unit = emulator_main::choice(PROGRAM, value(), arg, { "radians", "degrees" }, USAGE);
         }
         else if (arg == "--checksum")
         {
@@ -77,9 +87,9 @@ int main(int argc, char** argv)
         else if (arg == "--stream")
         {
           const std::string name = value();
-          if (name.empty() || name.size() > 8)
+          if (name.empty() || name.size() > ptz_action_server::digiview::MAX_NAME_SIZE)
           {
-            emulator_main::fail(PROGRAM, "--stream takes 1 to 8 characters", USAGE);
+            emulator_main::fail(PROGRAM, "--stream takes 1 to 16 characters", USAGE);
           }
           config.streams.push_back(name);
         }
@@ -99,15 +109,32 @@ int main(int argc, char** argv)
         {
           refuse = true;
         }
+        else if (arg == "--halted")
+        {
+          halted = true;
+        }
         else if (!emulator_main::parseFaultOption(arg, value, PROGRAM, USAGE, silent, schedule))
         {
           return false;
         }
         return true;
       });
+  namespace digiview = ptz_action_server::digiview;
   if (config.streams.empty())
   {
     config.streams.push_back("main");
+  }
+  for (const std::string& name : config.streams)
+  {
+    if (name.size() > digiview::nameSizeOf(config.wire.format))
+    {
+      emulator_main::fail(PROGRAM, "--stream takes 1 to 8 characters before format 1.2", USAGE);
+    }
+  }
+  config.wire.angles = digiview::documentedAngleUnit(config.wire.format);
+  if (!angle_unit.empty())
+  {
+    digiview::parseAngleUnit(angle_unit, config.wire.angles);
   }
 
   const sigset_t signals = emulator_main::blockSignals();
@@ -116,12 +143,14 @@ int main(int argc, char** argv)
     ptz_action_server::DigiViewEmulator device(config);
     device.setSilent(silent);
     device.setRefuse(refuse);
-    namespace digiview = ptz_action_server::digiview;
-    std::printf("%s: listening on %s:%u (%s), format %s (%zu-byte messages, checksum %s%s), stream %s, layout %u%s\n",
+    device.setHalted(halted);
+    std::printf("%s: listening on %s:%u (%s), format %s (%zu-byte messages, angles in %s, checksum %s%s), stream %s, "
+                "layout %u%s%s\n",
                 PROGRAM, config.host.c_str(), device.port(), ptz_action_server::toString(config.transport),
                 digiview::toString(config.wire.format), digiview::layoutOf(config.wire.format).size,
-                digiview::toString(config.wire.checksum), config.fill_checksum ? "" : ", sent unfilled",
-                config.streams.front().c_str(), config.layout_mode, refuse ? ", refusing SETs" : "");
+                digiview::toString(config.wire.angles), digiview::toString(config.wire.checksum),
+                config.fill_checksum ? "" : ", sent unfilled", config.streams.front().c_str(), config.layout_mode,
+                refuse ? ", refusing SETs" : "", device.halted() ? ", halted" : "");
     std::fflush(stdout);
     emulator_main::Hooks hooks;
     hooks.set_silent = [&device](bool value) { device.setSilent(value); };

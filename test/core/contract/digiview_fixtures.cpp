@@ -14,7 +14,7 @@ namespace
 {
 using Kind = DeviceCommand::Kind;
 
-// ---------------------------------------------------------------- DigiView: TCP and UDP, formats 0.5 and 1.0
+// ---------------------------------------------------------------- DigiView: TCP and UDP, every format
 
 class DigiViewFixture : public DeviceFixture
 {
@@ -22,12 +22,12 @@ public:
   DigiViewFixture(LinkKind transport, digiview::Format format)
   {
     emulator_config_.transport = transport;
-    emulator_config_.wire.format = format;
+    emulator_config_.wire = digiview::Wire(format);  // the format's documented angle unit, as the backend's
     emulator_ = std::make_unique<DigiViewEmulator>(emulator_config_);
     emulator_config_.port = emulator_->port();
     config_.link.kind = transport;
     config_.link.port = emulator_->port();
-    config_.settings.wire.format = format;
+    config_.settings.wire = digiview::Wire(format);
     config_.settings.acceleration = 4.0;  // as the emulator turns
     config_.session.state_timeout = TEST_STATE_TIMEOUT;
   }
@@ -183,6 +183,8 @@ const DeviceFixtureRegistration DIGIVIEW_FIXTURES({
     { "DigiViewUdpV1_0", [] { return std::make_unique<DigiViewFixture>(LinkKind::UDP, digiview::Format::V1_0); } },
     { "DigiViewTcpV1_1", [] { return std::make_unique<DigiViewFixture>(LinkKind::TCP, digiview::Format::V1_1); } },
     { "DigiViewUdpV1_1", [] { return std::make_unique<DigiViewFixture>(LinkKind::UDP, digiview::Format::V1_1); } },
+    { "DigiViewTcpV1_2", [] { return std::make_unique<DigiViewFixture>(LinkKind::TCP, digiview::Format::V1_2); } },
+    { "DigiViewUdpV1_2", [] { return std::make_unique<DigiViewFixture>(LinkKind::UDP, digiview::Format::V1_2); } },
 });
 }  // namespace
 

@@ -19,13 +19,15 @@ namespace ptz_action_server
 /// What only the DigiView protocol needs to know.
 struct DigiViewSettings
 {
-  digiview::Wire wire;  ///< the format DigiView speaks ("0.5" by default) and whether it fills the checksum
-  std::string stream_name = "main";
+  /// The format DigiView speaks ("0.5" by default), the unit of its angles (the format's documented one unless set)
+  /// and whether it fills the checksum.
+  digiview::Wire wire;
+  std::string stream_name = "main";  ///< 1 to nameSizeOf(format) characters
   std::uint8_t cam_id = 0;
-  double fov_wide = 1.2;        ///< rad: the field of view that zoom 1x maps to (fov = fov_wide / X)
-  double zoom_max = 0.0;        ///< X; 0: fov_wide / 0.1 (DigiView's narrowest field of view)
-  std::uint8_t lock_flags = 0;  ///< 0: the view follows the vehicle on every axis, so yaw and pitch are the base's
-  std::uint8_t crop_mode = 1;
+  double fov_wide = 1.2;         ///< rad: the field of view that zoom 1x maps to (fov = fov_wide / X)
+  double zoom_max = 0.0;         ///< X; 0: fov_wide / 0.1 (DigiView's narrowest field of view)
+  std::uint8_t lock_flags = 0;   ///< 0: the view follows the vehicle on every axis, so yaw and pitch are the base's
+  std::uint8_t crop_mode = 1;    ///< not in 1.2
   double slew_rate = 1.0;        ///< rad/s DigiView turns a view at (for velocity goals and goal timeouts)
   double acceleration = 0.0;     ///< rad/s^2 of that turn; 0: unknown (instant)
   double velocity_period = 0.1;  ///< s between the targets of a velocity goal
@@ -36,6 +38,10 @@ struct DigiViewSettings
   {
     return digiview::CameraId{ stream_name, cam_id };
   }
+  /// What a configuration of \p format that names no angle unit must be told: for "1.1", whose angles this package
+  /// sent in radians before it followed 1.1's own documentation (degrees), a deprecation line naming the setting
+  /// (\p setting, as the node resolves it); empty for the others (their unit never changed).
+  static std::string angleUnitNotice(digiview::Format format, const std::string& setting = "~digiview/angle_unit");
 };
 
 struct DigiViewCounters
@@ -53,11 +59,13 @@ struct DigiViewCounters
  *
  * Goals become SET CAM_TARGETING in directional mode (yaw = pan, pitch = tilt: DigiView's Tait-Bryan yaw is
  * clockwise from north and its pitch positive up, the same signs as the contract) and SET CAM_OPTICS_AND_CONTROL
- * (fov = fov_wide / zoom). DigiView has no velocity command: a velocity goal is a target moved every
- * velocity_period. State comes from subscriptions (100 ms) to CAM_TARGETING and CAM_OPTICS_AND_CONTROL: GET_INTERVAL
- * in format 0.5, a GET with interval_ms in 1.0 and 1.1 (whose CAM_TARGETING carries detection_id -1: no detection).
- * Every format is cut from a TCP stream by its own size. A SET that DigiView refuses is a device fault with
- * DigiView's reason. After a loss the view is held where it is; at shutdown the subscriptions are cancelled and QUIT
+ * (fov = fov_wide / zoom), angles in the wire's unit. DigiView has no velocity command: a velocity goal is a target
+ * moved every velocity_period. State comes from subscriptions (100 ms) to CAM_TARGETING and CAM_OPTICS_AND_CONTROL:
+ * GET_INTERVAL in format 0.5, a GET with interval_ms from 1.0 on (1.1's CAM_TARGETING carries detection_id -1, 1.2's
+ * view_id -1: no detection). Every format is cut from a TCP stream by its own size. A SET that DigiView refuses is a
+ * device fault with DigiView's reason. From 1.1 on SYSTEM_STATUS is subscribed too: a halted DigiView (HALT) keeps
+ * the link (its status reports keep it alive), holds the view where it stopped, and makes every goal a device fault
+ * until it runs again. After a loss the view is held where it is; at shutdown the subscriptions are cancelled and QUIT
  * is sent.
  */
 class DigiViewProtocol : public DeviceProtocol
@@ -120,6 +128,11 @@ public:
   {
     return num_user_views_;
   }
+  /// DigiView's last SYSTEM_STATUS said HALT (1.1 on): goals are refused until it runs again.
+  bool halted() const
+  {
+    return halted_;
+  }
 
 private:
   /// A SET awaiting DigiView's answer, and the command it served.
@@ -135,7 +148,12 @@ private:
   /// Nothing unpacked on this connection: if what came is of a format of another size, start() fails saying so.
   void checkOtherFormat(const std::uint8_t* bytes, std::size_t size);
   void handleState(const digiview::Message& message);
+  void handleStatus(const digiview::Message& message);
   void handleAnswer(const digiview::Message& message);
+  /// Halted (from 1.1 on, SYSTEM_STATUS HALT) or running again: a halt ends the goal in flight.
+  void setHalted(bool halted);
+  /// Halted: the command is reported as a fault instead of being sent.
+  bool refusedWhileHalted();
   void send(const digiview::Message& message);
   void sendTargets(const AxisValues& target);
   void velocityTick();
@@ -146,6 +164,7 @@ private:
   DigiViewCounters counters_;
   std::atomic<std::uint8_t> num_user_views_{ 0 };
   std::atomic<std::uint8_t> system_status_{ 0 };
+  std::atomic<bool> halted_{ false };
 
   // I/O thread only.
   bool described_ = false;   ///< VIDEO_OUTPUT of the stream arrived on this connection
