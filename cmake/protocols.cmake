@@ -71,12 +71,14 @@ ptz_protocol(mavlink_gimbal
 )
 
 ptz_protocol(axis
-  CORE src/core/axis/axis_protocol.cpp src/core/axis/vapix_codec.cpp
+  CORE src/core/axis/axis_protocol.cpp src/core/axis/axis_zoom_setup.cpp src/core/axis/axis_control_queue.cpp
+    src/core/axis/vapix_codec.cpp src/core/axis/vapix_queue.cpp
   PLUGIN src/plugins/axis_backend_plugin.cpp
-  EMULATOR src/emulators/axis_camera_emulator.cpp
+  EMULATOR src/emulators/axis_camera_emulator.cpp src/emulators/axis_camera_emulator_queue.cpp
   PROGRAM axis_camera_emulator src/emulators/programs/axis_camera_emulator_main.cpp
-  TESTS test/core/test_axis_protocol.cpp test/core/test_vapix_codec.cpp test/core/contract/axis_fixtures.cpp
-  FUZZ vapix_reply src/core/axis/vapix_codec.cpp src/core/types.cpp
+  TESTS test/core/test_axis_protocol.cpp test/core/test_axis_control_queue.cpp test/core/test_vapix_codec.cpp
+    test/core/contract/axis_fixtures.cpp
+  FUZZ vapix_reply src/core/axis/vapix_codec.cpp src/core/axis/vapix_queue.cpp src/core/types.cpp
   ROSTESTS test/ros/axis_node.test test/ros/axis_field_node.test
 )
 
