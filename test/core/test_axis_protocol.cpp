@@ -243,7 +243,7 @@ TEST(AxisBackend, ReadsTheLimitsTheCommandsAndTheCamerasZoomStepsAtStart)
   EXPECT_EQ(diagnostic(*backend, "zoom X-factor"), "the camera's zoomSteps (18 points, 1..18X)");
   EXPECT_EQ(targets(camera.server(), "query=attributes&group=zoom").size(), 1u);
   EXPECT_EQ(targets(camera.server(), "info=1").size(), 1u);
-  EXPECT_TRUE(targets(camera.server(), "param.cgi").empty());  // the camera's table needs no model
+  EXPECT_TRUE(targets(camera.server(), "group=root.Brand").empty());  // the camera's table needs no model
   EXPECT_TRUE(warnings.all(*backend).empty());
 
   // 4X goes out as the camera's step for 4X, and the camera gets to 4X.
@@ -288,10 +288,10 @@ TEST(AxisBackend, AFieldCameraWithoutAttributesGetsItsModelFamilysZoomAsAGuessWa
   camera.server().setListening(false);
   camera.server().dropConnections();
   ASSERT_TRUE(waitUntil([&] { return !backend->sample().link_up; }, WAIT));
-  const std::size_t asked = targets(camera.server(), "param.cgi").size();
+  const std::size_t asked = targets(camera.server(), "group=root.Brand").size();
   camera.server().setListening(true);
   ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
-  EXPECT_EQ(targets(camera.server(), "param.cgi").size(), asked + 1);
+  EXPECT_EQ(targets(camera.server(), "group=root.Brand").size(), asked + 1);
   EXPECT_EQ(warnings.all(*backend).size(), 1u);
 }
 
@@ -337,6 +337,17 @@ TEST(AxisBackend, WithoutAnyZoomTableTheZoomIsADeclaredMissingCapabilityNeverASi
     ASSERT_TRUE(waitUntil([&] { return camera.sample().position[ZOOM] > 1.5; }, WAIT));
     backend->stop();
     ASSERT_TRUE(waitUntil([&] { return !camera.sample().moving; }, WAIT));
+    // Zoom 1, the widest view, it can still go to (issue 32): `zoom=` the limits' MinZoom; NaN sends no zoom=.
+    EXPECT_TRUE(zoom.widest_view);
+    backend->goTo({ -0.1, 0.0, 1.0 });
+    ASSERT_TRUE(waitUntil([&] { return !targets(camera.server(), "&zoom=").empty(); }, WAIT));
+    EXPECT_EQ(targets(camera.server(), "&zoom=")[0], "/axis-cgi/com/ptz.cgi?camera=1&pan=-5.7296&tilt=0.0000&zoom=1&"
+                                                     "speed=100");
+    ASSERT_TRUE(
+        waitUntil([&] { return camera.sample().position[ZOOM] < 1.0 + 1e-6 && !camera.sample().moving; }, WAIT));
+    backend->goTo({ 0.1, 0.0, std::nan("") });
+    ASSERT_TRUE(waitUntil([&] { return targets(camera.server(), "&pan=").size() == 3; }, WAIT));
+    EXPECT_EQ(targets(camera.server(), "&pan=")[2], "/axis-cgi/com/ptz.cgi?camera=1&pan=5.7296&tilt=0.0000&speed=100");
   }
 }
 
@@ -398,7 +409,7 @@ TEST(AxisBackend, AConfiguredTableOrOpticalZoomWinsOverTheCameraAndIsNoGuess)
     EXPECT_EQ(zoom.limitation, "");
     EXPECT_TRUE(warnings.all(*backend).empty());
     EXPECT_TRUE(targets(camera.server(), "query=attributes").empty());
-    EXPECT_TRUE(targets(camera.server(), "param.cgi").empty());
+    EXPECT_TRUE(targets(camera.server(), "group=root.Brand").empty());
     EXPECT_EQ(runGoal(backend, goal_supervisor_test::positionGoal(-0.2, 0.0, 12.0)).rfind("SUCCEEDED: reached", 0), 0u);
     EXPECT_NEAR(camera.sample().position[ZOOM], 12.0, 0.02);
   }
@@ -461,6 +472,7 @@ TEST(AxisBackend, TheCamerasOpticalMaximumAndAPositionWithoutZoomAreTakenAsTheyA
   EXPECT_TRUE(zoom.present && zoom.velocity);
   EXPECT_FALSE(zoom.absolute || zoom.feedback);
   EXPECT_EQ(zoom.limitation, "this Axis camera reports no zoom position");
+  EXPECT_TRUE(zoom.widest_view);  // zoom= MinZoom is still its widest view
   ASSERT_EQ(warnings.all(*backend).size(), 1u);
 }
 

@@ -128,6 +128,16 @@ public:
   void setListening(bool listening);
   /// Makes every outstanding nonce stale (the next request is challenged with stale=true).
   void renewNonce();
+  /// The Cookie header of the request being handled ("" without one): for the handler, on its thread, during its call.
+  const std::string& requestCookie() const
+  {
+    return request_cookie_;
+  }
+  /// For the handler, during its call: its answer carries `Set-Cookie: value`.
+  void setAnswerCookie(const std::string& value)
+  {
+    answer_cookie_ = value;
+  }
   /// Appends \p values (the empty ones skipped) to config's secrets_file, one a line; nothing without one. Any thread.
   void recordSecrets(const std::vector<std::string>& values);
 
@@ -152,6 +162,8 @@ private:
   std::string newNonce();
 
   const HttpCameraServerConfig config_;
+  std::string request_cookie_;  ///< see requestCookie()
+  std::string answer_cookie_;   ///< see setAnswerCookie()
   const Handler handler_;
   const Open open_;
   void makeCertificate();
