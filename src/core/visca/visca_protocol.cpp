@@ -114,8 +114,7 @@ void ViscaProtocol::onConnected()
   round_.broken();
   sequence_ = 0;
   wire_sequences_.clear();
-  inquiry_answers_ = 0;
-  inquiry_timeouts_ = 0;
+  inquiry_timeouts_ = 0;  // inquiry_answers_ stays: a camera that once answered an inquiry answers them
   probe_answered_ = false;
   reset_timeouts_ = 0;
   highest_answered_ = 0;

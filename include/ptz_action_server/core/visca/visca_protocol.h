@@ -208,8 +208,8 @@ private:
   std::atomic<bool> variable_zoom_;  ///< false: the standard zoom drive
   std::atomic<std::uint32_t> sequence_cycle_;
   std::atomic<int> reply_address_{ -1 };  ///< the other address the camera answers from; -1: its own
+  std::uint32_t inquiry_answers_ = 0;     ///< answers to inquiries (on any connection)
   // Learning on this connection.
-  std::uint32_t inquiry_answers_ = 0;   ///< answers to inquiries
   std::uint32_t inquiry_timeouts_ = 0;  ///< inquiries without answer since the last answer
   bool probe_answered_ = false;         ///< a camera that answered no inquiry answered a command: one more inquiry
   std::uint32_t reset_timeouts_ = 0;    ///< VISCA over IP: sequence resets without answer in a row
