@@ -242,6 +242,9 @@ protected:
     camera_.answerZoom(0);
     starter.join();
     ASSERT_TRUE(backend_->sample().link_up);
+    // The link is up once the round's answers came and the protocol said ready(); its state is reported right
+    // after, on the I/O thread: the count starts from it.
+    ASSERT_TRUE(waitUntil([&] { return stateReports() > 0; }, WAIT));
     reports_ = stateReports();
   }
   std::uint64_t stateReports() const
