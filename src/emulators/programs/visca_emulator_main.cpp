@@ -46,8 +46,15 @@ int main(int argc, char** argv)
   options.port.link = DEFAULT_LINK;
   ptz_action_server::ViscaEmulatorConfig config;
   const std::string models = ptz_action_server::visca::ViscaModel::presetNames();
+  std::string wrapped;  // the names on lines of the help's width
+  for (std::size_t start = 0; start < models.size();)
+  {
+    std::size_t end = models.size() - start > 80 ? models.rfind(", ", start + 80) + 1 : models.size();
+    wrapped += (wrapped.empty() ? "" : "\n                         ") + models.substr(start, end - start);
+    start = end + (end < models.size() ? 1 : 0);
+  }
   std::string own_usage = USAGE;
-  own_usage.replace(own_usage.find("MODELS"), 6, models);
+  own_usage.replace(own_usage.find("MODELS"), 6, wrapped);
   const std::string usage = emulator_main::serialUsage(own_usage.c_str(), DEFAULT_LINK);
   std::string modes;
   emulator_main::parseArguments(
