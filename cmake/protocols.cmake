@@ -38,13 +38,15 @@ ptz_protocol(pelco_d
 )
 
 ptz_protocol(visca
-  CORE src/core/visca/visca_codec.cpp src/core/visca/visca_model.cpp src/core/visca/visca_protocol.cpp
+  CORE src/core/visca/visca_codec.cpp src/core/visca/visca_model.cpp src/core/visca/visca_presets.cpp
+    src/core/visca/visca_protocol.cpp src/core/visca/visca_replies.cpp
   PLUGIN src/plugins/visca_backend_plugin.cpp
-  EMULATOR src/emulators/visca_emulator.cpp
+  EMULATOR src/emulators/visca_emulator.cpp src/emulators/visca_emulator_answers.cpp
   PROGRAM visca_emulator src/emulators/programs/visca_emulator_main.cpp
-  TESTS test/core/test_visca_codec.cpp test/core/test_visca_protocol.cpp test/core/contract/visca_fixtures.cpp
+  TESTS test/core/test_visca_codec.cpp test/core/test_visca_dialects.cpp test/core/test_visca_protocol.cpp
+    test/core/contract/visca_fixtures.cpp
   FUZZ visca_reply src/core/visca/visca_codec.cpp
-  ROSTESTS test/ros/serial_visca_node.test test/ros/visca_ip_node.test
+  ROSTESTS test/ros/serial_visca_node.test test/ros/visca_ip_node.test test/ros/visca_sony_reply_port.test
 )
 
 ptz_protocol(digiview

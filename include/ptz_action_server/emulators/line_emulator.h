@@ -117,6 +117,14 @@ protected:
 
   /// What the unit does when it starts (called with mutex_ held).
   virtual void powerUp() = 0;
+  /// s the unit thinks before it reads \p data (the port's thread, mutex_ not held): SimFaults::reply_delay, unless a
+  /// unit takes longer for some requests than for others.
+  virtual double thinkingTime(const std::uint8_t* data, std::size_t size)
+  {
+    (void)data;
+    (void)size;
+    return reply_delay_;
+  }
 
   /// Creates the port and starts its thread: the last thing the derived constructor does.
   void openPort(const DevicePortConfig& config, DevicePort::Handlers handlers)
@@ -125,7 +133,7 @@ protected:
     // next request, as on a device that handles one request at a time.
     handlers.on_bytes = [this, on_bytes = std::move(handlers.on_bytes)](const std::uint8_t* data, std::size_t size,
                                                                         TimePoint arrived_at) {
-      const TimePoint until = addSeconds(SteadyClock::now(), reply_delay_.load());
+      const TimePoint until = addSeconds(SteadyClock::now(), thinkingTime(data, size));
       std::unique_lock<std::mutex> lock(handler_mutex_);
       closing_changed_.wait_until(lock, until, [this] { return closing_.load(); });
       if (!closing_)  // closePort() may be under way: port_ is going
