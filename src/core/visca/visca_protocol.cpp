@@ -37,7 +37,7 @@ ViscaProtocol::ViscaProtocol(const ViscaSettings& settings, DeviceSession& sessi
   , serial_(session.linkConfig().kind == LinkKind::SERIAL)
   , session_(session)
   , channel_(
-        session.context(), session.clock(), [this](const std::string& bytes) { write(bytes); },
+        session, [this](const std::string& bytes) { write(bytes); },
         replyTimeout(session.linkConfig(), settings.reply_timeout, VISCA_EXCHANGE_BYTES),
         [this](const TransactionChannel::Request& lost) {
           splitter_.reset();
