@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -61,6 +62,15 @@ public:
     std::lock_guard<std::mutex> lock(mutex_);
     model_.setFaults(faults, SteadyClock::now());
     reply_delay_ = faults.reply_delay;
+  }
+  /// How long the unit thinks over each read (s), from what it read: a unit slower at some requests than at others
+  /// (a PTZOptics G2 answers its pan-tilt position in 88 to 123 ms, its zoom in 26 to 58 ms). While set, it replaces
+  /// SimFaults::reply_delay; an empty rule gives that back. Called on the port's thread, one read at a time.
+  using ReplyDelayRule = std::function<double(const std::uint8_t* data, std::size_t size)>;
+  void setReplyDelayRule(ReplyDelayRule rule)
+  {
+    std::lock_guard<std::mutex> lock(rule_mutex_);
+    reply_delay_rule_ = std::move(rule);
   }
   /// The port closes, as pulling the cable does (a pseudo-terminal's link disappears; a TCP server stops listening).
   void unplug()
@@ -121,11 +131,20 @@ protected:
   /// Creates the port and starts its thread: the last thing the derived constructor does.
   void openPort(const DevicePortConfig& config, DevicePort::Handlers handlers)
   {
-    // A slow unit (SimFaults::reply_delay) thinks before it reads what came: every answer waits, and so does the
-    // next request, as on a device that handles one request at a time.
+    // A slow unit (SimFaults::reply_delay, or the rule) reads each request that long after it arrived, in order: a
+    // request that came while the unit was busy with the one before it waits only what is left of its own time, so
+    // requests written together (a goal's frames without reply) do not hold back each other's answers.
     handlers.on_bytes = [this, on_bytes = std::move(handlers.on_bytes)](const std::uint8_t* data, std::size_t size,
                                                                         TimePoint arrived_at) {
-      const TimePoint until = addSeconds(SteadyClock::now(), reply_delay_.load());
+      double delay = reply_delay_.load();
+      {
+        std::lock_guard<std::mutex> lock(rule_mutex_);
+        if (reply_delay_rule_)
+        {
+          delay = reply_delay_rule_(data, size);
+        }
+      }
+      const TimePoint until = addSeconds(arrived_at, delay);
       std::unique_lock<std::mutex> lock(handler_mutex_);
       closing_changed_.wait_until(lock, until, [this] { return closing_.load(); });
       if (!closing_)  // closePort() may be under way: port_ is going
@@ -152,6 +171,8 @@ protected:
   ReceivedLog<Item> received_;
   std::unique_ptr<DevicePort> port_;
   std::atomic<double> reply_delay_{ 0.0 };   ///< s, SimFaults::reply_delay
+  std::mutex rule_mutex_;                    ///< guards reply_delay_rule_
+  ReplyDelayRule reply_delay_rule_;          ///< replaces reply_delay_ while set
   std::atomic<bool> closing_{ false };       ///< closePort() began: no handler runs any more
   std::mutex handler_mutex_;                 ///< held while a received-bytes handler runs (or waits out the delay)
   std::condition_variable closing_changed_;  ///< closePort() began
