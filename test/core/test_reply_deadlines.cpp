@@ -223,6 +223,25 @@ TEST_P(SlowDevices, AnsweringEveryRequestIn120msItStartsReachesGoalsAndWhenSilen
 INSTANTIATE_TEST_SUITE_P(LineProtocols, SlowDevices, ::testing::ValuesIn(slowCases()),
                          [](const ::testing::TestParamInfo<SlowCase>& info) { return info.param.name; });
 
+TEST(ViscaTooSlow, AnswersLaterThanTheCeilingAreDroppedTheLinkIsLostAndTheNodeIsToldWhy)
+{
+  // VISCA over TCP with the shipped settings: the reply deadline learns from 100 ms up to 200 ms, no further.
+  LineDevice<ViscaEmulator, ViscaProtocol> device(ViscaEmulatorConfig(), PortKind::TCP, true);
+  device.setReplyDelay([](const std::uint8_t*, std::size_t) { return SLOW_ANSWER; });
+  const std::unique_ptr<DeviceBackend> backend = device.makeBackend();
+  ASSERT_EQ(startUp(*backend), "");
+  ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
+  // Past the ceiling: every answer comes while the channel drains after its request, and is dropped.
+  device.setReplyDelay([](const std::uint8_t*, std::size_t) { return 0.25; });
+  ASSERT_TRUE(waitUntil([&] { return !backend->sample().link_up; }, WAIT));
+  EXPECT_EQ(backend->lastLinkLoss().rfind("no state from a VISCA camera", 0), 0u) << backend->lastLinkLoss();
+  const std::vector<std::string> warnings = backend->takeWarnings();
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].rfind("answers come later than 0.200 s, the most the reply deadline learns", 0), 0u)
+      << warnings[0];
+  EXPECT_NE(warnings[0].find("raise reply_timeout"), std::string::npos) << warnings[0];
+}
+
 /**
  * \brief The answer times of five PTZOptics G2 cameras' wire transcripts, in turn: pan-tilt position inquiries
  * (`8x 09 06 12 FF`) in 88 to 123 ms, ten of fifteen above 100 ms; zoom position inquiries (`8x 09 04 47 FF`) in 26 to

@@ -111,8 +111,8 @@ TransactionChannel::complete(const std::function<bool(const Request&)>& answers)
     if (too_late && on_too_late_)
     {
       on_too_late_(formatText("answers come later than %.3f s, the most the reply deadline learns (twice "
-                              "reply_timeout, "
-                              "or 200 ms and the wire time): they are dropped; raise reply_timeout",
+                              "reply_timeout, whose 0 means 100 ms and the wire time): they are dropped; if the "
+                              "device is that slow, raise reply_timeout",
                               timing_.ceiling()));
     }
     if (too_late || !answers(overdue_.front()))
