@@ -67,7 +67,7 @@ ViscaProtocol::ViscaProtocol(const ViscaSettings& settings, DeviceSession& sessi
   , any_reply_address_(settings.any_reply_address.value_or(!serial_))
   , session_(session)
   , channel_(
-        session.context(), session.clock(), [this](const std::string& bytes) { write(bytes); },
+        session, [this](const std::string& bytes) { write(bytes); },
         replyTimeout(session.linkConfig(), settings.reply_timeout, VISCA_EXCHANGE_BYTES),
         [this](const TransactionChannel::Request& lost) { onReplyTimeout(lost); })
   , feedback_(settings.inquiries)

@@ -118,8 +118,12 @@ public:
   }
   double replyDeadline() const override
   {
-    // The reply timeout's allowance beyond the exchange's wire time (reply_timeout 0), or the one configured.
-    return config_.settings.reply_timeout > 0.0 ? config_.settings.reply_timeout : 0.1;
+    if (emulator_config_.modes.g2_latency)
+    {
+      return 0.0;  // its answers already take up to 123 ms of the 200 the deadline learns: a delay on top means nothing
+    }
+    // The most the reply deadline learns beyond the exchange's wire time: twice its floor, reply_timeout or 100 ms.
+    return 2.0 * (config_.settings.reply_timeout > 0.0 ? config_.settings.reply_timeout : 0.1);
   }
   bool setEndlessReplies(bool endless) override
   {
