@@ -48,7 +48,8 @@ UsernameToken newUsernameToken(const std::string& username, const std::string& c
 std::string passwordDigest(const std::string& nonce, const std::string& created, const std::string& password);
 /// "YYYY-MM-DDTHH:MM:SS.mmmZ" of \p utc_seconds since the epoch.
 std::string isoTime(double utc_seconds);
-/// Reads "YYYY-MM-DDTHH:MM:SS[.fff]Z" into seconds since the epoch; false for anything else.
+/// Reads any xsd:dateTime ("2010-09-16T07:50:45.25Z", "...+00:00" as python-onvif-zeep stamps it, "...-05:30", a
+/// time without a zone as UTC, 24:00:00) into seconds since the epoch (UTC); false for anything else.
 bool parseIsoTime(const std::string& text, double& utc_seconds);
 
 /// The whole envelope of \p body (an element with the tds/trt/tptz/tt prefixes this codec declares); with a
