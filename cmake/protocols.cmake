@@ -81,9 +81,10 @@ ptz_protocol(axis
 )
 
 ptz_protocol(onvif
-  CORE src/core/onvif/onvif_codec.cpp src/core/onvif/onvif_protocol.cpp src/core/onvif/onvif_xml.cpp
+  CORE src/core/onvif/onvif_bring_up.cpp src/core/onvif/onvif_codec.cpp src/core/onvif/onvif_motion_check.cpp
+    src/core/onvif/onvif_protocol.cpp src/core/onvif/onvif_xml.cpp
   PLUGIN src/plugins/onvif_backend_plugin.cpp
-  EMULATOR src/emulators/onvif_camera_emulator.cpp
+  EMULATOR src/emulators/onvif_camera_emulator.cpp src/emulators/onvif_camera_emulator_ptz.cpp
   PROGRAM onvif_camera_emulator src/emulators/programs/onvif_camera_emulator_main.cpp
   TESTS test/core/test_onvif_codec.cpp test/core/test_onvif_emulator.cpp test/core/test_onvif_protocol.cpp
     test/core/contract/onvif_fixtures.cpp

@@ -372,13 +372,13 @@ std::string relativeMove(const std::string& profile, const Vector& translation)
 }
 
 std::string continuousMove(const std::string& profile, double x, double y, bool with_zoom, double zoom,
-                           int timeout_seconds, bool with_pan_tilt)
+                           double timeout_seconds, bool with_pan_tilt)
 {
   const Vector velocity =
       Vector::of(with_pan_tilt, x, y, GENERIC_PAN_TILT_VELOCITY, with_zoom, zoom, GENERIC_ZOOM_VELOCITY);
   return "<tptz:ContinuousMove><tptz:ProfileToken>" + escaped(profile) + "</tptz:ProfileToken><tptz:Velocity>" +
          vectorElements(velocity) +
-         formatText("</tptz:Velocity><tptz:Timeout>PT%dS</tptz:Timeout></tptz:ContinuousMove>", timeout_seconds);
+         formatText("</tptz:Velocity><tptz:Timeout>PT%gS</tptz:Timeout></tptz:ContinuousMove>", timeout_seconds);
 }
 
 std::string stop(const std::string& profile)

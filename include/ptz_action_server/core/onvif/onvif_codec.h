@@ -96,10 +96,11 @@ std::string absoluteMove(const std::string& profile, double x, double y, const c
                          double zoom);
 /// RelativeMove{ProfileToken, Translation}.
 std::string relativeMove(const std::string& profile, const Vector& translation);
-/// Generic velocities in [-1, 1]; \p timeout_seconds whole seconds (some cameras take no fractions). \p with_pan_tilt
-/// false leaves the pan-tilt out (it goes on as it was), \p with_zoom false the zoom.
+/// Generic velocities in [-1, 1]; \p timeout_seconds as given ("PT2S", "PT0.5S": whole seconds where the camera's
+/// range allows, as some cameras take no fractions). \p with_pan_tilt false leaves the pan-tilt out (it goes on as it
+/// was), \p with_zoom false the zoom.
 std::string continuousMove(const std::string& profile, double x, double y, bool with_zoom, double zoom,
-                           int timeout_seconds, bool with_pan_tilt = true);
+                           double timeout_seconds, bool with_pan_tilt = true);
 std::string stop(const std::string& profile);
 std::string getPresets(const std::string& profile);
 /// SetPreset: a new preset when \p preset_token is "", else that one overwritten; \p name "" leaves it out.
