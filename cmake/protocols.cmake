@@ -94,5 +94,5 @@ ptz_protocol(onvif
     src/core/axis/vapix_codec.cpp src/core/http/crypto.cpp src/core/types.cpp
   FUZZ_LIBS tinyxml2::tinyxml2 OpenSSL::Crypto
   ROSTESTS test/ros/onvif_node.test test/ros/onvif_field_node.test test/ros/onvif_continuous_node.test
-    test/ros/onvif_no_position_node.test
+    test/ros/onvif_no_position_node.test test/ros/onvif_cheap_cameras_node.test
 )

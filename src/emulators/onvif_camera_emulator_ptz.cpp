@@ -147,7 +147,7 @@ void OnvifCameraEmulator::moveAxis(Axis axis, double x, TimePoint now)
 
 void OnvifCameraEmulator::advance(TimePoint now) const
 {
-  if (now >= velocity_until_)
+  if (now >= velocity_until_ && !config_.stop_keeps_moving)  // those cameras go on past their Timeout too
   {
     for (Axis axis : ALL_AXES)
     {

@@ -26,9 +26,7 @@ constexpr const char* ZERO_VELOCITY = "<tptz:Velocity><tt:PanTilt x=\"0.000000\"
 TEST(OnvifFieldCameras, ACameraThatKeepsMovingAfterStopGetsAZeroVelocityAndIsToldOnce)
 {
   std::unique_ptr<OnvifCameraEmulator> camera;
-  DeviceConfig<OnvifProtocol> config = configForMode("stop-keeps-moving", camera);
-  config.settings.velocity_timeout = 60;  // left to its Timeout, it would turn for a minute: to its end stop
-  auto backend = makeDeviceBackend<OnvifProtocol>(config);
+  auto backend = makeDeviceBackend<OnvifProtocol>(configForMode("stop-keeps-moving", camera));
   backend->start();
   backend->moveAtVelocity({ 0.3, 0.0, 0.0 });
   ASSERT_TRUE(waitUntil([&] { return std::abs(camera->sample().velocity[PAN] - 0.3) < 0.02; }, WAIT));

@@ -46,10 +46,10 @@ TEST(OnvifEmulatorFieldModes, StopKeepsMovingUntilAZeroVelocity)
 {
   Camera camera("stop-keeps-moving");
   OnvifClient client(camera.emulator->port());
-  ASSERT_TRUE(client.ptz(continuousMove("profile_1", 0.2, 0.0, false, 0.0, 60)));
-  camera.clock->advance(1.0);
+  ASSERT_TRUE(client.ptz(continuousMove("profile_1", 0.2, 0.0, false, 0.0, 1)));
+  camera.clock->advance(0.5);
   ASSERT_TRUE(client.ptz(stop("profile_1"))) << client.message().fault_text;
-  camera.clock->advance(2.0);
+  camera.clock->advance(2.0);                                   // past its Timeout of 1 s too
   EXPECT_EQ(client.status("profile_1").move_status, "MOVING");  // answered, and still on its way
   EXPECT_NEAR(camera.emulator->sample().velocity[PAN], 0.2 * 1.5, 1e-9);
   ASSERT_TRUE(client.ptz(continuousMove("profile_1", 0.0, 0.0, false, 0.0, 60)));

@@ -77,8 +77,8 @@ struct OnvifCameraEmulatorConfig
   /// GetSystemDateAndTime is answered without authentication, as the specification says. False: field case "Axis":
   /// HTTP 401 (with a Digest challenge) to one without a valid WS-Security UsernameToken.
   bool open_clock = true;
-  /// Field case "stop keeps moving": Stop is answered, but what a ContinuousMove set in motion goes on until a
-  /// ContinuousMove with zero velocity (or its Timeout).
+  /// Field case "stop keeps moving": Stop is answered, but what a ContinuousMove set in motion goes on, past its
+  /// Timeout too, until a ContinuousMove with zero velocity (or the end of the travel).
   bool stop_keeps_moving = false;
   /// Field case "AbsoluteMove never moves": AbsoluteMove is answered, and nothing moves (ContinuousMove still works).
   bool absolute_never_moves = false;

@@ -66,8 +66,9 @@ Camera options:
                                                  refused (ter:TimeoutNotSupported)
                            axis-401              Axis: GetSystemDateAndTime without a valid WS-Security
                                                  UsernameToken is answered HTTP 401 (with a Digest challenge)
-                           stop-keeps-moving     Stop is answered, but a ContinuousMove's motion goes on until a
-                                                 ContinuousMove with zero velocity (or its Timeout)
+                           stop-keeps-moving     Stop is answered, but a ContinuousMove's motion goes on, past its
+                                                 Timeout too, until a ContinuousMove with zero velocity (or its
+                                                 end stop)
                            absolute-never-moves  AbsoluteMove is answered, and nothing moves (ContinuousMove works)
                            speed-ignores-magnitude  any non-zero ContinuousMove velocity moves at one speed, half
                                                  the axis' max speed (pan 0.75, tilt 0.5 rad/s, zoom 4 X/s)
