@@ -363,6 +363,11 @@ TEST(OnvifFieldCameras, AStatusWithoutASpaceIsInTheConfigurationsDefaultElseTheG
     EXPECT_NEAR(backend->sample().position[TILT], toRadians(10.0), 1e-9);
     EXPECT_FALSE(backend->capabilities().axes[ZOOM].feedback);  // no zoom in its status
     EXPECT_EQ(backend->capabilities().axes[ZOOM].limitation, "this camera's GetStatus answers no zoom position");
+    // Unreported, its zoom still goes to its widest view (generic zoom 0): a zoom 1 goal is sent as that.
+    EXPECT_TRUE(backend->capabilities().axes[ZOOM].widest_view);
+    backend->goTo({ std::nan(""), std::nan(""), 1.0 });
+    ASSERT_TRUE(waitUntil([&] { return !lastBodyOf(camera.server(), "AbsoluteMove").empty(); }, WAIT));
+    EXPECT_NE(lastBodyOf(camera.server(), "AbsoluteMove").find("<tt:Zoom x=\"0.000000\""), std::string::npos);
   }
   camera.set("GetStatus", statusReply("<tt:PanTilt x=\"0.5\" y=\"-0.5\"/>"));
   camera.set("GetProfiles", profilesWithDefault(""));

@@ -110,8 +110,12 @@ struct OnvifCameraEmulatorConfig
  *
  * - `/onvif/device_service` (ver10/device): GetSystemDateAndTime (without authentication), GetCapabilities,
  *   GetServices (with the services' capabilities if asked), GetDeviceInformation.
- * - `/onvif/media_service` (ver10/media): GetProfiles, GetProfile (`profile_0` without PTZ, `profile_1` with `ptz0` on
- *   node `node0`; both on video source `video_source_0`), GetVideoSources.
+ * - `/onvif/media_service` (ver10/media): GetProfiles, GetProfile (`profile_1` with `ptz0` on node `node0`, listed
+ *   first, and `profile_0` without PTZ; both on video source `video_source_0`, each with a video encoder
+ *   configuration, as clients expect), GetVideoSources.
+ *
+ * Its XAddrs name the address and port it listens on (advertised_host aside); a token's Created may be any
+ * xsd:dateTime.
  * - `/onvif/ptz_service` (ver20/ptz): GetServiceCapabilities, GetNodes, GetNode, GetConfigurations, GetConfiguration,
  *   GetConfigurationOptions, AbsoluteMove, RelativeMove, ContinuousMove (its Timeout), Stop (per axis), GetStatus (in
  *   the default spaces, MoveStatus per axis), GetPresets, SetPreset, GotoPreset, RemovePreset, GotoHomePosition,

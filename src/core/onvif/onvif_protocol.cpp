@@ -104,6 +104,7 @@ Capabilities OnvifProtocol::cameraCapabilities() const
   zoom.absolute = zoom_.absolute;
   zoom.velocity = zoom_.velocity;
   zoom.feedback = zoom_.feedback;
+  zoom.widest_view = zoom_.present && zoom_.absolute;  // generic zoom 0, whether or not its status reports the zoom
   zoom.limitation = zoom_.limitation;
   // The listed range, unless the camera showed it does not reach its end.
   zoom.range = { 1.0, !zoom_.present ? 1.0 : honoured_zoom_max_ > 0.0 ? honoured_zoom_max_ : settings_.zoom_max };
