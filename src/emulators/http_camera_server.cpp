@@ -604,7 +604,9 @@ HttpAnswer HttpCameraServer::answer(const std::string& method, const std::string
 {
   if (config_.auth == HttpAuth::NONE || (open_ && open_(target)))
   {
-    return handler_(method, target, body);
+    HttpAnswer answered = handler_(method, target, body);
+    challenge = answered.challenge;
+    return answered;
   }
   bool stale = false;
   if (authorised(method, target, authorization, stale))

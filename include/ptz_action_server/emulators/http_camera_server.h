@@ -60,6 +60,10 @@ struct HttpAnswer
   unsigned status = 200;
   std::string content_type = "text/plain";
   std::string body;
+  /// A WWW-Authenticate the handler sends with a 401 of its own (a camera whose service asks for credentials its web
+  /// server does not check: Axis's ONVIF service); "" for none. (Initialised here: answers brace-initialise the
+  /// fields above only.)
+  std::string challenge{};
 };
 
 /// What the server counts. Any thread.
