@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "diagnostic_value.h"
 #include "ptz_action_server/core/axis/axis_protocol.h"
 #include "ptz_action_server/core/axis/vapix_queue.h"
 #include "ptz_action_server/emulators/axis_camera_emulator.h"
@@ -37,20 +38,6 @@ AxisCameraEmulatorConfig queueingCamera()
   camera.control_time = 2.0;  // short, so that the test sees control kept past it
   camera.queue_period = 1.0;
   return camera;
-}
-
-std::string diagnostic(const PtzBackend& backend, const std::string& name)
-{
-  std::vector<DiagnosticValue> values;
-  backend.diagnostics(values);
-  for (const DiagnosticValue& value : values)
-  {
-    if (value.first == name)
-    {
-      return value.second;
-    }
-  }
-  return "(no " + name + ")";
 }
 
 std::size_t countOf(HttpCameraServer& server, const std::string& containing)
@@ -103,13 +90,14 @@ TEST(AxisBackendControlQueue, AsksForControlKeepsItAndDropsIt)
   AxisCameraEmulator camera(queueingCamera());
   auto backend = makeDeviceBackend<AxisProtocol>(configFor(camera.port()));
   backend->start();
-  EXPECT_EQ(diagnostic(*backend, "PTZ control queue").rfind("on: control is ours", 0), 0u) << diagnostic(*backend, "PTZ"
-                                                                                                                   " co"
-                                                                                                                   "ntr"
-                                                                                                                   "ol "
-                                                                                                                   "que"
-                                                                                                                   "u"
-                                                                                                                   "e");
+  EXPECT_EQ(diagnosticValue(*backend, "PTZ control queue").rfind("on: control is ours", 0), 0u)
+      << diagnosticValue(*backend, "PTZ"
+                                   " co"
+                                   "ntr"
+                                   "ol "
+                                   "que"
+                                   "u"
+                                   "e");
   const std::string ours = camera.controlHolder();
   EXPECT_EQ(ours.rfind("client", 0), 0u) << ours;  // the cookie it was given, sent back
 
@@ -117,7 +105,7 @@ TEST(AxisBackendControlQueue, AsksForControlKeepsItAndDropsIt)
   backend->goTo({ 0.3, 0.1, 1.0 });
   ASSERT_TRUE(waitUntil([&] { return std::abs(camera.sample().position[PAN] - 0.3) < 1e-3; }, WAIT))
       << camera.sample().position[PAN] << ", holder " << camera.controlHolder() << ", fault " << backend->lastFault()
-      << ", queue " << diagnostic(*backend, "PTZ control queue");
+      << ", queue " << diagnosticValue(*backend, "PTZ control queue");
 
   // Kept past the camera's 2 s of control without a move: renewed while the backend only polls.
   const std::size_t requests = countOf(camera.server(), "control=request");
@@ -162,7 +150,7 @@ TEST(AxisBackendControlQueue, ACameraWithoutQueueingIsAskedNothingAndTheSettingW
   AxisCameraEmulator plain{ AxisCameraEmulatorConfig() };
   auto backend = makeDeviceBackend<AxisProtocol>(configFor(plain.port()));
   backend->start();
-  EXPECT_EQ(diagnostic(*backend, "PTZ control queue"), "off (CtlQueueing=false)");
+  EXPECT_EQ(diagnosticValue(*backend, "PTZ control queue"), "off (CtlQueueing=false)");
   backend->goTo({ 0.2, 0.0, 1.0 });
   ASSERT_TRUE(waitUntil([&] { return std::abs(plain.sample().position[PAN] - 0.2) < 1e-3; }, WAIT));
   EXPECT_EQ(countOf(plain.server(), "ptzqueue.cgi"), 0u);

@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "diagnostic_value.h"
 #include "ptz_action_server/core/mavlink/mavlink_gimbal_protocol.h"
 #include "ptz_action_server/emulators/mavlink_gimbal_emulator.h"
 #include "wait_until.h"
@@ -60,16 +61,7 @@ protected:
   }
   std::string diagnostic(const std::string& name) const
   {
-    std::vector<DiagnosticValue> values;
-    backend_->diagnostics(values);
-    for (const auto& entry : values)
-    {
-      if (entry.first == name)
-      {
-        return entry.second;
-      }
-    }
-    return "(missing)";
+    return diagnosticValue(*backend_, name);
   }
 
   MavlinkGimbalEmulatorConfig emulator_config_;

@@ -13,6 +13,7 @@
 
 #include <cstdlib>
 
+#include "diagnostic_value.h"
 #include "goal_supervisor_fixture.h"
 #include "line_test_support.h"
 #include "wait_until.h"
@@ -126,21 +127,6 @@ std::vector<SlowCase> slowCases()
   };
 }
 
-/// The value of diagnostics entry \p name ("" if there is none).
-std::string diagnostic(const DeviceBackend& backend, const std::string& name)
-{
-  std::vector<DiagnosticValue> values;
-  backend.diagnostics(values);
-  for (const DiagnosticValue& value : values)
-  {
-    if (value.first == name)
-    {
-      return value.second;
-    }
-  }
-  return "";
-}
-
 /// The number \p text starts with, or the one after \p after in it.
 double numberIn(const std::string& text, const std::string& after = "")
 {
@@ -177,19 +163,19 @@ std::string startUp(DeviceBackend& backend)
  */
 void expectLearnt(const DeviceBackend& backend, double longest)
 {
-  const std::string bounds = diagnostic(backend, "reply deadline bounds (s)");
+  const std::string bounds = diagnosticValue(backend, "reply deadline bounds (s)");
   const double floor = numberIn(bounds);
   const double ceiling = numberIn(bounds, " to ");
   EXPECT_NEAR(ceiling, 2.0 * floor, 2e-3) << bounds;  // both rounded to the ms
-  const double learnt = numberIn(diagnostic(backend, "reply deadline (s, learnt)"));
+  const double learnt = numberIn(diagnosticValue(backend, "reply deadline (s, learnt)"));
   EXPECT_GT(learnt, longest);
   EXPECT_GT(learnt, floor) << "nothing learnt";
   EXPECT_LE(learnt, ceiling + 1e-3);
-  const std::string answers = diagnostic(backend, "answer time median / longest (ms, latest answers)");
+  const std::string answers = diagnosticValue(backend, "answer time median / longest (ms, latest answers)");
   EXPECT_GE(numberIn(answers, " / "), 1e3 * longest - 1.0) << answers;
   const DeviceSession& session = backend.session();
   EXPECT_NEAR(session.stateDeadline(), std::max(0.25, 2.0 * learnt + session.config().poll_period), 0.01);
-  EXPECT_NEAR(numberIn(diagnostic(backend, "state deadline (s)")), session.stateDeadline(), 1e-3);
+  EXPECT_NEAR(numberIn(diagnosticValue(backend, "state deadline (s)")), session.stateDeadline(), 1e-3);
   EXPECT_LE(session.stateDeadline(), 2.0 * ceiling + session.config().poll_period + 2e-3);
 }
 
@@ -261,7 +247,7 @@ TEST(ViscaG2Timing, ACameraAnsweringAsThePtzOpticsG2DoesWorksWithTheShippedSetti
   }
   EXPECT_EQ(backend->sample().link_losses, 0u) << backend->lastLinkLoss();
   expectLearnt(*backend, 0.1);  // answers above 100 ms came, and were learnt
-  EXPECT_EQ(diagnostic(*backend, "reply deadline bounds (s)"), "0.100 to 0.200");
+  EXPECT_EQ(diagnosticValue(*backend, "reply deadline bounds (s)"), "0.100 to 0.200");
 }
 
 }  // namespace

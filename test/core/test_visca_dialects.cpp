@@ -7,6 +7,7 @@
  */
 #include <gtest/gtest.h>
 
+#include "diagnostic_value.h"
 #include "line_test_support.h"
 #include "wait_until.h"
 
@@ -70,16 +71,7 @@ protected:
   }
   std::string diagnostic(const std::string& name) const
   {
-    std::vector<DiagnosticValue> values;
-    backend_->diagnostics(values);
-    for (const auto& [key, value] : values)
-    {
-      if (key == name)
-      {
-        return value;
-      }
-    }
-    return "(none)";
+    return diagnosticValue(*backend_, name);
   }
   /// The backend's warnings so far, one text.
   std::string warnings()
