@@ -46,8 +46,9 @@ struct ViscaSettings
   std::string backend_name = "serial/visca";  ///< "serial/visca" or "visca_ip", for messages and diagnostics
   std::uint8_t address = 1;                   ///< the camera's address, 1..7
   ViscaFraming framing = ViscaFraming::RAW;
-  visca::ViscaModel model;     ///< steps a degree, ranges, speed bytes, zoom table
-  double reply_timeout = 0.0;  ///< s for an ACK or an answer; 0: the exchange's wire time plus 100 ms
+  visca::ViscaModel model;  ///< steps a degree, ranges, speed bytes, zoom table
+  double reply_timeout =
+      0.0;  ///< s: the reply deadline's floor (0: the exchange's wire time plus 100 ms); it learns up to twice that
   /// Replies from another address than the camera's are taken for its own. A network link reaches one camera, and
   /// some answer from another address (PTZOptics G3 firmware: `A0 41 FF` for camera 1); on a serial daisy chain the
   /// address tells the cameras apart. Unset: true on TCP and UDP, false on a serial line.
