@@ -14,8 +14,9 @@ JOBS=${PTZ_JOBS:-$(nproc)}
 # The scripts' build type: RelWithDebInfo with line tables only (-g1: a backtrace keeps functions, files and lines, not
 # variables), a fifth less compile time than its -g. A build of your own keeps CMake's RelWithDebInfo.
 # The test programs' own sources at -O1 (PTZ_TEST_COMPILE_OPTIONS): a quarter less compile time.
+# Warnings are errors here (PTZ_WARNINGS_AS_ERRORS), so none reaches main.
 PTZ_CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
-  -DCATKIN_ENABLE_TESTING=ON -DPTZ_TEST_COMPILE_OPTIONS=-O1)
+  -DCATKIN_ENABLE_TESTING=ON -DPTZ_TEST_COMPILE_OPTIONS=-O1 -DPTZ_WARNINGS_AS_ERRORS=ON)
 
 # Everything the package needs to build, test and run, from Debian bookworm's own packages.
 PTZ_APT_PACKAGES=(

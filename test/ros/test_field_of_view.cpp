@@ -127,7 +127,6 @@ sensor_msgs::CameraInfo calibration(const ros::Time& stamp)
 class FieldOfViewNodeTest : public NodeTest
 {
 };
-}  // namespace
 
 TEST_F(FieldOfViewNodeTest, FieldOfViewFollowsTheZoomWithTheJointStatesStamp)
 {
@@ -186,3 +185,5 @@ TEST_F(FieldOfViewNodeTest, CameraInfoIsRescaledForTheZoomWithItsHeaderKept)
     EXPECT_DOUBLE_EQ(zoomed.P[10], 1.0);
   }
 }
+
+}  // namespace

@@ -68,7 +68,6 @@ private:
 class MountTest : public NodeTest
 {
 };
-}  // namespace
 
 TEST_F(MountTest, PositivePanTurnsTheInvertedDeviceNegativeAndTfClockwise)
 {
@@ -154,3 +153,5 @@ TEST_F(MountTest, PositivePanVelocityTurnsTheInvertedDeviceNegative)
   EXPECT_TRUE(device.waitFor(-(pan - PAN_OFFSET), 0.0, device_pan, device_tilt))
       << "device pan " << device_pan << ", contract pan " << pan;
 }
+
+}  // namespace

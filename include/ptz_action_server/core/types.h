@@ -113,10 +113,10 @@ struct AxisRange
  */
 struct AxisCapability
 {
-  bool present = true;        ///< false: the device has no such axis (no zoom): goals must leave it alone
-  bool absolute = true;       ///< goes to a commanded position (false: it only moves at a speed)
-  bool velocity = true;       ///< moves at a commanded speed
-  bool feedback = true;       ///< reports where it is (false: the sample's position of this axis means nothing)
+  bool present = true;   ///< false: the device has no such axis (no zoom): goals must leave it alone
+  bool absolute = true;  ///< goes to a commanded position (false: it only moves at a speed)
+  bool velocity = true;  ///< moves at a commanded speed
+  bool feedback = true;  ///< reports where it is (false: the sample's position of this axis means nothing)
   /// Zoom only, for a zoom that cannot go to X-factors (`absolute` or `feedback` false): the device can still go to
   /// its widest view, zoom 1, so a zoom 1 goal reaches goTo() as 1.0 (without it, a zoom 1 goal leaves the zoom alone).
   bool widest_view = false;

@@ -184,6 +184,11 @@ const std::vector<std::pair<std::string, std::function<ViscaModel()>>>& presetTa
 }
 }  // namespace
 
+std::vector<ZoomPoint> ViscaModel::defaultZoomTable()
+{
+  return { { 0x0000, 1.0 }, { 0x4000, 20.0 } };
+}
+
 bool ViscaModel::preset(const std::string& name, ViscaModel& model)
 {
   for (const auto& [preset_name, make] : presetTable())

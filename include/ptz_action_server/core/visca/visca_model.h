@@ -51,7 +51,9 @@ struct ViscaModel
                                    { 14.4, -30.0, 90.0, 0x14, 70.0, {}, false } } };
   PositionLayout layout;  ///< nibbles of pan and tilt, one or two speed bytes
   /// Zoom position -> X, positions rising; at least two rows. Between rows the X is interpolated linearly.
-  std::vector<ZoomPoint> zoom_table{ { 0x0000, 1.0 }, { 0x4000, 20.0 } };
+  /// (0x0000: 1X, 0x4000: 20X by default; from a function, since GCC 12 at -O1 takes a braced list of these rows
+  /// here for maybe-uninitialized.)
+  std::vector<ZoomPoint> zoom_table = defaultZoomTable();
   /// False where the X-factor of the zoom positions is not known (a camera with interchangeable lenses): zoom goals
   /// other than the widest view (zoom 1) are refused until zoom/table gives the lens's rows.
   bool zoom_table_known = true;
@@ -61,6 +63,8 @@ struct ViscaModel
   std::uint16_t vendor_id = 0;  ///< what the version inquiry answers (0001: Sony), where the maker's table gives it
   std::uint16_t model_id = 0;
 
+  /// The default model's zoom table (ptzoptics': 1X to 20X).
+  static std::vector<ZoomPoint> defaultZoomTable();
   /// A preset by name ("evi_d70", "brc_x1000", ...; see presetNames()) -> \p model; false for another name.
   static bool preset(const std::string& name, ViscaModel& model);
   /// The preset names, for messages and parameter checks.
