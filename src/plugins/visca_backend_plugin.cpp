@@ -209,9 +209,6 @@ struct ViscaPlugin
 
   static void read(const DeviceParams& device, const BackendContext& /*context*/, DeviceConfig<ViscaProtocol>& config)
   {
-    // Diagnostics keep the name the backend was loaded by.
-    config.settings.backend_name =
-        device.old_plugin == "serial" ? "serial/visca" : (device.old_plugin.empty() ? NAME : device.old_plugin);
     readViscaSettings(device.own, config.settings);
     config.settings.framing = readViscaFraming(device.own, config.link.kind);
     config.settings.reply_timeout = device.params.number("reply_timeout", 0.0, 0.0, 10.0);
