@@ -15,6 +15,7 @@
 #pragma once
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include <pluginlib/class_list_macros.hpp>
@@ -35,7 +36,15 @@ std::shared_ptr<PtzBackend> createDevice(const ParamReader& params, const LinkCh
   readLink(params, choices, config.link);
   readSession(params, choices, config.session);
   Plugin::read(params, context, config);
-  return makeDeviceBackend<typename Plugin::Protocol>(config, context.clock);
+  std::shared_ptr<PtzBackend> backend = makeDeviceBackend<typename Plugin::Protocol>(config, context.clock);
+  // One name for one thing: messages and diagnostics name the backend as backend:= does (a protocol's name() that
+  // is not its plugin's fails its first node test here).
+  if (backend->name() != Plugin::NAME)
+  {
+    throw std::logic_error("the protocol of plugin '" + std::string(Plugin::NAME) + "' calls itself '" +
+                           backend->name() + "'");
+  }
+  return backend;
 }
 
 /// The pluginlib class of \p Plugin: reads ~NAME/...
