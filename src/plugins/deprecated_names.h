@@ -4,10 +4,12 @@
  * `visca_ip`, in deprecated_names.cpp) and the old parameter names, mapped to today's before anything is read, each
  * with one deprecation line (doc/backends/link-parameters.md#old-names).
  *
- * Removing them one day is deleting this file, deprecated_names.cpp (and its line in CMakeLists.txt),
- * launch/deprecated_names.launch (and its include in ptz_action_server.launch), config/serial.yaml,
- * config/pantilt_udp.yaml, config/visca_ip.yaml, the deprecated classes of backend_plugins.xml, and the lines of
- * device_plugin.h that name this file's functions.
+ * Removing them one day is deleting this file and deprecated_names.cpp (and its line in CMakeLists.txt), the two
+ * lines of device_plugin.h that call withOldNames() and registerDevice(), launch/deprecated_names.launch (and its
+ * include and the protocol argument in ptz_action_server.launch), config/serial.yaml, pantilt_udp.yaml and
+ * visca_ip.yaml, the three deprecated classes of backend_plugins.xml, and the rostests that start the old names
+ * (deprecated_names.test, pantilt_udp_node.test, visca_ip_node.test, serial_pelco_node.test). ParamReader::renamed()
+ * then has no caller left.
  */
 #pragma once
 
