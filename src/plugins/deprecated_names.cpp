@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <pluginlib/class_list_macros.hpp>
@@ -165,31 +166,52 @@ public:
   }
 };
 
-/// `pantilt_udp`: ~pantilt_udp/... with the device's address in device_host and device_port.
-class PanTiltUdpBackendPlugin : public BackendPlugin
+/// A plugin renamed: today's plugin over some of its transports, its parameters under the old name's namespace.
+class RenamedBackendPlugin : public BackendPlugin
 {
 public:
   std::shared_ptr<PtzBackend> create(const ParamReader& params, const BackendContext& context) override
   {
-    warnDeprecated("backend 'pantilt_udp'", "backend 'pantilt' with its parameters under ~pantilt/ "
-                                            "(device_host and device_port are host and port there)");
-    const DeviceEntry device = findDevice("pantilt");
-    const LinkChoices choices = only(device.links(), { LinkKind::UDP });
-    return device.create(withOldNames(params, "pantilt", choices), choices, context);
+    warnDeprecated("backend '" + old_name_ + "'",
+                   "backend '" + plugin_ + "' with its parameters under ~" + plugin_ + "/ (" + advice_ + ")");
+    const DeviceEntry device = findDevice(plugin_);
+    const LinkChoices choices = only(device.links(), kinds_);
+    return device.create(withOldNames(params, plugin_, choices), choices, context);
+  }
+
+protected:
+  /// \p kinds: the transports the old name took, the first its default.
+  RenamedBackendPlugin(std::string old_name, std::string plugin, std::string advice, std::vector<LinkKind> kinds)
+    : old_name_(std::move(old_name)), plugin_(std::move(plugin)), advice_(std::move(advice)), kinds_(std::move(kinds))
+  {
+  }
+
+private:
+  std::string old_name_;
+  std::string plugin_;
+  std::string advice_;  ///< what else changed, for the deprecation line
+  std::vector<LinkKind> kinds_;
+};
+
+/// `pantilt_udp`: ~pantilt_udp/... with the device's address in device_host and device_port.
+class PanTiltUdpBackendPlugin : public RenamedBackendPlugin
+{
+public:
+  PanTiltUdpBackendPlugin()
+    : RenamedBackendPlugin("pantilt_udp", "pantilt", "device_host and device_port are host and port there",
+                           { LinkKind::UDP })
+  {
   }
 };
 
 /// `visca_ip`: ~visca_ip/..., over UDP (the default) or TCP.
-class ViscaIpBackendPlugin : public BackendPlugin
+class ViscaIpBackendPlugin : public RenamedBackendPlugin
 {
 public:
-  std::shared_ptr<PtzBackend> create(const ParamReader& params, const BackendContext& context) override
+  ViscaIpBackendPlugin()
+    : RenamedBackendPlugin("visca_ip", "visca", "and transport: udp, its default being serial there",
+                           { LinkKind::UDP, LinkKind::TCP })
   {
-    warnDeprecated("backend 'visca_ip'", "backend 'visca' with its parameters under ~visca/ (and "
-                                         "transport: udp, its default being serial there)");
-    const DeviceEntry device = findDevice("visca");
-    const LinkChoices choices = only(device.links(), { LinkKind::UDP, LinkKind::TCP });
-    return device.create(withOldNames(params, "visca", choices), choices, context);
   }
 };
 
