@@ -110,7 +110,7 @@ struct BenchParam
     EMULATOR_PORT,  ///< the running emulator's port (an int)
     EMULATOR_LINK,  ///< the running emulator's pseudo-terminal link (a string)
   };
-  std::string name;  ///< relative to the private namespace: "serial/protocol"
+  std::string name;  ///< relative to the private namespace: "flir/port"
   XmlRpc::XmlRpcValue value;
   Source source = Source::VALUE;
 };

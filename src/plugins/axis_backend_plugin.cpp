@@ -15,9 +15,8 @@ struct AxisPlugin
     return { { { LinkKind::HTTP } }, 0.15, 0.02 };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& /*context*/, DeviceConfig<AxisProtocol>& config)
+  static void read(const ParamReader& params, const BackendContext& /*context*/, DeviceConfig<AxisProtocol>& config)
   {
-    const ParamReader& params = device.own;
     AxisSettings& axis = config.settings;
     axis.camera = params.integer("camera", axis.camera, 1, 64);
     axis.speed = params.integer("speed", axis.speed, 1, 100);

@@ -16,10 +16,8 @@ struct DigiViewPlugin
     return { { { LinkKind::TCP, 5500 }, { LinkKind::UDP, 5500 } }, 0.15 };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& /*context*/,
-                   DeviceConfig<DigiViewProtocol>& config)
+  static void read(const ParamReader& params, const BackendContext& /*context*/, DeviceConfig<DigiViewProtocol>& config)
   {
-    const ParamReader& params = device.own;
     DigiViewSettings& digiview = config.settings;
     digiview::Format format = digiview::Format::V0_5;
     digiview::parseFormat(params.choice("format", "0.5", { "0.5", "1.0", "1.1", "1.2" }), format);

@@ -14,13 +14,12 @@ struct FlirPlugin
     return { { { LinkKind::SERIAL }, { LinkKind::TCP, 4000 } } };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& /*context*/, DeviceConfig<FlirProtocol>& config)
+  static void read(const ParamReader& flir, const BackendContext& /*context*/, DeviceConfig<FlirProtocol>& config)
   {
-    const ParamReader& flir = device.own;
     config.settings.pan_speed = flir.number("pan_speed", config.settings.pan_speed, 1e-3, 10.0);
     config.settings.tilt_speed = flir.number("tilt_speed", config.settings.tilt_speed, 1e-3, 10.0);
     config.settings.acceleration = flir.number("acceleration", config.settings.acceleration, 0.0, 1e4);
-    config.settings.reply_timeout = device.params.number("reply_timeout", 0.0, 0.0, 10.0);
+    config.settings.reply_timeout = flir.number("reply_timeout", 0.0, 0.0, 10.0);
   }
 };
 

@@ -14,10 +14,9 @@ struct MavlinkGimbalPlugin
     return { { { LinkKind::UDP, 14550 }, { LinkKind::SERIAL } }, 0.1 };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& context,
+  static void read(const ParamReader& params, const BackendContext& context,
                    DeviceConfig<MavlinkGimbalProtocol>& config)
   {
-    const ParamReader& params = device.own;
     MavlinkGimbalSettings& gimbal = config.settings;
     auto id = [&params](const char* name, int value, int min) {
       return static_cast<std::uint8_t>(params.integer(name, value, min, 255));

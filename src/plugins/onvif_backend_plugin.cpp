@@ -25,9 +25,8 @@ struct OnvifPlugin
     return { { { LinkKind::HTTP } }, 0.15, 0.02 };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& /*context*/, DeviceConfig<OnvifProtocol>& config)
+  static void read(const ParamReader& params, const BackendContext& /*context*/, DeviceConfig<OnvifProtocol>& config)
   {
-    const ParamReader& params = device.own;
     OnvifSettings& onvif = config.settings;
     onvif.device_path = params.text("device_path", onvif.device_path);
     onvif.profile = params.text("profile", onvif.profile);

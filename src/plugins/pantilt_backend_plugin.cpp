@@ -17,9 +17,8 @@ struct PanTiltPlugin
     return { { { LinkKind::UDP, 5000 }, { LinkKind::SERIAL }, { LinkKind::TCP, 4002 } }, 0.05 };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& context, DeviceConfig<PanTiltProtocol>& config)
+  static void read(const ParamReader& params, const BackendContext& context, DeviceConfig<PanTiltProtocol>& config)
   {
-    const ParamReader& params = device.own;
     PanTiltSettings& pantilt = config.settings;
     if (params.has("wire_version"))
     {

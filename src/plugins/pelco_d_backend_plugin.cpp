@@ -11,7 +11,7 @@ namespace
 PelcoSetPosition readSetPosition(const ParamReader& pelco)
 {
   XmlRpc::XmlRpcValue value;
-  if (pelco.nodeHandle().getParam("set_position", value) && value.getType() == XmlRpc::XmlRpcValue::TypeBoolean)
+  if (pelco.get("set_position", value) && value.getType() == XmlRpc::XmlRpcValue::TypeBoolean)
   {
     return static_cast<bool>(value) ? PelcoSetPosition::YES : PelcoSetPosition::NO;
   }
@@ -31,11 +31,10 @@ struct PelcoDPlugin
     return { { { LinkKind::SERIAL }, { LinkKind::TCP, 4001 } } };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& context, DeviceConfig<PelcoProtocol>& config)
+  static void read(const ParamReader& pelco, const BackendContext& context, DeviceConfig<PelcoProtocol>& config)
   {
     PelcoSettings& settings = config.settings;
-    settings.reply_timeout = device.params.number("reply_timeout", 0.0, 0.0, 10.0);
-    const ParamReader& pelco = device.own;
+    settings.reply_timeout = pelco.number("reply_timeout", 0.0, 0.0, 10.0);
     settings.address = static_cast<std::uint8_t>(pelco.integer("address", settings.address, 1, 255));
     pelco::parseTiltEncoding(pelco.choice("tilt_encoding", "down_positive", { "down_positive", "up_positive" }),
                              settings.tilt_encoding);

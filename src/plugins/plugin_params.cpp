@@ -4,9 +4,6 @@
 #include <fstream>
 #include <string>
 
-#include <ros/console.h>
-#include <xmlrpcpp/XmlRpcValue.h>
-
 #include "ptz_action_server/core/transport/http_link.h"
 
 namespace ptz_action_server
@@ -61,18 +58,6 @@ void readCredentialsFile(const std::string& path, HttpLinkConfig& http)
   }
 }
 
-bool isText(const ParamReader& params, const std::string& name)
-{
-  XmlRpc::XmlRpcValue value;
-  return params.nodeHandle().getParam(name, value) && value.getType() == XmlRpc::XmlRpcValue::TypeString;
-}
-
-bool isInteger(const ParamReader& params, const std::string& name)
-{
-  XmlRpc::XmlRpcValue value;
-  return params.nodeHandle().getParam(name, value) && value.getType() == XmlRpc::XmlRpcValue::TypeInt;
-}
-
 LinkKind linkKind(const std::string& transport)
 {
   return transport == "serial" ? LinkKind::SERIAL :
@@ -94,46 +79,6 @@ bool standardBaud(int baud)
 }
 }  // namespace
 
-DeviceParams::DeviceParams(const ParamReader& reader, std::string plugin_name)
-  : params(reader)
-  , own(reader)
-  , name(std::move(plugin_name))
-  , old_names{ { "host", "device_host" }, { "state_timeout", "transaction_deadline" }, { "tls_verify", "verify_peer" } }
-{
-}
-
-std::string DeviceParams::pick(const std::string& new_name, const std::vector<std::string>& more_old_names,
-                               bool (*usable)(const ParamReader&, const std::string&)) const
-{
-  if (params.has(new_name) && (usable == nullptr || usable(params, new_name)))
-  {
-    return new_name;
-  }
-  std::vector<std::string> candidates;
-  for (const auto& renamed : old_names)
-  {
-    if (renamed.first == new_name)
-    {
-      candidates.push_back(renamed.second);
-    }
-  }
-  candidates.insert(candidates.end(), more_old_names.begin(), more_old_names.end());
-  for (const std::string& old_name : candidates)
-  {
-    if (params.has(old_name))
-    {
-      warnDeprecated("parameter " + params.resolve(old_name), "~" + name + "/" + new_name);
-      return old_name;
-    }
-  }
-  return new_name;
-}
-
-void DeviceParams::warnDeprecated(const std::string& old_text, const std::string& new_text)
-{
-  ROS_WARN("%s is deprecated: use %s", old_text.c_str(), new_text.c_str());
-}
-
 std::string transportName(LinkKind kind)
 {
   return kind == LinkKind::HTTP ? "http" : toString(kind);
@@ -141,12 +86,11 @@ std::string transportName(LinkKind kind)
 
 /// The http and https transports: host (an http:// or https:// prefix sets tls), port (0: 80, or 443 with tls), tls,
 /// tls_verify, ca_file, tls_fingerprint, auth, username, password (never printed), credentials_file, request_timeout.
-void readHttpLink(const DeviceParams& device, bool https, LinkConfig& link)
+void readHttpLink(const ParamReader& params, bool https, LinkConfig& link)
 {
-  const ParamReader& params = device.params;
   link.kind = LinkKind::HTTP;
   HttpLinkConfig& http = link.http;
-  link.host = params.text(device.pick("host"), link.host);
+  link.host = params.text("host", link.host);
   http.tls = params.flag("tls", http.tls) || https;  // transport: https is tls: true
   // "https://camera" turns tls on (whatever `tls` says: config/*.yaml set it false); "http://camera" with tls on is
   // an error, never a quiet downgrade.
@@ -172,7 +116,7 @@ void readHttpLink(const DeviceParams& device, bool https, LinkConfig& link)
   }
   const int port = params.integer("port", 0, 0, 65535);
   link.port = static_cast<std::uint16_t>(port != 0 ? port : (http.tls ? 443 : 80));
-  http.verify_peer = params.flag(device.pick("tls_verify"), http.verify_peer);
+  http.verify_peer = params.flag("tls_verify", http.verify_peer);
   http.ca_file = params.text("ca_file", "");
   const std::string fingerprint = params.text("tls_fingerprint", "");
   if (!fingerprint.empty())
@@ -222,23 +166,18 @@ void readHttpLink(const DeviceParams& device, bool https, LinkConfig& link)
   http.request_timeout = params.number("request_timeout", http.request_timeout, 0.05, 60.0);
 }
 
-void readLink(const DeviceParams& device, const LinkChoices& choices, LinkConfig& link)
+void readLink(const ParamReader& params, const LinkChoices& choices, LinkConfig& link)
 {
-  const ParamReader& params = device.params;
-  std::vector<std::string> allowed = device.transports;
-  if (allowed.empty())
+  std::vector<std::string> allowed;
+  for (const TransportChoice& choice : choices.transports)
   {
-    for (const TransportChoice& choice : choices.transports)
+    allowed.push_back(transportName(choice.kind));
+    if (choice.kind == LinkKind::HTTP)
     {
-      allowed.push_back(transportName(choice.kind));
-      if (choice.kind == LinkKind::HTTP)
-      {
-        allowed.push_back("https");
-      }
+      allowed.push_back("https");
     }
   }
-  const std::string transport = params.choice(
-      "transport", device.default_transport.empty() ? allowed.front() : device.default_transport, allowed);
+  const std::string transport = params.choice("transport", allowed.front(), allowed);
   link.kind = linkKind(transport);
   std::uint16_t default_port = link.port;
   for (const TransportChoice& choice : choices.transports)
@@ -250,9 +189,8 @@ void readLink(const DeviceParams& device, const LinkChoices& choices, LinkConfig
   }
   if (link.kind == LinkKind::SERIAL)
   {
-    // port is the device path here (mavlink_gimbal called it serial_port)
-    const std::string path_name = device.pick("port", { "serial_port" }, isText);
-    link.path = params.text(path_name, link.path.empty() ? "/dev/ttyUSB0" : link.path);
+    // port is the device path here
+    link.path = params.text("port", link.path.empty() ? "/dev/ttyUSB0" : link.path);
     const int baud = params.integer("baud", static_cast<int>(link.baud), 1200, 921600);
     if (!standardBaud(baud))
     {
@@ -264,18 +202,13 @@ void readLink(const DeviceParams& device, const LinkChoices& choices, LinkConfig
   }
   else if (link.kind == LinkKind::HTTP)
   {
-    readHttpLink(device, transport == "https", link);
+    readHttpLink(params, transport == "https", link);
   }
   else
   {
-    link.host = params.text(device.pick("host"), link.host);
-    // port is the port number here (pantilt_udp called it device_port, serial tcp_port or udp_port)
-    const std::string port_name =
-        device.pick("port", { "device_port", link.kind == LinkKind::TCP ? "tcp_port" : "udp_port" }, isInteger);
-    // The serial plugin's YAML holds port: /dev/ttyUSB0 whatever the transport: a path there is no port number.
-    const bool serial_path = device.old_plugin == "serial" && port_name == "port" && isText(params, "port");
-    link.port =
-        static_cast<std::uint16_t>(serial_path ? default_port : params.integer(port_name, default_port, 1, 65535));
+    link.host = params.text("host", link.host);
+    // port is the port number here
+    link.port = static_cast<std::uint16_t>(params.integer("port", default_port, 1, 65535));
     if (link.kind == LinkKind::UDP)
     {
       link.local_host = params.text("local_host", link.local_host);
@@ -290,11 +223,9 @@ void readLink(const DeviceParams& device, const LinkChoices& choices, LinkConfig
   link.reconnect_max = params.number("reconnect_max", link.reconnect_max, link.reconnect_min, 60.0);
 }
 
-void readSession(const DeviceParams& device, const LinkChoices& choices, DeviceSessionConfig& session)
+void readSession(const ParamReader& params, const LinkChoices& choices, DeviceSessionConfig& session)
 {
-  const ParamReader& params = device.params;
-  session.state_timeout =
-      params.number(device.pick("state_timeout"), session.state_timeout, choices.state_timeout_min, 60.0);
+  session.state_timeout = params.number("state_timeout", session.state_timeout, choices.state_timeout_min, 60.0);
   session.poll_period = params.number("poll_period", session.poll_period, choices.poll_period_min, 1.0);
   session.startup_timeout = params.number("startup_timeout", session.startup_timeout, 0.1, 600.0);
   session.settle_window = params.number("settle_window", session.settle_window, 0.0, 5.0);

@@ -152,9 +152,9 @@ bool udpPortFree(const std::string& host, std::uint16_t port)
  * 52381 whatever port the request came from (libvisca-ip reports it), so a client on another port never hears them.
  * Where another program (or another camera of this node) holds 52381, any free port, with a warning.
  */
-void chooseSonyLocalPort(const DeviceParams& device, LinkConfig& link)
+void chooseSonyLocalPort(const ParamReader& params, LinkConfig& link)
 {
-  if (device.params.has("local_port"))
+  if (params.has("local_port"))
   {
     return;
   }
@@ -176,7 +176,7 @@ void chooseSonyLocalPort(const DeviceParams& device, LinkConfig& link)
   ROS_WARN_STREAM("visca: udp " << link.local_host << ":" << visca::SONY_IP_PORT
                                 << " is taken (another controller, or another camera of this node): listening on any "
                                    "free port, where Sony cameras that send their replies to 52381 are not heard; set "
-                                << device.params.resolve("local_port"));
+                                << params.resolve("local_port"));
 }
 
 /// framing under \p params: sony_ip by default on UDP, raw otherwise; sony_ip on anything but UDP is an error.
@@ -207,22 +207,19 @@ struct ViscaPlugin
     return { { { LinkKind::SERIAL }, { LinkKind::TCP, 5678 }, { LinkKind::UDP, visca::SONY_IP_PORT } } };
   }
 
-  static void read(const DeviceParams& device, const BackendContext& /*context*/, DeviceConfig<ViscaProtocol>& config)
+  static void read(const ParamReader& params, const BackendContext& /*context*/, DeviceConfig<ViscaProtocol>& config)
   {
-    // Diagnostics keep the name the backend was loaded by.
-    config.settings.backend_name =
-        device.old_plugin == "serial" ? "serial/visca" : (device.old_plugin.empty() ? NAME : device.old_plugin);
-    readViscaSettings(device.own, config.settings);
-    config.settings.framing = readViscaFraming(device.own, config.link.kind);
-    config.settings.reply_timeout = device.params.number("reply_timeout", 0.0, 0.0, 10.0);
+    readViscaSettings(params, config.settings);
+    config.settings.framing = readViscaFraming(params, config.link.kind);
+    config.settings.reply_timeout = params.number("reply_timeout", 0.0, 0.0, 10.0);
     // A network link reaches one camera, whatever address it answers from; a serial chain has several.
-    if (device.own.has("any_reply_address"))
+    if (params.has("any_reply_address"))
     {
-      config.settings.any_reply_address = device.own.flag("any_reply_address", false);
+      config.settings.any_reply_address = params.flag("any_reply_address", false);
     }
     if (config.settings.framing == ViscaFraming::SONY_IP)
     {
-      chooseSonyLocalPort(device, config.link);
+      chooseSonyLocalPort(params, config.link);
     }
   }
 };

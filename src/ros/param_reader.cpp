@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include <xmlrpcpp/XmlRpcValue.h>
+#include <ros/console.h>
 
 #include "ptz_action_server/core/types.h"
 
@@ -46,24 +46,66 @@ ParamReader::ParamReader(const ros::NodeHandle& node_handle) : node_handle_(node
 
 ParamReader ParamReader::child(const std::string& name) const
 {
-  return ParamReader(ros::NodeHandle(node_handle_, name));
+  ParamReader child(ros::NodeHandle(node_handle_, name));
+  child.renames_ = renames_;
+  child.prefix_ = prefix_ + name + "/";
+  return child;
+}
+
+ParamReader ParamReader::renamed(ParamRenames renames) const
+{
+  ParamReader reader(node_handle_);
+  reader.renames_ = std::make_shared<Renames>();
+  reader.renames_->table = std::move(renames);
+  return reader;
+}
+
+const ParamRename* ParamReader::renameOf(const std::string& name) const
+{
+  if (!renames_)
+  {
+    return nullptr;
+  }
+  const auto found = renames_->table.find(prefix_ + name);
+  return found == renames_->table.end() ? nullptr : &found->second;
 }
 
 bool ParamReader::has(const std::string& name) const
 {
-  return node_handle_.hasParam(name);
+  const ParamRename* rename = renameOf(name);
+  return rename == nullptr ? node_handle_.hasParam(name) :
+                             !rename->parameter.empty() && node_handle_.hasParam(rename->parameter);
+}
+
+bool ParamReader::get(const std::string& name, XmlRpc::XmlRpcValue& value) const
+{
+  const ParamRename* rename = renameOf(name);
+  if (rename == nullptr)
+  {
+    return node_handle_.getParam(name, value);
+  }
+  if (rename->parameter.empty() || !node_handle_.getParam(rename->parameter, value))
+  {
+    return false;
+  }
+  if (!rename->warning.empty() && renames_->warned.insert(rename->parameter).second)
+  {
+    ROS_WARN("%s", rename->warning.c_str());
+  }
+  return true;
 }
 
 std::string ParamReader::resolve(const std::string& name) const
 {
-  return node_handle_.resolveName(name);
+  const ParamRename* rename = renameOf(name);
+  return rename == nullptr || rename->parameter.empty() ? node_handle_.resolveName(name) : rename->parameter;
 }
 
 double ParamReader::number(const std::string& name, double default_value, double min, double max) const
 {
   XmlRpc::XmlRpcValue value;
   double result = default_value;
-  if (node_handle_.getParam(name, value))
+  if (get(name, value))
   {
     if (value.getType() == XmlRpc::XmlRpcValue::TypeDouble)
     {
@@ -90,7 +132,7 @@ int ParamReader::integer(const std::string& name, int default_value, int min, in
 {
   XmlRpc::XmlRpcValue value;
   int result = default_value;
-  if (node_handle_.getParam(name, value))
+  if (get(name, value))
   {
     if (value.getType() != XmlRpc::XmlRpcValue::TypeInt)
     {
@@ -109,7 +151,7 @@ int ParamReader::integer(const std::string& name, int default_value, int min, in
 bool ParamReader::flag(const std::string& name, bool default_value) const
 {
   XmlRpc::XmlRpcValue value;
-  if (!node_handle_.getParam(name, value))
+  if (!get(name, value))
   {
     return default_value;
   }
@@ -123,7 +165,7 @@ bool ParamReader::flag(const std::string& name, bool default_value) const
 std::string ParamReader::text(const std::string& name, const std::string& default_value) const
 {
   XmlRpc::XmlRpcValue value;
-  if (!node_handle_.getParam(name, value))
+  if (!get(name, value))
   {
     return default_value;
   }

@@ -141,7 +141,7 @@ TEST_F(FlirTest, StartupReadsResolutionLimitsAndSpeedsFromAnEchoingVerboseUnit)
   // The echoed, verbose answers before the set-up took effect were never taken for anything else.
   EXPECT_EQ(counters().unusable_replies, 0u);
   EXPECT_EQ(counters().errors, 0u);
-  EXPECT_EQ(backend_->name(), "serial/flir");
+  EXPECT_EQ(backend_->name(), "flir");
 }
 
 TEST_F(FlirTest, VelocityGoalsUseVelocityModeWithTheUnitsSign)

@@ -144,7 +144,7 @@ TEST(PanelModel, GreyingRules)
 
 TEST(PanelModel, AimMarkerOrientationFollowsTheUrdfConventions)
 {
-  // README, URDF and tf: at pan +0.5 the optical axis is (cos 0.5, -sin 0.5, 0); at tilt +0.3 it is (cos 0.3, 0, sin
+  // doc/urdf-and-tf.md: at pan +0.5 the optical axis is (cos 0.5, -sin 0.5, 0); at tilt +0.3 it is (cos 0.3, 0, sin
   // 0.3).
   const Quaternion q = orientationOfAim({ 0.5, 0.0 });
   const double dx = 1.0 - 2.0 * (q.y * q.y + q.z * q.z);

@@ -1,7 +1,7 @@
 /**
  * \file
  * \brief Frames of one PanTilt wire format sent to a receiver configured for another, over UDP on 127.0.0.1: the
- * emulated device and the pantilt_udp backend count every frame they can recognise as another format under
+ * emulated device and the pantilt backend count every frame they can recognise as another format under
  * "foreign format", and never execute it: the device does not move and nothing it holds changes; the backend takes
  * no state from it, and does not start against a device of another format.
  */

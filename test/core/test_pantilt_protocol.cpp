@@ -1,6 +1,6 @@
 /**
  * \file
- * \brief What only the pantilt_udp backend does, against the PanTilt emulator on 127.0.0.1 with ephemeral ports
+ * \brief What only the pantilt backend does, against the PanTilt emulator on 127.0.0.1 with ephemeral ports
  * (the backend contract suite covers what every device does).
  */
 #include <gtest/gtest.h>

@@ -47,7 +47,7 @@ class PtzBackend
 public:
   virtual ~PtzBackend() = default;
 
-  /// Short backend name, as used to load it ("sim", "pantilt_udp", ...).
+  /// Short backend name, as used to load it ("sim", "flir", ...).
   virtual std::string name() const = 0;
 
   /// Limits, speeds and what each axis can do (AxisCapability). Valid after start(); backends that ask the device

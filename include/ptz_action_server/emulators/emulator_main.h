@@ -2,6 +2,9 @@
  * \file
  * \brief What the device emulator programs share: option parsing, the serial and HTTP options, and the signal loop
  * that switches faults. Each program (src/emulators/programs/<name>_main.cpp) adds its own options and device.
+ *
+ * src/emulators/emulator_main.cpp holds the parsing, the serial options and the loop; emulator_main_http.cpp what
+ * only the IP cameras take (HttpCameraOptions and below).
  */
 #pragma once
 

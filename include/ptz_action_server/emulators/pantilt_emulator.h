@@ -1,6 +1,6 @@
 /**
  * \file
- * \brief A PanTilt device controller on UDP: the emulator behind `pantilt_udp_device` and the backend's tests.
+ * \brief A PanTilt device controller on UDP: the emulator behind `pantilt_emulator` and the pantilt backend's tests.
  *
  * State reporting, which the PanTilt protocol leaves open, is defined here:
  * - every valid datagram (SET_PARAM, COMMAND or a params frame) is answered with a full params frame;

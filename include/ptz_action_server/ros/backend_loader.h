@@ -35,7 +35,7 @@ public:
 
   /**
    * \brief Creates the backend named \p backend ("sim" means "ptz_action_server/sim") from the parameters under the
-   * plugin's short name in \p params (~sim/..., ~serial/...), with the URDF's pan and tilt limits as its context,
+   * plugin's short name in \p params (~sim/..., ~flir/...), with the URDF's pan and tilt limits as its context,
    * in the device's own angles through \p mount (a backend whose limits default to the URDF's gets them right side up).
    *
    * The backend is not started. Throws ConfigError for an unknown backend ("unknown backend 'x'; known backends:

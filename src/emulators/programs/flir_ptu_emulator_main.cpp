@@ -21,7 +21,7 @@ rate, replies ended CR LF. Like a unit at power-up it echoes and answers verbose
 (at power-up only) reaches only a client that has the port open then, as on a real line. On TCP it greets
 every connection with the E-series banner. R keeps terse / verbose, echo and the other modes, as the
 published drivers expect (they read !T!T!P!P* and go on without FT / ED). Point the node at the link:
-backend:=serial with port: /tmp/ptz_flir.
+backend:=flir port:=/tmp/ptz_flir.
 
 Options:
   --no-banner            start terse, without echo and banner

@@ -2,7 +2,7 @@
  * \file
  * \brief pantilt_emulator: a PanTilt device controller on UDP over the simulated motion model.
  *
- * Try the pantilt_udp backend without hardware, or break the link on purpose. SIGUSR1 toggles silence.
+ * Try the pantilt backend without hardware, or break the link on purpose. SIGUSR1 toggles silence.
  */
 #include <cstdio>
 #include <string>

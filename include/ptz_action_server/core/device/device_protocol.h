@@ -31,7 +31,7 @@ class DeviceProtocol
 public:
   virtual ~DeviceProtocol() = default;
 
-  /// Names the backend and its protocol in messages and diagnostics: "serial/flir", "digiview".
+  /// Names the backend and its protocol in messages and diagnostics: its plugin's name, as backend:= gives it ("flir").
   virtual std::string name() const = 0;
   /// The device, for messages: "a FLIR PTU", "DigiView view 'main' camera 0".
   virtual std::string deviceName() const = 0;

@@ -48,8 +48,8 @@ struct DeviceSessionCounters
   Counter stale_faults;       ///< refusals of a command the node had already replaced: counted, not reported
   Counter impossible_states;  ///< reports dropped as impossible (NaN, outside the limits, a jump): never believed
   /// Received bytes the protocol's framing threw away: a reply past its protocol's limit (a line without end), noise
-  /// between frames, a frame that never completed. Every receive buffer is bounded (README, "Bounded receive
-  /// buffers"): memory stays flat whatever the device sends.
+  /// between frames, a frame that never completed. Every receive buffer is bounded (doc/device-layer.md,
+  /// "Hostile devices: replies that never end"): memory stays flat whatever the device sends.
   Counter dropped_bytes;
 };
 

@@ -77,7 +77,7 @@ public:
 
   std::string name() const override
   {
-    return "serial/flir";
+    return "flir";
   }
   std::string deviceName() const override
   {

@@ -1,6 +1,7 @@
 /**
  * \file
- * \brief The pantilt_udp backend: the node is the control system, a PanTilt device controller sits across UDP.
+ * \brief The pantilt backend: the node is the control system, a PanTilt device controller sits across UDP (or a
+ * serial line or TCP, SLIP-framed).
  */
 #pragma once
 
@@ -78,7 +79,7 @@ public:
 
   std::string name() const override
   {
-    return session_.carriesDatagrams() ? "pantilt_udp" : "serial/pantilt";
+    return "pantilt";
   }
   std::string deviceName() const override
   {

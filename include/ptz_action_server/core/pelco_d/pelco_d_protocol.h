@@ -90,7 +90,7 @@ public:
 
   std::string name() const override
   {
-    return "serial/pelco_d";
+    return "pelco_d";
   }
   std::string deviceName() const override;
   /// From the settings: Pelco-D cannot ask a camera for its limits or speeds.

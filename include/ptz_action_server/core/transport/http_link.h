@@ -3,9 +3,9 @@
  * \brief HTTP under the device layer: a Link (kind HTTP) whose traffic is requests and answers (HttpChannel), made
  * with libcurl on the session's I/O thread over one keep-alive connection.
  *
- * Decision (see the README, "HTTP on the device layer"): HTTP is a link like the others, so reconnection with backoff,
- * the loss reasons, the counters and the session's supervision stay in one place. A request runs to completion on the
- * I/O thread (curl's easy interface, one handle reused for every request, so one connection and one digest nonce
+ * Decision (doc/device-layer.md, "HTTP on the device layer"): HTTP is a link like the others, so reconnection with
+ * backoff, the loss reasons, the counters and the session's supervision stay in one place. A request runs to completion
+ * on the I/O thread (curl's easy interface, one handle reused for every request, so one connection and one digest nonce
  * serve them all); its deadline (request_timeout) bounds how long the thread can be held. Commands queued meanwhile
  * run after it, in order, as on a serial line with one request on the wire.
  */

@@ -43,8 +43,7 @@ const char* toString(ViscaZoomDrive drive);
 /// What only the VISCA protocol needs to know.
 struct ViscaSettings
 {
-  std::string backend_name = "serial/visca";  ///< "serial/visca" or "visca_ip", for messages and diagnostics
-  std::uint8_t address = 1;                   ///< the camera's address, 1..7
+  std::uint8_t address = 1;  ///< the camera's address, 1..7
   ViscaFraming framing = ViscaFraming::RAW;
   visca::ViscaModel model;  ///< steps a degree, ranges, speed bytes, zoom table
   double reply_timeout =
@@ -115,7 +114,7 @@ public:
 
   std::string name() const override
   {
-    return settings_.backend_name;
+    return "visca";
   }
   std::string deviceName() const override;
   Capabilities capabilities() const override;
