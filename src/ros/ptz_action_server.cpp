@@ -132,7 +132,8 @@ void PtzActionServer::start()
   {
     state_publisher_->addFieldOfView(config_.field_of_view);
   }
-  state_publisher_->setTickHook([this] { publishStatuses(); });
+  state_publisher_->setTickHook([this] { return publishStatuses(); });
+  state_publisher_->setTickCosts(tick_costs_);
   state_publisher_->start();
 
   presets_ = std::make_unique<PresetServices>(node_handle_, config_.presets, limits_, backend_);
@@ -210,11 +211,11 @@ void PtzActionServer::startServers()
   servers_started_ = true;
 }
 
-void PtzActionServer::publishStatuses()
+int PtzActionServer::publishStatuses()
 {
   if (!servers_started_ || status_period_ticks_ == 0 || ++status_ticks_ % status_period_ticks_ != 0)
   {
-    return;
+    return 0;
   }
   position_abs_server_->publishStatus();
   position_rel_server_->publishStatus();
@@ -223,6 +224,7 @@ void PtzActionServer::publishStatuses()
   frame_server_->publishStatus();
   track_frame_server_->publishStatus();
   preset_server_->publishStatus();
+  return 7;  // every server's, listened or not
 }
 
 void PtzActionServer::postStatus(StatusHold::Change change)

@@ -34,6 +34,7 @@ void PtzNode::start(const ros::NodeHandle& node_handle, const ros::NodeHandle& p
     backend_ = wrap(backend_);
   }
   server_ = std::make_unique<PtzActionServer>(node_handle, config, kinematics, backend_);
+  server_->setTickCosts(tick_costs_);
   server_->start();
 }
 

@@ -1,5 +1,8 @@
 #include "ptz_action_server/ros/state_publisher.h"
 
+#include <sys/syscall.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <limits>
 
@@ -105,27 +108,46 @@ void StatePublisher::addFieldOfView(const FieldOfViewSettings& settings)
 
 void StatePublisher::onTick()
 {
+  TickCostMeter meter(tick_costs_);
+  if (meter.active())
+  {
+    ++tick_costs_->ticks;
+    tick_costs_->tick_thread = static_cast<std::int64_t>(syscall(SYS_gettid));
+  }
   const GoalSample tagged = supervisor_.sample();
   const PtzSample& sample = tagged.sample;
   state_message_.mode = static_cast<int8_t>(supervisor_.mode());
   state_message_.pan = reported(PAN, sample);
   state_message_.tilt = reported(TILT, sample);
   state_message_.zoom = reported(ZOOM, sample);
-  state_publisher_.publish(state_message_);
-  state_rate_->tick();
-
   const ros::Time stamp = toRosTime(sample.stamp);
+  meter.lap(TickCosts::SAMPLE);
+
+  if (state_publisher_.publish(state_message_))
+  {
+    meter.sent(TickCosts::STATE);
+  }
+  state_rate_->tick();
+  meter.lap(TickCosts::STATE);
+
   joint_state_message_.header.stamp = stamp;
   for (std::size_t index = 0; index < reported_joints_.size(); ++index)
   {
     joint_state_message_.position[index] = sample.position[reported_joints_[index]];
     joint_state_message_.velocity[index] = sample.velocity[reported_joints_[index]];
   }
-  joint_state_publisher_.publish(joint_state_message_);
+  if (joint_state_publisher_.publish(joint_state_message_))
+  {
+    meter.sent(TickCosts::JOINT_STATES);
+  }
+  meter.lap(TickCosts::JOINT_STATES);
+
   if (field_of_view_ && limits_.axes[ZOOM].feedback == limits_.axes[ZOOM].present)
   {
     field_of_view_->publish(stamp, sample.position[ZOOM]);
+    meter.sent(TickCosts::FIELD_OF_VIEW);  // published whether anyone listens or not
   }
+  meter.lap(TickCosts::FIELD_OF_VIEW);
 
   // A state the device has not renewed (its link is down) is not sent again: tf takes no repeated stamps.
   if (transforms_ && !joint_transforms_.empty() && sample.stamp > last_transform_stamp_)
@@ -138,18 +160,27 @@ void StatePublisher::onTick()
       joint_transforms_[index].transform =
           tf2::eigenToTransform(joint(axis).transform(sample.position[axis])).transform;
     }
-    transforms_->send(joint_transforms_);
+    if (transforms_->send(joint_transforms_))
+    {
+      meter.sent(TickCosts::TF);
+    }
   }
+  meter.lap(TickCosts::TF);
+
   diagnostics_->update();
+  meter.lap(TickCosts::DIAGNOSTICS);
 
   if (supervisor_.goalActive())
   {
     hand_over_(tagged);
   }
+  meter.lap(TickCosts::HAND_OVER);
+
   if (tick_hook_)
   {
-    tick_hook_();
+    meter.sent(TickCosts::STATUS_LISTS, static_cast<std::uint64_t>(tick_hook_()));
   }
+  meter.lap(TickCosts::STATUS_LISTS);
 }
 
 const JointModel& StatePublisher::joint(Axis axis) const
@@ -194,6 +225,10 @@ void StatePublisher::takeWarnings()
 
 void StatePublisher::diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper& status)
 {
+  if (tick_costs_ && tick_costs_->enabled)
+  {
+    ++tick_costs_->messages[TickCosts::DIAGNOSTICS];  // once per diagnostics message
+  }
   takeWarnings();
   const PtzSample sample = backend_->sample();
   if (sample.link_up)

@@ -37,13 +37,16 @@ public:
     return listeners_ > 0;
   }
 
+  /// Publishes \p message if the topic has a subscriber; returns whether it did.
   template <class Message>
-  void publish(const Message& message) const
+  bool publish(const Message& message) const
   {
-    if (listened())
+    if (!listened())
     {
-      publisher_.publish(message);
+      return false;
     }
+    publisher_.publish(message);
+    return true;
   }
 
 private:

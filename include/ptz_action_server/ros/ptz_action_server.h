@@ -31,6 +31,7 @@
 #include "ptz_action_server/ros/look_at_clicked_point.h"
 #include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/preset_services.h"
+#include "ptz_action_server/ros/tick_costs.h"
 #include "ptz_action_server/ros/view_config.h"
 
 namespace ptz_action_server
@@ -111,6 +112,12 @@ public:
   /// Throws BackendError or ConfigError.
   void start();
 
+  /// Lets the benchmark measure the state tick's parts into \p costs (see TickCosts); before start().
+  void setTickCosts(TickCosts* costs)
+  {
+    tick_costs_ = costs;
+  }
+
   /// Limits goals are checked against: the backend's capabilities narrowed by the URDF joint limits.
   const Capabilities& limits() const
   {
@@ -134,8 +141,9 @@ private:
   std::unique_ptr<NodeActionServer<Action>> makeServer(ActionKind kind);
   /// Starts the action servers without a status timer each: publishStatuses() publishes their status lists.
   void startServers();
-  /// On the state thread, every tick: publishes the servers' status lists at actionlib_status_frequency.
-  void publishStatuses();
+  /// On the state thread, every tick: publishes the servers' status lists at actionlib_status_frequency; returns how
+  /// many it published.
+  int publishStatuses();
   template <class Action>
   void onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   template <class Action>
@@ -181,6 +189,7 @@ private:
   std::atomic<bool> servers_started_{ false };       ///< the action servers are started: their status may go out
   int status_period_ticks_ = 0;                      ///< state ticks between status lists; 0: none (set before start)
   int status_ticks_ = 0;                             ///< state ticks so far (state thread)
+  TickCosts* tick_costs_ = nullptr;                  ///< the benchmark's, or null
 
   // Frame lookups for position_abs_tf and frame goals; the listener feeds the buffer from the main queue.
   std::unique_ptr<FrameListener> frame_listener_;

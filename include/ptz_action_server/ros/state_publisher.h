@@ -23,6 +23,7 @@
 #include "ptz_action_server/ros/field_of_view_publisher.h"
 #include "ptz_action_server/ros/listened_publisher.h"
 #include "ptz_action_server/ros/shared_transforms.h"
+#include "ptz_action_server/ros/tick_costs.h"
 
 namespace ptz_action_server
 {
@@ -60,10 +61,18 @@ public:
   /// start().
   void addFieldOfView(const FieldOfViewSettings& settings);
 
-  /// Calls \p hook on the state thread at the end of every tick. Before start().
-  void setTickHook(std::function<void()> hook)
+  /// Calls \p hook on the state thread at the end of every tick; it returns how many messages it sent (the action
+  /// status lists). Before start().
+  void setTickHook(std::function<int()> hook)
   {
     tick_hook_ = std::move(hook);
+  }
+
+  /// Measures each part of every tick into \p costs while its \c enabled is set (the benchmark's instrumented mode);
+  /// \p costs must outlive the publisher. Before start().
+  void setTickCosts(TickCosts* costs)
+  {
+    tick_costs_ = costs;
   }
 
   /// Advertises the topics, publishes the static transforms once (with tf on), then starts the tick.
@@ -90,7 +99,8 @@ private:
   std::vector<Axis> reported_joints_;  ///< pan and tilt, those the device reports, in joint_states and tf
   const bool publish_tf_;
   const SampleHandler hand_over_;
-  std::function<void()> tick_hook_;
+  std::function<int()> tick_hook_;
+  TickCosts* tick_costs_ = nullptr;  ///< the benchmark's, or null
   SystemClock clock_;
 
   // Only the state thread touches these after start().
