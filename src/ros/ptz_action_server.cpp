@@ -86,8 +86,9 @@ std::unique_ptr<NodeActionServer<Action>> PtzActionServer::makeServer(ActionKind
   }
   using Server = NodeActionServer<Action>;
   return std::make_unique<Server>(
-      node_handle_, name, [this, kind](typename Server::GoalHandle handle) { onGoal<Action>(handle, kind); },
-      [this, kind](typename Server::GoalHandle handle) { onCancel<Action>(handle, kind); }, false);
+      node_handle_, name,
+      [this, kind](typename Server::GoalHandle handle) { batchStatuses([&] { onGoal<Action>(handle, kind); }); },
+      [this, kind](typename Server::GoalHandle handle) { batchStatuses([&] { onCancel<Action>(handle, kind); }); });
 }
 
 void PtzActionServer::start()
@@ -211,20 +212,47 @@ void PtzActionServer::startServers()
   servers_started_ = true;
 }
 
+template <class Call>
+void PtzActionServer::forEachServer(Call&& call)
+{
+  const auto each = [&call](auto& server) {
+    if (server)  // start() builds them one by one
+    {
+      call(*server);
+    }
+  };
+  each(position_abs_server_);
+  each(position_rel_server_);
+  each(velocity_server_);
+  each(position_abs_tf_server_);
+  each(frame_server_);
+  each(track_frame_server_);
+  each(preset_server_);
+}
+
 int PtzActionServer::publishStatuses()
 {
   if (!servers_started_ || status_period_ticks_ == 0 || ++status_ticks_ % status_period_ticks_ != 0)
   {
     return 0;
   }
-  position_abs_server_->publishStatus();
-  position_rel_server_->publishStatus();
-  velocity_server_->publishStatus();
-  position_abs_tf_server_->publishStatus();
-  frame_server_->publishStatus();
-  track_frame_server_->publishStatus();
-  preset_server_->publishStatus();
-  return 7;  // every server's, listened or not
+  int published = 0;
+  forEachServer([&published](auto& server) { published += server.publishStatusIfListened(); });
+  return published;
+}
+
+void PtzActionServer::batchStatuses(const std::function<void()>& changes)
+{
+  forEachServer([](auto& server) { server.holdStatus(); });
+  struct Release
+  {
+    PtzActionServer& server;
+    ~Release()
+    {
+      server.forEachServer([](auto& action_server) { action_server.releaseStatus(); });
+    }
+  } release{ *this };
+  changes();
 }
 
 void PtzActionServer::postStatus(StatusHold::Change change)
@@ -249,7 +277,10 @@ void PtzActionServer::armStatusRelease(TimePoint due)
   {
     status_release_timer_ = node_handle_.createSteadyTimer(
         ros::WallDuration(std::max(0.0, secondsBetween(clock_.now(), due))),
-        [this](const ros::SteadyTimerEvent&) { armStatusRelease(status_hold_.release(clock_.now())); }, true);
+        [this](const ros::SteadyTimerEvent&) {
+          batchStatuses([this] { armStatusRelease(status_hold_.release(clock_.now())); });
+        },
+        true);
   }
 }
 

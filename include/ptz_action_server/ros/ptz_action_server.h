@@ -11,7 +11,6 @@
 #include <optional>
 #include <string>
 
-#include <actionlib/server/action_server.h>
 #include <ros/ros.h>
 
 #include "ptz_action_server/PtzAction.h"
@@ -29,6 +28,7 @@
 #include "ptz_action_server/ros/frame_tracking.h"
 #include "ptz_action_server/ros/goal_translator.h"
 #include "ptz_action_server/ros/look_at_clicked_point.h"
+#include "ptz_action_server/ros/node_action_server.h"
 #include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/preset_services.h"
 #include "ptz_action_server/ros/tick_costs.h"
@@ -74,18 +74,6 @@ struct StatusPoster
 };
 
 class StatePublisher;
-
-/**
- * \brief An actionlib server whose status list the node publishes (PtzActionServer::publishStatuses()) instead of a
- * ros::Timer of its own: actionlib's publishStatus(), protected in its base, made callable.
- */
-template <class Action>
-class NodeActionServer : public actionlib::ActionServer<Action>
-{
-public:
-  using actionlib::ActionServer<Action>::ActionServer;
-  using actionlib::ActionServerBase<Action>::publishStatus;
-};
 
 /**
  * \brief The ptz_action_server node around one backend.
@@ -141,9 +129,15 @@ private:
   std::unique_ptr<NodeActionServer<Action>> makeServer(ActionKind kind);
   /// Starts the action servers without a status timer each: publishStatuses() publishes their status lists.
   void startServers();
-  /// On the state thread, every tick: publishes the servers' status lists at actionlib_status_frequency; returns how
-  /// many it published.
+  /// On the state thread, every tick: publishes the listened servers' status lists at actionlib_status_frequency;
+  /// returns how many it published.
   int publishStatuses();
+  /// Runs \p changes (goal status changes, on the main thread) with each server's transitions making one status list,
+  /// published when they are done.
+  void batchStatuses(const std::function<void()>& changes);
+  /// Calls \p call with each action server built so far.
+  template <class Call>
+  void forEachServer(Call&& call);
   template <class Action>
   void onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   template <class Action>
