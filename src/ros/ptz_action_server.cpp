@@ -50,8 +50,13 @@ PtzActionServer::PtzActionServer(const ros::NodeHandle& node_handle, const NodeC
 
 PtzActionServer::~PtzActionServer()
 {
-  // Stop the state thread and the backend's reports first: both post callbacks that point at this object.
+  // Stop the state thread, the status release and the backend's reports first: they post callbacks that point at
+  // this object.
   state_publisher_.reset();
+  if (timer_)
+  {
+    timer_->cancel(status_release_);
+  }
   if (listener_target_)
   {
     std::lock_guard<std::mutex> lock(listener_target_->mutex);
@@ -108,6 +113,13 @@ void PtzActionServer::start()
              backend_->name().c_str());
   }
   backend_->start();
+  // The held status changes are released from the process's timer thread onto the main queue: a roscpp steady timer
+  // would start roscpp's steady timer thread, which then wakes ten times a second for good.
+  timer_ = TimerThread::shared();
+  status_release_ = timer_->at(TimerThread::Clock::time_point::max(), [this] {
+    node_handle_.getCallbackQueue()->addCallback(
+        boost::make_shared<FunctionCallback>([this] { releaseHeldStatuses(); }), reinterpret_cast<uint64_t>(this));
+  });
 
   // Goals are checked against the tighter of the device's and the URDF's limits.
   const LimitIntersection intersection = intersectLimits(backend_->capabilities(), urdfLimits(kinematics_));
@@ -273,15 +285,12 @@ StatusPoster PtzActionServer::statusPoster()
 void PtzActionServer::armStatusRelease(TimePoint due)
 {
   status_release_armed_ = due != TimePoint::max();
-  if (status_release_armed_)
-  {
-    status_release_timer_ = node_handle_.createSteadyTimer(
-        ros::WallDuration(std::max(0.0, secondsBetween(clock_.now(), due))),
-        [this](const ros::SteadyTimerEvent&) {
-          batchStatuses([this] { armStatusRelease(status_hold_.release(clock_.now())); });
-        },
-        true);
-  }
+  timer_->move(status_release_, due);
+}
+
+void PtzActionServer::releaseHeldStatuses()
+{
+  batchStatuses([this] { armStatusRelease(status_hold_.release(clock_.now())); });
 }
 
 void PtzActionServer::onBackendSample()

@@ -22,6 +22,7 @@
 #include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/core/goal/status_hold.h"
+#include "ptz_action_server/core/timer_thread.h"
 #include "ptz_action_server/ros/action_kind.h"
 #include "ptz_action_server/ros/frame_goal_hold.h"
 #include "ptz_action_server/ros/frame_listener.h"
@@ -155,6 +156,8 @@ private:
   StatusPoster statusPoster();
   /// Arms the one-shot timer that releases the held status changes at \p due (none if TimePoint::max()).
   void armStatusRelease(TimePoint due);
+  /// On the main queue when the release timer fires: runs the held changes that are due, then arms it again.
+  void releaseHeldStatuses();
   /// On the backend's thread when its state may have changed: queues one early verdict check on the main thread.
   void onBackendSample();
 
@@ -168,8 +171,9 @@ private:
   std::unique_ptr<GoalSupervisor> supervisor_;       ///< the goal state machine, on the main thread; built by start()
   std::unique_ptr<StatePublisher> state_publisher_;  ///< the 10 Hz tick, on its own thread; built by start()
   SystemClock clock_;
-  StatusHold status_hold_;                 ///< goal status changes after a new goal wait here (main thread)
-  ros::SteadyTimer status_release_timer_;  ///< one-shot, armed while changes are held
+  StatusHold status_hold_;              ///< goal status changes after a new goal wait here (main thread)
+  std::shared_ptr<TimerThread> timer_;  ///< the process's; set by start()
+  TimerThread::Id status_release_ = 0;  ///< one-shot, armed while changes are held: queues releaseHeldStatuses()
   bool status_release_armed_ = false;
   std::atomic<bool> supervising_{ false };  ///< supervisor_ is built: backend reports may be judged
   /// What the backend's listener reaches this server through; the destructor cuts it (the backend may outlive us).
