@@ -96,7 +96,7 @@ int runNode(SharedCounters* counters)
     ROS_FATAL("%s", error.what());
     return 1;
   }
-  ros::spin();
+  spinUntilShutdown();  // as the ptz_action_server executable spins
   return 0;
 }
 

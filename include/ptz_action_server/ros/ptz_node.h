@@ -48,4 +48,10 @@ private:
   TickCosts* tick_costs_ = nullptr;
 };
 
+/**
+ * \brief ros::spin() on the global queue, for a node's main thread, without its ten wake-ups a second: waits for a
+ * callback until ros::shutdown() (which disables the queue, and so wakes the wait), running each as it comes.
+ */
+void spinUntilShutdown();
+
 }  // namespace ptz_action_server
