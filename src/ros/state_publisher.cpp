@@ -18,6 +18,15 @@ constexpr double STATE_RATE = 10.0;  ///< Hz, fixed by the contract
 constexpr double STATE_RATE_TOLERANCE = 0.02;
 constexpr int STATE_RATE_WINDOW = 10;  ///< ticks the measured rate is averaged over
 
+/// When the first tick of a camera started now is due: on one grid of the period for every camera of the process, so
+/// a nodelet manager's cameras tick together, in one wake-up of the timer thread (and of roscpp's poll thread, which
+/// then writes all their messages in one pass over its publications) instead of one each, spread over the period.
+TimerThread::Clock::time_point firstTick(TimerThread::Clock::duration period)
+{
+  static const TimerThread::Clock::time_point grid = TimerThread::Clock::now();
+  return grid + ((TimerThread::Clock::now() - grid) / period + 1) * period;
+}
+
 static_assert(static_cast<int>(GoalMode::IDLE) == PtzState::MODE_IDLE &&
                   static_cast<int>(GoalMode::POSITION) == PtzState::MODE_POSITION &&
                   static_cast<int>(GoalMode::VELOCITY) == PtzState::MODE_VELOCITY,
@@ -98,7 +107,7 @@ void StatePublisher::start()
   const auto period =
       std::chrono::duration_cast<TimerThread::Clock::duration>(std::chrono::duration<double>(1.0 / STATE_RATE));
   timer_ = TimerThread::shared();
-  tick_ = timer_->every(period, TimerThread::Clock::now() + period, [this] { onTick(); });
+  tick_ = timer_->every(period, firstTick(period), [this] { onTick(); });
 }
 
 void StatePublisher::addFieldOfView(const FieldOfViewSettings& settings)
