@@ -139,27 +139,31 @@ void StatePublisher::onTick()
   state_rate_->tick();
   meter.lap(TickCosts::STATE);
 
-  joint_state_message_.header.stamp = stamp;
-  for (std::size_t index = 0; index < reported_joints_.size(); ++index)
+  if (joint_state_publisher_.listened())
   {
-    joint_state_message_.position[index] = sample.position[reported_joints_[index]];
-    joint_state_message_.velocity[index] = sample.velocity[reported_joints_[index]];
-  }
-  if (joint_state_publisher_.publish(joint_state_message_))
-  {
-    meter.sent(TickCosts::JOINT_STATES);
+    joint_state_message_.header.stamp = stamp;
+    for (std::size_t index = 0; index < reported_joints_.size(); ++index)
+    {
+      joint_state_message_.position[index] = sample.position[reported_joints_[index]];
+      joint_state_message_.velocity[index] = sample.velocity[reported_joints_[index]];
+    }
+    if (joint_state_publisher_.publish(joint_state_message_))
+    {
+      meter.sent(TickCosts::JOINT_STATES);
+    }
   }
   meter.lap(TickCosts::JOINT_STATES);
 
-  if (field_of_view_ && limits_.axes[ZOOM].feedback == limits_.axes[ZOOM].present)
+  if (field_of_view_ && limits_.axes[ZOOM].feedback == limits_.axes[ZOOM].present &&
+      field_of_view_->publish(stamp, sample.position[ZOOM]))
   {
-    field_of_view_->publish(stamp, sample.position[ZOOM]);
-    meter.sent(TickCosts::FIELD_OF_VIEW);  // published whether anyone listens or not
+    meter.sent(TickCosts::FIELD_OF_VIEW);
   }
   meter.lap(TickCosts::FIELD_OF_VIEW);
 
-  // A state the device has not renewed (its link is down) is not sent again: tf takes no repeated stamps.
-  if (transforms_ && !joint_transforms_.empty() && sample.stamp > last_transform_stamp_)
+  // A state the device has not renewed (its link is down) is not sent again: tf takes no repeated stamps (the last
+  // one sent is kept, so a listener that comes later gets the next new state).
+  if (transforms_ && !joint_transforms_.empty() && sample.stamp > last_transform_stamp_ && transforms_->listened())
   {
     last_transform_stamp_ = sample.stamp;
     for (std::size_t index = 0; index < reported_joints_.size(); ++index)

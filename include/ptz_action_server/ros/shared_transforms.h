@@ -35,6 +35,11 @@ public:
 
   SharedTransforms();
 
+  /// True while /tf has a subscriber.
+  bool listened() const
+  {
+    return publisher_.listened();
+  }
   /// Sends moving joints on /tf (nothing while nobody listens); returns whether it sent them.
   bool send(const std::vector<geometry_msgs::TransformStamped>& transforms);
   /// Replaces the fixed joints of \p owner and republishes every owner's on the latched /tf_static.

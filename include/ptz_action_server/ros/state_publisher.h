@@ -31,10 +31,11 @@ namespace ptz_action_server
  * \brief Publishes the device's state at 10 Hz, whatever the backend does, and hands the samples on.
  *
  * Each tick runs on the process's TimerThread, which ticks every camera of a nodelet manager together, on one grid of
- * the period (one thread and one wake-up instead of a timer and a spinner thread per camera): it takes one backend sample, publishes
- * PtzState (with the supervisor's mode), joint_states and the pan and tilt transforms, updates the diagnostics
- * (backend status, measured ptz_state rate), and while a goal is active passes the sample to the handler. The
- * messages are built once in start() and reused, so a tick allocates nothing of its own.
+ * the period (one thread and one wake-up instead of a timer and a spinner thread per camera): it takes one backend
+ * sample, publishes PtzState (with the supervisor's mode), joint_states and the pan and tilt transforms, updates the
+ * diagnostics (backend status, measured ptz_state rate), and while a goal is active passes the sample to the handler.
+ * The messages are built once in start() and reused, so a tick allocates nothing of its own; a topic nobody listens to
+ * costs the tick nothing but the check.
  *
  * An axis whose device reports no position (AxisCapability::feedback false) is published as NaN in PtzState and is
  * left out of joint_states and tf: its pose is unknown, and a made-up one would mislead rviz and the clients.
