@@ -92,6 +92,13 @@ void StatePublisher::start()
     publishStaticTransforms();
   }
 
+  // What the device can do does not change: described once, not in every diagnostics message.
+  for (Axis axis : ALL_AXES)
+  {
+    capability_values_.emplace_back(std::string("can: ") + axisName(axis), describeAxis(limits_, axis));
+  }
+  capability_values_.emplace_back("can: device", describeExtras(limits_));
+
   takeWarnings();  // those of the start-up, before the first tick
   diagnostics_ = std::make_unique<diagnostic_updater::Updater>(node_handle_, ros::NodeHandle(node_name_), node_name_);
   diagnostics_->setHardwareID(backend_->name());
@@ -257,11 +264,10 @@ void StatePublisher::diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper
   status.add("state age (s)", secondsBetween(sample.stamp, clock_.now()));
   status.add("mode", static_cast<int>(supervisor_.mode()));
   status.add("device faults", sample.fault_count);
-  for (Axis axis : ALL_AXES)
+  for (const auto& [key, value] : capability_values_)
   {
-    status.add(std::string("can: ") + axisName(axis), describeAxis(limits_, axis));
+    status.add(key, value);
   }
-  status.add("can: device", describeExtras(limits_));
   for (std::size_t index = 0; index < warnings_.size(); ++index)
   {
     status.add("warning " + std::to_string(index + 1), warnings_[index]);

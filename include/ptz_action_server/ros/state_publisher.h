@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -116,8 +117,9 @@ private:
   double state_rate_min_ = 0.0;
   double state_rate_max_ = 0.0;
   std::unique_ptr<diagnostic_updater::FrequencyStatus> state_rate_;
-  std::unique_ptr<FieldOfViewPublisher> field_of_view_;  ///< null without a configured field of view
-  std::vector<std::string> warnings_;                    ///< every warning of the backend so far
+  std::unique_ptr<FieldOfViewPublisher> field_of_view_;                 ///< null without a configured field of view
+  std::vector<std::string> warnings_;                                   ///< every warning of the backend so far
+  std::vector<std::pair<std::string, std::string>> capability_values_;  ///< the "can: ..." diagnostics, from start()
   std::shared_ptr<TimerThread> timer_;
   TimerThread::Id tick_ = 0;
 };
