@@ -45,6 +45,7 @@ PtzActionServer::PtzActionServer(const ros::NodeHandle& node_handle, const NodeC
   , kinematics_(kinematics)
   , backend_(std::move(backend))
   , status_hold_(config.status_hold)
+  , status_release_timer_(node_handle_.getCallbackQueue(), [this] { releaseHeldStatuses(); })
 {
 }
 
@@ -53,10 +54,7 @@ PtzActionServer::~PtzActionServer()
   // Stop the state thread, the status release and the backend's reports first: they post callbacks that point at
   // this object.
   state_publisher_.reset();
-  if (timer_)
-  {
-    timer_->cancel(status_release_);
-  }
+  status_release_timer_.stop();
   if (listener_target_)
   {
     std::lock_guard<std::mutex> lock(listener_target_->mutex);
@@ -113,14 +111,6 @@ void PtzActionServer::start()
              backend_->name().c_str());
   }
   backend_->start();
-  // The held status changes are released from the process's timer thread onto the main queue: a roscpp steady timer
-  // would start roscpp's steady timer thread, which then wakes ten times a second for good.
-  timer_ = TimerThread::shared();
-  status_release_ = timer_->at(TimerThread::Clock::time_point::max(), [this] {
-    node_handle_.getCallbackQueue()->addCallback(
-        boost::make_shared<FunctionCallback>([this] { releaseHeldStatuses(); }), reinterpret_cast<uint64_t>(this));
-  });
-
   // Goals are checked against the tighter of the device's and the URDF's limits.
   const LimitIntersection intersection = intersectLimits(backend_->capabilities(), urdfLimits(kinematics_));
   for (const std::string& warning : intersection.warnings)
@@ -285,7 +275,7 @@ StatusPoster PtzActionServer::statusPoster()
 void PtzActionServer::armStatusRelease(TimePoint due)
 {
   status_release_armed_ = due != TimePoint::max();
-  timer_->move(status_release_, due);
+  status_release_timer_.startAt(due);
 }
 
 void PtzActionServer::releaseHeldStatuses()

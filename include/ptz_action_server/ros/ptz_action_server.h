@@ -22,7 +22,6 @@
 #include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/core/goal/status_hold.h"
-#include "ptz_action_server/core/timer_thread.h"
 #include "ptz_action_server/ros/action_kind.h"
 #include "ptz_action_server/ros/frame_goal_hold.h"
 #include "ptz_action_server/ros/frame_listener.h"
@@ -32,6 +31,7 @@
 #include "ptz_action_server/ros/node_action_server.h"
 #include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/preset_services.h"
+#include "ptz_action_server/ros/queue_timer.h"
 #include "ptz_action_server/ros/tick_costs.h"
 #include "ptz_action_server/ros/view_config.h"
 
@@ -171,9 +171,8 @@ private:
   std::unique_ptr<GoalSupervisor> supervisor_;       ///< the goal state machine, on the main thread; built by start()
   std::unique_ptr<StatePublisher> state_publisher_;  ///< the 10 Hz tick, on its own thread; built by start()
   SystemClock clock_;
-  StatusHold status_hold_;              ///< goal status changes after a new goal wait here (main thread)
-  std::shared_ptr<TimerThread> timer_;  ///< the process's; set by start()
-  TimerThread::Id status_release_ = 0;  ///< one-shot, armed while changes are held: queues releaseHeldStatuses()
+  StatusHold status_hold_;           ///< goal status changes after a new goal wait here (main thread)
+  QueueTimer status_release_timer_;  ///< one-shot, armed while changes are held (no roscpp timer, no thread of its own)
   bool status_release_armed_ = false;
   std::atomic<bool> supervising_{ false };  ///< supervisor_ is built: backend reports may be judged
   /// What the backend's listener reaches this server through; the destructor cuts it (the backend may outlive us).
