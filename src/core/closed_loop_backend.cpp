@@ -1,6 +1,7 @@
 #include "ptz_action_server/core/closed_loop_backend.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -15,16 +16,47 @@ namespace
 constexpr double RESEND_SHARE = 0.1;
 }  // namespace
 
+namespace
+{
+std::array<TimedSteering, AXIS_COUNT> timedSteeringOf(const ClosedLoopConfig& config)
+{
+  return { TimedSteering(config.stop_within[PAN], config.default_deceleration),
+           TimedSteering(config.stop_within[TILT], config.default_deceleration),
+           TimedSteering(config.stop_within[ZOOM], config.default_deceleration) };
+}
+}  // namespace
+
 ClosedLoopBackend::ClosedLoopBackend(std::shared_ptr<PtzBackend> inner, const ClosedLoopConfig& config)
-  : ForwardingBackend(std::move(inner)), config_(config), listener_target_(std::make_shared<ListenerTarget>())
+  : ForwardingBackend(std::move(inner))
+  , config_(config)
+  , listener_target_(std::make_shared<ListenerTarget>())
+  , axes_(timedSteeringOf(config))
+  , timer_(TimerThread::shared())
 {
   listener_target_->backend = this;
+  for (Axis axis : ALL_AXES)
+  {
+    // One timer an axis, unarmed until a timed move; it reaches this object as the listener does.
+    timers_[axis] = timer_->at(TimerThread::Clock::time_point::max(), [target = listener_target_, axis] {
+      std::lock_guard<std::mutex> lock(target->mutex);
+      if (target->backend != nullptr)
+      {
+        target->backend->timedStop(axis);
+      }
+    });
+  }
 }
 
 ClosedLoopBackend::~ClosedLoopBackend()
 {
-  std::lock_guard<std::mutex> lock(listener_target_->mutex);
-  listener_target_->backend = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(listener_target_->mutex);
+    listener_target_->backend = nullptr;
+  }
+  for (TimerThread::Id id : timers_)
+  {
+    timer_->cancel(id);  // a run under way finds no backend
+  }
 }
 
 bool ClosedLoopBackend::setSampleListener(SampleListener listener)
@@ -95,6 +127,7 @@ bool ClosedLoopBackend::steers() const
 void ClosedLoopBackend::goTo(const AxisValues& position)
 {
   std::lock_guard<std::mutex> lock(mutex_);
+  endSteeringLocked();
   refreshSteeringLocked();
   if (!steers())
   {
@@ -116,6 +149,10 @@ void ClosedLoopBackend::goTo(const AxisValues& position)
   target_ = position;
   steering_ = true;
   sent_velocity_ = AxisValues{};
+  for (Axis axis : ALL_AXES)
+  {
+    axes_[axis].startGoal(position[axis], capabilities_.axes[axis].acceleration);
+  }
   if (any_direct)
   {
     inner().goTo(direct);
@@ -126,15 +163,24 @@ void ClosedLoopBackend::goTo(const AxisValues& position)
 void ClosedLoopBackend::moveAtVelocity(const AxisValues& velocity)
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  steering_ = false;
+  endSteeringLocked();
   inner().moveAtVelocity(velocity);
 }
 
 void ClosedLoopBackend::stop()
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  steering_ = false;
+  endSteeringLocked();
   inner().stop();
+}
+
+void ClosedLoopBackend::endSteeringLocked()
+{
+  steering_ = false;
+  for (TimerThread::Id id : timers_)
+  {
+    timer_->move(id, TimerThread::Clock::time_point::max());
+  }
 }
 
 double ClosedLoopBackend::speedFor(Axis axis, double position) const
@@ -170,9 +216,14 @@ void ClosedLoopBackend::steerLocked()
   const PtzSample sample = inner().sample();
   if (!sample.link_up)
   {
-    steering_ = false;  // the goal ends as link lost; nothing is resumed when the device answers again
+    endSteeringLocked();  // the goal ends as link lost; nothing is resumed when the device answers again
     return;
   }
+  if (last_report_ != TimePoint{} && sample.stamp > last_report_)
+  {
+    report_period_ = 0.8 * report_period_ + 0.2 * std::min(1.0, secondsBetween(last_report_, sample.stamp));
+  }
+  last_report_ = sample.stamp;
   AxisValues velocity{};
   bool moving = false;
   bool changed = false;
@@ -182,24 +233,137 @@ void ClosedLoopBackend::steerLocked()
     {
       continue;
     }
-    velocity[axis] = speedFor(axis, sample.position[axis]);
-    moving = moving || velocity[axis] != 0.0;
+    axes_[axis].observe(sample.stamp, sample.position[axis]);
+    if (axes_[axis].fixedSpeed() && !told_[axis])
+    {
+      told_[axis] = true;
+      warnings_.push_back(formatText("the %s moves at one speed (%.3g %s/s) whatever the speed it is given: position "
+                                     "goals steer it by timed moves at that speed",
+                                     axisName(axis), axes_[axis].speed(), unitOf(axis)));
+    }
+    velocity[axis] = nextSpeed(axis, sample);
+    if (!steering_)
+    {
+      return;  // it gave up
+    }
+    moving = moving || velocity[axis] != 0.0 || axes_[axis].busy();  // a timed move's axis may coast, stopped
     const double floor = config_.min_speed_share * capabilities_.axes[axis].max_speed;
-    changed = changed || std::abs(velocity[axis] - sent_velocity_[axis]) >
-                             RESEND_SHARE * std::max(std::abs(sent_velocity_[axis]), floor);
+    // An axis at one speed changes only when it starts, stops or turns: its magnitude means nothing to it.
+    changed = changed ||
+              (axes_[axis].fixedSpeed() ? std::copysign(1.0, velocity[axis]) * (velocity[axis] != 0.0) !=
+                                              std::copysign(1.0, sent_velocity_[axis]) * (sent_velocity_[axis] != 0.0) :
+                                          std::abs(velocity[axis] - sent_velocity_[axis]) >
+                                              RESEND_SHARE * std::max(std::abs(sent_velocity_[axis]), floor));
   }
   if (!moving)
   {
-    steering_ = false;
+    endSteeringLocked();
     inner().stop();
     return;
   }
   if (changed)
   {
-    sent_velocity_ = velocity;
     ++steps_;
+    command(velocity, sample.stamp);
+  }
+}
+
+double ClosedLoopBackend::nextSpeed(Axis axis, const PtzSample& sample)
+{
+  TimedSteering& steering = axes_[axis];
+  if (!steering.fixedSpeed())
+  {
+    return speedFor(axis, sample.position[axis]);
+  }
+  const TimedSteering::Step step = steering.step(report_period_);
+  if (step.gave_up)
+  {
+    giveUpLocked(axis);
+    return 0.0;
+  }
+  if (step.stop_after >= 0.0)
+  {
+    ++timed_moves_;
+    timer_->move(timers_[axis], TimerThread::Clock::now() + std::chrono::duration_cast<TimerThread::Clock::duration>(
+                                                                std::chrono::duration<double>(step.stop_after)));
+  }
+  return step.speed;
+}
+
+void ClosedLoopBackend::command(const AxisValues& velocity, TimePoint at)
+{
+  sent_velocity_ = velocity;
+  for (Axis axis : ALL_AXES)
+  {
+    axes_[axis].commanded(velocity[axis], at);
+  }
+  if (std::all_of(velocity.begin(), velocity.end(), [](double speed) { return speed == 0.0; }))
+  {
+    inner().stop();
+  }
+  else
+  {
     inner().moveAtVelocity(velocity);
   }
+}
+
+void ClosedLoopBackend::timedStop(Axis axis)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!steering_ || sent_velocity_[axis] == 0.0)
+  {
+    return;
+  }
+  axes_[axis].timedStopDone();
+  AxisValues velocity = sent_velocity_;
+  velocity[axis] = 0.0;
+  command(velocity, last_report_);
+}
+
+void ClosedLoopBackend::giveUpLocked(Axis axis)
+{
+  const TimedSteering& steering = axes_[axis];
+  endSteeringLocked();
+  inner().stop();
+  if (std::abs(steering.remaining()) <= 2.0 * config_.stop_within[axis])
+  {
+    return;  // within the goal's tolerance (twice stop_within): the node judges it reached
+  }
+  own_fault_ = formatText("the %s moves at one speed (%.3g %s/s) whatever the speed it is given, and its timed moves "
+                          "stop it no nearer than %.4f %s to %.4f %s (each goes on %.4f %s past its stop): a tolerance "
+                          "above that fits this device",
+                          axisName(axis), steering.speed(), unitOf(axis), std::abs(steering.remaining()), unitOf(axis),
+                          target_[axis], unitOf(axis), steering.coast(), unitOf(axis));
+  inner_faults_at_own_ = inner().sample().fault_count;
+  ++own_faults_;
+}
+
+PtzSample ClosedLoopBackend::sample() const
+{
+  PtzSample sample = inner().sample();
+  std::lock_guard<std::mutex> lock(mutex_);
+  sample.fault_count += own_faults_;
+  return sample;
+}
+
+std::string ClosedLoopBackend::lastFault() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  // Its own when no fault of the wrapped backend came after it.
+  if (own_faults_ > 0 && inner().sample().fault_count == inner_faults_at_own_)
+  {
+    return own_fault_;
+  }
+  return inner().lastFault();
+}
+
+std::vector<std::string> ClosedLoopBackend::takeWarnings()
+{
+  std::vector<std::string> warnings = inner().takeWarnings();
+  std::lock_guard<std::mutex> lock(mutex_);
+  warnings.insert(warnings.end(), warnings_.begin(), warnings_.end());
+  warnings_.clear();
+  return warnings;
 }
 
 void ClosedLoopBackend::diagnostics(std::vector<DiagnosticValue>& values) const
@@ -218,6 +382,16 @@ void ClosedLoopBackend::diagnostics(std::vector<DiagnosticValue>& values) const
     }
     values.emplace_back("position goals steered on velocity", axes);
     values.emplace_back("steering speed commands", std::to_string(steps_));
+    for (Axis axis : ALL_AXES)
+    {
+      if (steered_[axis] && axes_[axis].fixedSpeed())
+      {
+        values.emplace_back(std::string(axisName(axis)) + " speed, whatever it is given",
+                            formatText("%.3g %s/s (coasts %.4f %s after a stop)", axes_[axis].speed(), unitOf(axis),
+                                       axes_[axis].coast(), unitOf(axis)));
+      }
+    }
+    values.emplace_back("timed moves", std::to_string(timed_moves_));
   }
 }
 

@@ -157,7 +157,7 @@ HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::stri
 {
   const std::size_t question = target.find('?');
   const std::string path = target.substr(0, question);
-  if (path != vapix::PTZ_PATH && path != vapix::PARAM_PATH)
+  if (path != vapix::PTZ_PATH && path != vapix::PARAM_PATH && path != vapix::QUEUE_PATH)
   {
     return HttpAnswer{ 404, "text/html", "<HTML><HEAD><TITLE>404 Not Found</TITLE></HEAD></HTML>\r\n" };
   }
@@ -175,11 +175,27 @@ HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::stri
 
   std::lock_guard<std::mutex> lock(mutex_);
   const TimePoint now = clock_->now();
+  std::string set_cookie;
+  const std::string client = clientOf(server_->requestCookie(), set_cookie);
+  if (!set_cookie.empty())
+  {
+    server_->setAnswerCookie(set_cookie);
+  }
+  return command(path, values, client, now);
+}
+
+HttpAnswer AxisCameraEmulator::command(const std::string& path, std::map<std::string, std::string>& values,
+                                       const std::string& client, TimePoint now)
+{
   double camera = 1.0;
   if (values.count("camera") && (!parseNumber(values["camera"], camera) || camera < 1 || camera > config_.cameras ||
                                  camera != std::floor(camera)))
   {
     return errorBody("camera: invalid camera: " + values["camera"]);
+  }
+  if (path == vapix::QUEUE_PATH)
+  {
+    return queueAnswer(values["control"], client, now);
   }
   if (values.count("info"))
   {
@@ -249,6 +265,10 @@ HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::stri
   if (refuse_)
   {
     return errorBody(REFUSAL);
+  }
+  if (!mayMove(client, now))
+  {
+    return HttpAnswer{ 204, "text/plain", "" };  // taken, and nothing moves
   }
 
   if (numbers["speed"].given)
@@ -383,6 +403,10 @@ HttpAnswer AxisCameraEmulator::info() const
 
 HttpAnswer AxisCameraEmulator::parameters(const std::string& action, const std::string& group) const
 {
+  if (action == "list" && group.rfind("root.PTZ", 0) == 0)
+  {
+    return HttpAnswer{ 200, "text/plain", queueParameters(group) };
+  }
   if (action == "list" && (group == "root.Brand" || group == "Brand"))
   {
     return HttpAnswer{ 200, "text/plain",

@@ -300,12 +300,16 @@ private:
     else
     {
       const auto authorization = request_.find(http::field::authorization);
+      const auto cookie = request_.find(http::field::cookie);
+      server_.request_cookie_ = cookie == request_.end() ? std::string() : std::string(cookie->value());
+      server_.answer_cookie_.clear();
       answer = server_.answer(exchange.method, exchange.target, exchange.body,
                               authorization == request_.end() ? std::string() : std::string(authorization->value()),
                               challenge);
     }
     exchange.status = answer.status;
     server_.received_.add(exchange);
+    set_cookie_ = error_status != 0 ? std::string() : server_.answer_cookie_;
     respond(answer, challenge, request_.keep_alive(), delay, endless);
   }
 
@@ -319,6 +323,10 @@ private:
     if (!challenge.empty())
     {
       response_.set(http::field::www_authenticate, challenge);
+    }
+    if (!set_cookie_.empty())
+    {
+      response_.set(http::field::set_cookie, set_cookie_);
     }
     if (answer.status != 204)
     {
@@ -375,6 +383,7 @@ private:
   boost::beast::flat_buffer buffer_;
   http::request<http::string_body> request_;
   http::response<http::string_body> response_;
+  std::string set_cookie_;  ///< the Set-Cookie of the answer being sent ("" none)
 };
 
 HttpCameraServer::HttpCameraServer(const HttpCameraServerConfig& config, Handler handler, Open open)
@@ -595,7 +604,9 @@ HttpAnswer HttpCameraServer::answer(const std::string& method, const std::string
 {
   if (config_.auth == HttpAuth::NONE || (open_ && open_(target)))
   {
-    return handler_(method, target, body);
+    HttpAnswer answered = handler_(method, target, body);
+    challenge = answered.challenge;
+    return answered;
   }
   bool stale = false;
   if (authorised(method, target, authorization, stale))

@@ -6,30 +6,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "mavlink_gimbal_emulator_internal.h"
 #include "ptz_action_server/core/units.h"
 
 namespace ptz_action_server
 {
-namespace
-{
-using namespace mavlink;
-
-constexpr float UNCHANGED = -1.0f;
-constexpr float MANAGER_ITSELF = -2.0f;
-constexpr float RELEASE = -3.0f;
-/// GIMBAL_MANAGER_CAP_FLAGS of a two-axis gimbal that goes to neutral, follows or locks pitch and yaw.
-constexpr std::uint32_t CAPABILITIES =
-    gimbal_caps::HAS_NEUTRAL | gimbal_caps::HAS_PITCH_AXIS | gimbal_caps::HAS_PITCH_FOLLOW |
-    gimbal_caps::HAS_PITCH_LOCK | gimbal_caps::HAS_YAW_AXIS | gimbal_caps::HAS_YAW_FOLLOW | gimbal_caps::HAS_YAW_LOCK;
-constexpr std::uint8_t MAV_TYPE_QUADROTOR = 2;
-constexpr std::uint8_t MAV_AUTOPILOT_PX4 = 12;
-
-std::uint32_t millisecondsOf(TimePoint at)
-{
-  return static_cast<std::uint32_t>(
-      std::chrono::duration_cast<std::chrono::milliseconds>(at.time_since_epoch()).count());
-}
-}  // namespace
+using namespace mavlink_emulator;
 
 SimDeviceConfig defaultMavlinkGimbalDevice()
 {
@@ -41,41 +23,6 @@ SimDeviceConfig defaultMavlinkGimbalDevice()
   device.axes[ZOOM].range = AxisRange{ 1.0, 1.0 };
   return device;
 }
-
-/// One gimbal and its manager's state for it.
-struct MavlinkGimbalEmulator::Gimbal
-{
-  Gimbal(const MavlinkEmulatedGimbal& config, std::uint8_t manager, double attitude_interval, TimePoint now)
-    : device_id(config.device_id)
-    , manager(manager)
-    , device(config.device)
-    , model(config.device, now)
-    , attitude_interval(attitude_interval)
-  {
-  }
-  /// A MAVLink gimbal device of its own (not inside its manager's component).
-  bool separate() const
-  {
-    return !isInternalGimbalId(device_id);
-  }
-  /// The component that sends its attitude.
-  std::uint8_t attitudeComponent() const
-  {
-    return separate() ? device_id : manager;
-  }
-
-  const std::uint8_t device_id;
-  const std::uint8_t manager;
-  const SimDeviceConfig device;
-  SimDeviceModel model;
-  std::uint8_t primary_system = 0;
-  std::uint8_t primary_component = 0;
-  bool control_kept = false;  ///< another controller holds control and refuses to give it up
-  double attitude_interval;
-  TimePoint attitude_at{};
-  bool rates_active = false;
-  TimePoint rates_until{};
-};
 
 MavlinkGimbalEmulator::MavlinkGimbalEmulator(const MavlinkGimbalEmulatorConfig& config,
                                              std::shared_ptr<const Clock> clock)
@@ -320,6 +267,8 @@ void MavlinkGimbalEmulator::send(std::uint8_t component, const Message& message)
   const EncodedFrame frame = encode(FrameHeader{ sequence_++, config_.system_id, component }, message);
   port_->send(frame.data(), frame.size);  // udp: to the controller, once one has sent something
 }
+// The commands' acknowledgements go out from mavlink_gimbal_emulator_commands.cpp.
+template void MavlinkGimbalEmulator::send<CommandAck>(std::uint8_t component, const CommandAck& message);
 
 void MavlinkGimbalEmulator::tick()
 {
@@ -342,11 +291,13 @@ void MavlinkGimbalEmulator::tick()
       Heartbeat heartbeat;
       const bool autopilot = component == MAV_COMP_ID_AUTOPILOT1;
       heartbeat.type = autopilot ? MAV_TYPE_QUADROTOR : MAV_TYPE_GIMBAL;
-      heartbeat.autopilot = autopilot ? MAV_AUTOPILOT_PX4 : MAV_AUTOPILOT_INVALID;
+      heartbeat.autopilot = !autopilot              ? MAV_AUTOPILOT_INVALID :
+                            config_.v1_mount_status ? MAV_AUTOPILOT_ARDUPILOTMEGA :
+                                                      MAV_AUTOPILOT_PX4;
       send(component, heartbeat);
     }
   }
-  if (secondsBetween(status_at_, now) >= config_.status_period)
+  if (secondsBetween(status_at_, now) >= config_.status_period && !config_.gimbal_v1)
   {
     status_at_ = now;
     for (const auto& gimbal : gimbals_)
@@ -393,6 +344,16 @@ void MavlinkGimbalEmulator::sendAttitude(Gimbal& gimbal, TimePoint now)
 {
   gimbal.attitude_at = now;
   const PtzSample state = gimbal.model.sample(now);
+  if (config_.gimbal_v1)
+  {
+    sendMountAttitude(gimbal, state, now);
+    return;
+  }
+  if (config_.px4_gimbal_output)
+  {
+    sendPx4Attitude(gimbal, state, now);
+    return;
+  }
   GimbalDeviceAttitudeStatus attitude;
   attitude.time_boot_ms = millisecondsOf(now);
   const double yaw = state.position[PAN] + (config_.report_earth_frame ? config_.vehicle_yaw : 0.0);
@@ -489,208 +450,42 @@ void MavlinkGimbalEmulator::handle(const Frame& frame, TimePoint now)
   }
 }
 
-void MavlinkGimbalEmulator::handleCommand(std::uint8_t component, const Frame& frame, const CommandLong& command,
-                                          TimePoint now)
+void MavlinkGimbalEmulator::sendMountAttitude(const Gimbal& gimbal, const PtzSample& state, TimePoint now)
 {
-  CommandAck ack;
-  ack.command = command.command;
-  ack.target_system = frame.header.system_id;
-  ack.target_component = frame.header.component_id;
-  ack.result = Result::ACCEPTED;
-  const std::vector<Gimbal*> managed = addressed(component, 0);
-  const bool manager = !managed.empty();
-  std::vector<const Gimbal*> informed, reported;  // answered with their information, their status
-  switch (command.command)
+  if (config_.v1_mount_status)
   {
-    case command_id::REQUEST_MESSAGE:
-      if (manager && command.params[0] == static_cast<float>(message_id::GIMBAL_MANAGER_INFORMATION))
-      {
-        informed.assign(managed.begin(), managed.end());
-      }
-      else if (manager && command.params[0] == static_cast<float>(message_id::GIMBAL_MANAGER_STATUS))
-      {
-        reported.assign(managed.begin(), managed.end());
-      }
-      else
-      {
-        ack.result = Result::UNSUPPORTED;  // a gimbal device is no manager; other messages are not modelled
-      }
-      break;
-    case command_id::SET_MESSAGE_INTERVAL: {
-      ack.result = Result::UNSUPPORTED;
-      if (command.params[0] != static_cast<float>(message_id::GIMBAL_DEVICE_ATTITUDE_STATUS))
-      {
-        break;
-      }
-      const float interval_us = command.params[1];
-      for (const auto& gimbal : gimbals_)
-      {
-        if (gimbal->attitudeComponent() == component)  // the attitudes this component sends
-        {
-          gimbal->attitude_interval = interval_us < 0.0f  ? 0.0 :
-                                      interval_us == 0.0f ? config_.attitude_interval :
-                                                            interval_us / 1e6;
-          ack.result = Result::ACCEPTED;
-        }
-      }
-      break;
-    }
-    case command_id::DO_GIMBAL_MANAGER_CONFIGURE: {
-      if (!manager)
-      {
-        ack.result = Result::UNSUPPORTED;
-        break;
-      }
-      const std::vector<Gimbal*> targets = addressed(component, static_cast<std::uint8_t>(command.params[6]));
-      ack.result = targets.empty() ? Result::DENIED : Result::ACCEPTED;  // no such gimbal here
-      for (Gimbal* gimbal : targets)
-      {
-        if (configure(*gimbal, frame, command) != Result::ACCEPTED)
-        {
-          ack.result = Result::DENIED;
-        }
-        reported.push_back(gimbal);
-      }
-      break;
-    }
-    case command_id::DO_GIMBAL_MANAGER_PITCHYAW: {
-      if (!manager)
-      {
-        ack.result = Result::UNSUPPORTED;
-        break;
-      }
-      const std::vector<Gimbal*> targets = addressed(component, static_cast<std::uint8_t>(command.params[6]));
-      ack.result = targets.empty() ? Result::DENIED : Result::ACCEPTED;
-      for (Gimbal* gimbal : targets)
-      {
-        if (refuse_ || !fromPrimary(*gimbal, frame))
-        {
-          ack.result = Result::DENIED;
-          continue;
-        }
-        // The command's degrees as the message's radians.
-        execute(*gimbal, static_cast<std::uint32_t>(command.params[4]),
-                static_cast<float>(toRadians(command.params[0])), static_cast<float>(toRadians(command.params[1])),
-                static_cast<float>(toRadians(command.params[2])), static_cast<float>(toRadians(command.params[3])),
-                now);
-      }
-      break;
-    }
-    default:
-      ack.result = Result::UNSUPPORTED;
-  }
-  if (ack.result == Result::DENIED)
-  {
-    ++counters_.commands_denied;
-  }
-  send(component, ack);
-  for (const Gimbal* gimbal : informed)
-  {
-    sendInformation(*gimbal);
-  }
-  for (const Gimbal* gimbal : reported)
-  {
-    sendStatus(*gimbal);
-  }
-}
-
-Result MavlinkGimbalEmulator::configure(Gimbal& gimbal, const Frame& frame, const CommandLong& command)
-{
-  if (refuse_)
-  {
-    return Result::DENIED;
-  }
-  const float system = command.params[0];
-  const float component = command.params[1];
-  if (system == UNCHANGED)
-  {
-    return Result::ACCEPTED;
-  }
-  const bool held = gimbal.primary_system != 0 || gimbal.primary_component != 0;
-  if (gimbal.control_kept && held && !fromPrimary(gimbal, frame))
-  {
-    return Result::DENIED;
-  }
-  if (system == RELEASE)
-  {
-    if (fromPrimary(gimbal, frame))  // "remove control if currently in control"
-    {
-      gimbal.primary_system = gimbal.primary_component = 0;
-    }
-    return Result::ACCEPTED;
-  }
-  if (system == MANAGER_ITSELF)
-  {
-    gimbal.primary_system = config_.system_id;
-    gimbal.primary_component = gimbal.manager;
-  }
-  else if (system >= 0.0f && system <= 255.0f && component >= 0.0f && component <= 255.0f)
-  {
-    gimbal.primary_system = static_cast<std::uint8_t>(system);
-    gimbal.primary_component = static_cast<std::uint8_t>(component);
-  }
-  else
-  {
-    return Result::DENIED;
-  }
-  gimbal.control_kept = false;
-  return Result::ACCEPTED;
-}
-
-void MavlinkGimbalEmulator::setpoint(Gimbal& gimbal, const Frame& frame, std::uint32_t flags, float pitch, float yaw,
-                                     float pitch_rate, float yaw_rate, TimePoint now)
-{
-  if (!fromPrimary(gimbal, frame))
-  {
-    ++counters_.setpoints_ignored;  // as PX4 does: no answer to a message from a non-primary sender
+    MountStatus status;  // centidegrees: pitch, roll, yaw
+    status.pointing_a = static_cast<std::int32_t>(std::lround(toDegrees(state.position[TILT]) * 100.0));
+    status.pointing_c = static_cast<std::int32_t>(std::lround(toDegrees(state.position[PAN]) * 100.0));
+    send(gimbal.manager, status);
     return;
   }
-  execute(gimbal, flags, pitch, yaw, pitch_rate, yaw_rate, now);
+  MountOrientation orientation;
+  orientation.time_boot_ms = millisecondsOf(now);
+  orientation.pitch = static_cast<float>(toDegrees(state.position[TILT]));
+  orientation.yaw = static_cast<float>(toDegrees(state.position[PAN]));
+  orientation.yaw_absolute = static_cast<float>(toDegrees(state.position[PAN] + config_.vehicle_yaw));
+  send(gimbal.manager, orientation);
 }
 
-void MavlinkGimbalEmulator::execute(Gimbal& gimbal, std::uint32_t flags, float pitch, float yaw, float pitch_rate,
-                                    float yaw_rate, TimePoint now)
+void MavlinkGimbalEmulator::sendPx4Attitude(const Gimbal& gimbal, const PtzSample& state, TimePoint now)
 {
-  ++counters_.setpoints_executed;
-  for (std::size_t index = 0; index < gimbals_.size(); ++index)
+  // As PX4's gimbal module: the output angles (relative to the vehicle), the same flags every time, no delta_yaw.
+  GimbalDeviceAttitudeStatus attitude;
+  attitude.time_boot_ms = millisecondsOf(now);
+  attitude.q = quaternionFromPanTilt(state.position[PAN], state.position[TILT]);
+  attitude.flags = static_cast<std::uint16_t>(gimbal_flags::NEUTRAL | gimbal_flags::ROLL_LOCK |
+                                              gimbal_flags::PITCH_LOCK | gimbal_flags::YAW_LOCK);
+  attitude.delta_yaw = 0.0f;
+  attitude.delta_yaw_velocity = 0.0f;
+  attitude.gimbal_device_id = gimbal.device_id;
+  Attitude vehicle;  // PX4 streams the vehicle's ATTITUDE on every link
+  vehicle.time_boot_ms = attitude.time_boot_ms;
+  vehicle.yaw = static_cast<float>(config_.vehicle_yaw);
+  for (unsigned copy = 0; copy < flood_; ++copy)
   {
-    if (gimbals_[index].get() == &gimbal)
-    {
-      ++counters_.executed_per_gimbal[index];
-    }
-  }
-  if ((flags & gimbal_flags::RETRACT) != 0)
-  {
-    return;  // no retracted position (no HAS_RETRACT): stays where it is
-  }
-  if ((flags & gimbal_flags::NEUTRAL) != 0)
-  {
-    gimbal.rates_active = false;
-    gimbal.model.goToAxis(PAN, 0.0, now);
-    gimbal.model.goToAxis(TILT, 0.0, now);
-    return;
-  }
-  // A yaw relative to North: the model turns in the vehicle frame.
-  const double yaw_offset = yawInEarthFrame(flags) ? -config_.vehicle_yaw : 0.0;
-  if (std::isfinite(pitch) || std::isfinite(yaw))
-  {
-    gimbal.rates_active = false;
-    if (std::isfinite(yaw))
-    {
-      gimbal.model.goToAxis(PAN, std::remainder(yaw + yaw_offset, 2.0 * M_PI), now);
-    }
-    if (std::isfinite(pitch))
-    {
-      gimbal.model.goToAxis(TILT, pitch, now);
-    }
-    return;
-  }
-  if (std::isfinite(yaw_rate) || std::isfinite(pitch_rate))
-  {
-    gimbal.model.moveAxisAtVelocity(PAN, std::isfinite(yaw_rate) ? yaw_rate : 0.0, now);
-    gimbal.model.moveAxisAtVelocity(TILT, std::isfinite(pitch_rate) ? pitch_rate : 0.0, now);
-    gimbal.rates_active = true;
-    gimbal.rates_until = now + toDuration(config_.rate_timeout);
+    send(gimbal.attitudeComponent(), attitude);
+    send(MAV_COMP_ID_AUTOPILOT1, vehicle);
   }
 }
 

@@ -2,8 +2,9 @@
 
 #include <chrono>
 #include <cmath>
-#include <initializer_list>
+#include <limits>
 
+#include "onvif_camera_emulator_internal.h"
 #include "ptz_action_server/core/http/crypto.h"
 #include "ptz_action_server/core/onvif/onvif_codec.h"
 #include "ptz_action_server/core/text.h"
@@ -11,24 +12,10 @@
 
 namespace ptz_action_server
 {
-namespace
+namespace onvif_emulator
 {
 using namespace onvif;
 
-constexpr const char* DEVICE_PATH = "/onvif/device_service";
-constexpr const char* MEDIA_PATH = "/onvif/media_service";
-constexpr const char* PTZ_PATH = "/onvif/ptz_service";
-constexpr const char* CONTENT_TYPE = "application/soap+xml; charset=utf-8";
-constexpr const char* PROFILE = "profile_1";  ///< the profile with PTZ
-constexpr const char* PROFILE_WITHOUT_PTZ = "profile_0";
-constexpr const char* CONFIGURATION = "ptz0";
-constexpr const char* NODE = "node0";
-constexpr const char* VIDEO_SOURCE = "video_source_0";
-constexpr double MIN_TIMEOUT = 1.0;   ///< s, the PTZTimeout range GetConfigurationOptions lists
-constexpr double MAX_TIMEOUT = 60.0;  ///< s
-constexpr double MOVING = 1e-6;       ///< rad/s (X/s) an axis moves faster than when MoveStatus says MOVING
-
-/// An answer in the camera's own prefixes: env for SOAP, a default namespace for the response's service.
 HttpAnswer respond(const char* service, const std::string& content)
 {
   return HttpAnswer{ 200, CONTENT_TYPE,
@@ -38,7 +25,6 @@ HttpAnswer respond(const char* service, const std::string& content)
                          "</env:Body></env:Envelope>" };
 }
 
-/// A SOAP fault: env:Sender (HTTP 400) or env:Receiver (HTTP 500), then the subcodes, outermost first.
 HttpAnswer fault(bool sender, std::initializer_list<const char*> subcodes, const std::string& reason)
 {
   std::string code = std::string("<env:Code><env:Value>") + (sender ? "env:Sender" : "env:Receiver") + "</env:Value>";
@@ -55,7 +41,6 @@ HttpAnswer fault(bool sender, std::initializer_list<const char*> subcodes, const
                          "</env:Text></env:Reason></env:Fault></env:Body></env:Envelope>" };
 }
 
-/// env:Sender / ter:InvalidArgVal / ter:\p what, as the PTZ service's argument faults are.
 HttpAnswer invalid(const char* what, const std::string& reason)
 {
   return fault(true, { "ter:InvalidArgVal", what }, reason);
@@ -66,23 +51,8 @@ HttpAnswer notSupported(const std::string& operation)
   return fault(false, { "ter:ActionNotSupported" }, "The operation " + operation + " is not supported");
 }
 
-std::string range(const char* name, double min, double max)
+namespace
 {
-  return formatText("<sch:%s><sch:Min>%g</sch:Min><sch:Max>%g</sch:Max></sch:%s>", name, min, max, name);
-}
-
-std::string space(const char* kind, const char* uri, double min, double max)
-{
-  return std::string("<sch:") + kind + "><sch:URI>" + uri + "</sch:URI>" + range("XRange", min, max) + "</sch:" + kind +
-         ">";
-}
-
-std::string space(const char* kind, const char* uri, double x_min, double x_max, double y_min, double y_max)
-{
-  return std::string("<sch:") + kind + "><sch:URI>" + uri + "</sch:URI>" + range("XRange", x_min, x_max) +
-         range("YRange", y_min, y_max) + "</sch:" + kind + ">";
-}
-
 bool number(const char* text, double& value)
 {
   char* end = nullptr;
@@ -94,23 +64,25 @@ bool number(const char* text, double& value)
   return end != text && *end == '\0' && std::isfinite(value);
 }
 
-std::string videoSourceConfiguration()
+/// A media configuration of the profiles, as clients expect each profile to have one (the npm onvif client takes a
+/// profile with a video source and a video encoder configuration as a video source's default profile).
+std::string videoConfigurations(const char* encoder_token, int width, int height)
 {
   return std::string("<sch:VideoSourceConfiguration token=\"video_source_configuration_0\"><sch:Name>video</sch:Name>"
                      "<sch:UseCount>2</sch:UseCount><sch:SourceToken>") +
          VIDEO_SOURCE +
          "</sch:SourceToken><sch:Bounds x=\"0\" y=\"0\" width=\"1920\" "
-         "height=\"1080\"/></sch:VideoSourceConfiguration>";
+         "height=\"1080\"/></sch:VideoSourceConfiguration>" +
+         "<sch:VideoEncoderConfiguration token=\"" + encoder_token + "\"><sch:Name>" + encoder_token +
+         "</sch:Name><sch:UseCount>1</sch:UseCount><sch:Encoding>H264</sch:Encoding>" +
+         formatText("<sch:Resolution><sch:Width>%d</sch:Width><sch:Height>%d</sch:Height></sch:Resolution>", width,
+                    height) +
+         "<sch:Quality>5</sch:Quality><sch:RateControl><sch:FrameRateLimit>25</"
+         "sch:FrameRateLimit><sch:EncodingInterval>"
+         "1</sch:EncodingInterval><sch:BitrateLimit>4096</sch:BitrateLimit></sch:RateControl><sch:SessionTimeout>PT60S"
+         "</sch:SessionTimeout></sch:VideoEncoderConfiguration>";
 }
-
-/// The pan-tilt part of a position vector read: x, y in \p space_uri ("" for none given).
-struct PanTiltArgument
-{
-  bool given = false;
-  double x = 0.0, y = 0.0;
-  std::string space;
-  bool numbers = true;
-};
+}  // namespace
 
 PanTiltArgument panTiltOf(const Element* vector)
 {
@@ -127,14 +99,6 @@ PanTiltArgument panTiltOf(const Element* vector)
   return argument;
 }
 
-struct ZoomArgument
-{
-  bool given = false;
-  double x = 0.0;
-  std::string space;
-  bool number = true;
-};
-
 ZoomArgument zoomOf(const Element* vector)
 {
   ZoomArgument argument;
@@ -149,11 +113,29 @@ ZoomArgument zoomOf(const Element* vector)
   argument.space = uri == nullptr ? "" : uri;
   return argument;
 }
+}  // namespace onvif_emulator
+
+using namespace onvif;
+using namespace onvif_emulator;
+
+namespace
+{
+/// The motion model of \p config: its zoom ends where its lens really does (honoured_zoom of the listed range).
+SimDeviceConfig modelOf(const OnvifCameraEmulatorConfig& config)
+{
+  SimDeviceConfig device = config.device;
+  AxisRange& zoom = device.axes[ZOOM].range;
+  zoom.max = std::pow(zoom.max, std::clamp(config.honoured_zoom, 0.0, 1.0));
+  return device;
+}
 }  // namespace
 
 const char* const OnvifCameraEmulatorConfig::MODES = "standard, generic-status, continuous-only, refuse-absolute-move, "
-                                                     "no-position, no-presets, wrong-generic-range, no-relative, "
-                                                     "generic-only";
+                                                     "no-position, no-presets, wrong-generic-range, "
+                                                     "no-relative, generic-only, wrong-address, ptz-profile-second, "
+                                                     "timeout-range, axis-401, stop-keeps-moving, "
+                                                     "absolute-never-moves, speed-ignores-magnitude, "
+                                                     "zoom-only-moves-pantilt, zoom-range-not-honoured";
 
 SimDeviceConfig OnvifCameraEmulatorConfig::defaultDevice()
 {
@@ -203,6 +185,46 @@ bool OnvifCameraEmulatorConfig::applyMode(const std::string& mode)
   {
     degree_space = false;
   }
+  else if (mode == "wrong-address")
+  {
+    advertised_host = "127.0.0.2";  // wrong, as some firmware's, and still on this machine
+  }
+  else if (mode == "ptz-profile-second")
+  {
+    ptz_profile_first = false;
+  }
+  else if (mode == "timeout-range")
+  {
+    min_timeout = 1.0;
+    max_timeout = 10.0;
+  }
+  else if (mode == "axis-401")
+  {
+    open_clock = false;
+  }
+  else if (mode == "stop-keeps-moving")
+  {
+    stop_keeps_moving = true;
+  }
+  else if (mode == "absolute-never-moves")
+  {
+    absolute_never_moves = true;
+  }
+  else if (mode == "speed-ignores-magnitude")
+  {
+    fixed_speed_share = 0.5;
+    // Such cameras' steppers start and stop at once.
+    device.axes[PAN].motion.acceleration = 20.0;
+    device.axes[TILT].motion.acceleration = 20.0;
+  }
+  else if (mode == "zoom-only-moves-pantilt")
+  {
+    backlash = toRadians(2.0);
+  }
+  else if (mode == "zoom-range-not-honoured")
+  {
+    honoured_zoom = 0.5;
+  }
   else if (mode != "standard")
   {
     return false;
@@ -211,8 +233,9 @@ bool OnvifCameraEmulatorConfig::applyMode(const std::string& mode)
 }
 
 OnvifCameraEmulator::OnvifCameraEmulator(const OnvifCameraEmulatorConfig& config, std::shared_ptr<const Clock> clock)
-  : config_(config), clock_(std::move(clock)), model_(config.device, clock_->now())
+  : config_(config), clock_(std::move(clock)), model_(modelOf(config), clock_->now())
 {
+  approach_.fill(std::numeric_limits<double>::quiet_NaN());
   home_ = { { config.device.axes[PAN].initial_position, config.device.axes[TILT].initial_position,
               config.device.axes[ZOOM].initial_position } };
   server_ = std::make_unique<HttpCameraServer>(
@@ -226,7 +249,7 @@ PtzSample OnvifCameraEmulator::sample() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
   const TimePoint now = clock_->now();
-  expireVelocity(now);
+  advance(now);
   return model_.sample(now);
 }
 
@@ -257,20 +280,14 @@ double OnvifCameraEmulator::cameraUtc() const
          config_.clock_offset;
 }
 
-void OnvifCameraEmulator::expireVelocity(TimePoint now) const
+std::string OnvifCameraEmulator::serviceAddress() const
 {
-  if (now < velocity_until_)
+  if (config_.advertised_host.empty())
   {
-    return;
+    return server_->url();  // where it listens: a client that follows XAddrs reaches it, and stays on this machine
   }
-  for (Axis axis : ALL_AXES)
-  {
-    if (velocity_axes_[axis])
-    {
-      velocity_axes_[axis] = false;
-      model_.moveAxisAtVelocity(axis, 0.0, velocity_until_);  // the ContinuousMove's Timeout ran out
-    }
-  }
+  return std::string(config_.http.tls ? "https://" : "http://") + config_.advertised_host + ":" +
+         std::to_string(server_->port());
 }
 
 std::string OnvifCameraEmulator::checkToken(const SoapMessage& message) const
@@ -300,88 +317,6 @@ std::string OnvifCameraEmulator::checkToken(const SoapMessage& message) const
   return {};
 }
 
-const char* OnvifCameraEmulator::defaultSpace() const
-{
-  // A continuous-only camera lists no position space, and reports its status in the generic one (as those do).
-  return config_.absolute && config_.degree_space && config_.degrees_default ? DEGREE_SPACE : GENERIC_PAN_TILT_SPACE;
-}
-
-std::string OnvifCameraEmulator::supportedSpaces() const
-{
-  std::string spaces;
-  if (config_.absolute)
-  {
-    spaces += (config_.degree_space ? space("AbsolutePanTiltPositionSpace", DEGREE_SPACE, -180, 180, -90, 90) : "") +
-              space("AbsolutePanTiltPositionSpace", GENERIC_PAN_TILT_SPACE, config_.listed_generic_pan_min,
-                    config_.listed_generic_pan_max, -1, 1) +
-              space("AbsoluteZoomPositionSpace", GENERIC_ZOOM_SPACE, 0, 1);
-    if (config_.relative)
-    {
-      spaces +=
-          (config_.degree_space ? space("RelativePanTiltTranslationSpace", DEGREE_TRANSLATION, -360, 360, -180, 180) :
-                                  "") +
-          space("RelativePanTiltTranslationSpace", GENERIC_PAN_TILT_TRANSLATION, -1, 1, -1, 1) +
-          space("RelativeZoomTranslationSpace", GENERIC_ZOOM_TRANSLATION, -1, 1);
-    }
-  }
-  spaces += space("ContinuousPanTiltVelocitySpace", GENERIC_PAN_TILT_VELOCITY, -1, 1, -1, 1) +
-            space("ContinuousZoomVelocitySpace", GENERIC_ZOOM_VELOCITY, -1, 1);
-  if (config_.absolute)
-  {
-    spaces +=
-        space("PanTiltSpeedSpace", GENERIC_PAN_TILT_SPEED, 0, 1) + space("ZoomSpeedSpace", GENERIC_ZOOM_SPEED, 0, 1);
-  }
-  return spaces;
-}
-
-std::string OnvifCameraEmulator::ptzConfiguration(const char* element) const
-{
-  std::string defaults;
-  if (config_.absolute)
-  {
-    defaults += std::string("<sch:DefaultAbsolutePantTiltPositionSpace>") + defaultSpace() +
-                "</sch:DefaultAbsolutePantTiltPositionSpace><sch:DefaultAbsoluteZoomPositionSpace>" +
-                GENERIC_ZOOM_SPACE + "</sch:DefaultAbsoluteZoomPositionSpace>";
-    if (config_.relative)
-    {
-      defaults += std::string("<sch:DefaultRelativePanTiltTranslationSpace>") + GENERIC_PAN_TILT_TRANSLATION +
-                  "</sch:DefaultRelativePanTiltTranslationSpace><sch:DefaultRelativeZoomTranslationSpace>" +
-                  GENERIC_ZOOM_TRANSLATION + "</sch:DefaultRelativeZoomTranslationSpace>";
-    }
-  }
-  defaults += std::string("<sch:DefaultContinuousPanTiltVelocitySpace>") + GENERIC_PAN_TILT_VELOCITY +
-              "</sch:DefaultContinuousPanTiltVelocitySpace><sch:DefaultContinuousZoomVelocitySpace>" +
-              GENERIC_ZOOM_VELOCITY + "</sch:DefaultContinuousZoomVelocitySpace>";
-  if (config_.absolute)
-  {
-    defaults += std::string("<sch:DefaultPTZSpeed><sch:PanTilt x=\"1\" y=\"1\" space=\"") + GENERIC_PAN_TILT_SPEED +
-                "\"/><sch:Zoom x=\"1\" space=\"" + GENERIC_ZOOM_SPEED + "\"/></sch:DefaultPTZSpeed>";
-  }
-  return std::string("<") + element + " token=\"" + CONFIGURATION + "\"><sch:Name>ptz</sch:Name><sch:UseCount>1" +
-         "</sch:UseCount><sch:NodeToken>" + NODE + "</sch:NodeToken>" + defaults +
-         "<sch:DefaultPTZTimeout>PT5S</sch:DefaultPTZTimeout></" + element + ">";
-}
-
-std::string OnvifCameraEmulator::positionVector(const char* element, const AxisValues& position) const
-{
-  const bool degrees = std::string(defaultSpace()) == DEGREE_SPACE;
-  const double x = degrees ? toDegrees(position[PAN]) : position[PAN] / M_PI;
-  const double y = degrees ? toDegrees(position[TILT]) : position[TILT] / (M_PI / 2.0);
-  const double z = std::log(position[ZOOM]) / std::log(config_.device.axes[ZOOM].range.max);
-  return formatText("<sch:%s><sch:PanTilt x=\"%.6f\" y=\"%.6f\" space=\"%s\"/><sch:Zoom x=\"%.6f\" "
-                    "space=\"%s\"/></sch:%s>",
-                    element, x, y, defaultSpace(), z, GENERIC_ZOOM_SPACE, element);
-}
-
-void OnvifCameraEmulator::goToAll(const AxisValues& position, TimePoint now)
-{
-  velocity_axes_ = {};
-  for (Axis axis : ALL_AXES)
-  {
-    model_.goToAxis(axis, position[axis], now);
-  }
-}
-
 HttpAnswer OnvifCameraEmulator::handle(const std::string& target, const std::string& body)
 {
   if (target != DEVICE_PATH && target != MEDIA_PATH && target != PTZ_PATH)
@@ -401,14 +336,23 @@ HttpAnswer OnvifCameraEmulator::handle(const std::string& target, const std::str
     return fault(false, { "ter:ActionNotSupported" }, operation + " is not an operation of " + target);
   }
   std::lock_guard<std::mutex> lock(mutex_);
-  if (operation != "GetSystemDateAndTime")
+  const Element* token = path(child(message.header, ns::WSSE, "Security"), ns::WSSE, { "UsernameToken" });
+  if (token != nullptr)
   {
-    const Element* token = path(child(message.header, ns::WSSE, "Security"), ns::WSSE, { "UsernameToken" });
-    if (token != nullptr)
-    {
-      server_->recordSecrets({ text(child(token, ns::WSSE, "Nonce")), text(child(token, ns::WSSE, "Password")) });
-    }
+    server_->recordSecrets({ text(child(token, ns::WSSE, "Nonce")), text(child(token, ns::WSSE, "Password")) });
+  }
+  if (operation != "GetSystemDateAndTime" || !config_.open_clock)
+  {
     const std::string refused = checkToken(message);
+    if (!refused.empty() && operation == "GetSystemDateAndTime")
+    {
+      // Axis: its web server asks for the credentials of a request that brings no valid UsernameToken, even this one.
+      ++refused_tokens_;
+      HttpAnswer unauthorized{ 401, "text/html", "<HTML><HEAD><TITLE>401 Unauthorized</TITLE></HEAD></HTML>\r\n" };
+      unauthorized.challenge = "Digest realm=\"" + config_.http.realm + "\", nonce=\"" + base64Encode(randomBytes(16)) +
+                               "\", algorithm=MD5, qop=\"auth\"";
+      return unauthorized;
+    }
     if (!refused.empty())
     {
       ++refused_tokens_;
@@ -416,7 +360,7 @@ HttpAnswer OnvifCameraEmulator::handle(const std::string& target, const std::str
     }
   }
   const TimePoint now = clock_->now();
-  expireVelocity(now);
+  advance(now);
   if (target == DEVICE_PATH)
   {
     return device(operation, message);
@@ -426,7 +370,7 @@ HttpAnswer OnvifCameraEmulator::handle(const std::string& target, const std::str
 
 HttpAnswer OnvifCameraEmulator::device(const std::string& operation, const SoapMessage& message)
 {
-  const std::string host = "http://" + config_.advertised_host;
+  const std::string host = serviceAddress();
   if (operation == "GetSystemDateAndTime")
   {
     const std::string iso = isoTime(cameraUtc());
@@ -488,15 +432,20 @@ HttpAnswer OnvifCameraEmulator::media(const std::string& operation, const SoapMe
 {
   auto profileWithoutPtz = [](const char* element) {
     return std::string("<") + element + " token=\"" + PROFILE_WITHOUT_PTZ +
-           "\" fixed=\"true\"><sch:Name>sub</sch:Name>" + videoSourceConfiguration() + "</" + element + ">";
+           "\" fixed=\"true\"><sch:Name>sub</sch:Name>" + videoConfigurations("video_encoder_1", 640, 360) + "</" +
+           element + ">";
   };
   auto profileWithPtz = [this](const char* element) {
     return std::string("<") + element + " token=\"" + PROFILE + "\" fixed=\"true\"><sch:Name>main</sch:Name>" +
-           videoSourceConfiguration() + ptzConfiguration("sch:PTZConfiguration") + "</" + element + ">";
+           videoConfigurations("video_encoder_0", 1920, 1080) + ptzConfiguration("sch:PTZConfiguration") + "</" +
+           element + ">";
   };
   if (operation == "GetProfiles")
   {
-    return respond(ns::MEDIA, "GetProfilesResponse>" + profileWithoutPtz("Profiles") + profileWithPtz("Profiles") +
+    // Clients that take the first profile (node-onvif) find the one with PTZ first.
+    const std::string with = profileWithPtz("Profiles");
+    const std::string without = profileWithoutPtz("Profiles");
+    return respond(ns::MEDIA, "GetProfilesResponse>" + (config_.ptz_profile_first ? with + without : without + with) +
                                   "</GetProfilesResponse>");
   }
   if (operation == "GetProfile")
@@ -520,291 +469,6 @@ HttpAnswer OnvifCameraEmulator::media(const std::string& operation, const SoapMe
                                   "</GetVideoSourcesResponse>");
   }
   return notSupported(operation);
-}
-
-HttpAnswer OnvifCameraEmulator::ptz(const std::string& operation, const SoapMessage& message, TimePoint now)
-{
-  const Element* request = message.content;
-  if (operation == "GetServiceCapabilities")
-  {
-    return respond(ns::PTZ, std::string("GetServiceCapabilitiesResponse><Capabilities EFlip=\"false\" "
-                                        "Reverse=\"false\" GetCompatibleConfigurations=\"false\" MoveStatus=\"true\" "
-                                        "StatusPosition=\"") +
-                                (config_.status_position ? "true" : "false") + "\"/></GetServiceCapabilitiesResponse>");
-  }
-  const std::string node =
-      std::string("<PTZNode token=\"") + NODE +
-      "\" FixedHomePosition=\"false\"><sch:Name>node</sch:Name><sch:SupportedPTZSpaces>" + supportedSpaces() +
-      "</sch:SupportedPTZSpaces>" +
-      formatText("<sch:MaximumNumberOfPresets>%d</sch:MaximumNumberOfPresets>", config_.max_presets) +
-      "<sch:HomeSupported>" + (config_.home ? "true" : "false") + "</sch:HomeSupported></PTZNode>";
-  if (operation == "GetNodes")
-  {
-    return respond(ns::PTZ, "GetNodesResponse>" + node + "</GetNodesResponse>");
-  }
-  if (operation == "GetNode")
-  {
-    if (text(child(request, ns::PTZ, "NodeToken")) != NODE)
-    {
-      return invalid("ter:NoEntity", "No such PTZ node on the device");
-    }
-    return respond(ns::PTZ, "GetNodeResponse>" + node + "</GetNodeResponse>");
-  }
-  if (operation == "GetConfigurations")
-  {
-    return respond(ns::PTZ, "GetConfigurationsResponse>" + ptzConfiguration("PTZConfiguration") +
-                                "</GetConfigurationsResponse>");
-  }
-  if (operation == "GetConfiguration" || operation == "GetConfigurationOptions")
-  {
-    const bool options = operation == "GetConfigurationOptions";
-    if (text(child(request, ns::PTZ, options ? "ConfigurationToken" : "PTZConfigurationToken")) != CONFIGURATION)
-    {
-      return invalid("ter:NoConfig", "The requested configuration does not exist");
-    }
-    if (!options)
-    {
-      return respond(ns::PTZ, "GetConfigurationResponse>" + ptzConfiguration("PTZConfiguration") +
-                                  "</GetConfigurationResponse>");
-    }
-    return respond(ns::PTZ, "GetConfigurationOptionsResponse><PTZConfigurationOptions><sch:Spaces>" +
-                                supportedSpaces() +
-                                formatText("</sch:Spaces><sch:PTZTimeout><sch:Min>PT%gS</sch:Min><sch:Max>PT%gS"
-                                           "</sch:Max></sch:PTZTimeout>",
-                                           MIN_TIMEOUT, MAX_TIMEOUT) +
-                                "</PTZConfigurationOptions></GetConfigurationOptionsResponse>");
-  }
-  // Everything below acts on a profile: it must exist and have PTZ.
-  const std::string profile = text(child(request, ns::PTZ, "ProfileToken"));
-  if (profile == PROFILE_WITHOUT_PTZ)
-  {
-    return invalid("ter:NoPTZProfile", "The requested profile token does not reference a PTZ configuration");
-  }
-  if (profile != PROFILE)
-  {
-    return invalid("ter:NoProfile", "The requested profile token ProfileToken does not exist");
-  }
-  const bool moves = operation == "AbsoluteMove" || operation == "ContinuousMove" || operation == "RelativeMove" ||
-                     operation == "GotoPreset" || operation == "GotoHomePosition";
-  if (moves && refuse_)
-  {
-    return fault(true, { "ter:InvalidArgVal" }, OnvifCameraEmulator::REFUSAL);
-  }
-  const SimDeviceConfig& device = config_.device;
-  const double zoom_max = device.axes[ZOOM].range.max;
-  if (operation == "GetStatus")
-  {
-    const PtzSample state = model_.sample(now);
-    const bool pan_tilt_moves = std::abs(state.velocity[PAN]) > MOVING || std::abs(state.velocity[TILT]) > MOVING;
-    const bool zoom_moves = std::abs(state.velocity[ZOOM]) > MOVING;
-    return respond(ns::PTZ, "GetStatusResponse><PTZStatus>" +
-                                (config_.status_position ? positionVector("Position", state.position) : std::string()) +
-                                "<sch:MoveStatus><sch:PanTilt>" + (pan_tilt_moves ? "MOVING" : "IDLE") +
-                                "</sch:PanTilt><sch:Zoom>" + (zoom_moves ? "MOVING" : "IDLE") +
-                                "</sch:Zoom></sch:MoveStatus><sch:UtcTime>" + isoTime(cameraUtc()) +
-                                "</sch:UtcTime></PTZStatus></GetStatusResponse>");
-  }
-  if (operation == "Stop")
-  {
-    const std::string pan_tilt = text(child(request, ns::PTZ, "PanTilt"));
-    const std::string zoom = text(child(request, ns::PTZ, "Zoom"));
-    const bool stop_pan_tilt = pan_tilt != "false" && pan_tilt != "0";  // both default to true
-    const bool stop_zoom = zoom != "false" && zoom != "0";
-    if (stop_pan_tilt && stop_zoom)
-    {
-      velocity_axes_ = {};
-      model_.stop(now);
-    }
-    for (Axis axis : { PAN, TILT, ZOOM })
-    {
-      if ((axis == ZOOM ? stop_zoom : stop_pan_tilt) && !(stop_pan_tilt && stop_zoom))
-      {
-        velocity_axes_[axis] = false;
-        model_.moveAxisAtVelocity(axis, 0.0, now);
-      }
-    }
-    return respond(ns::PTZ, "StopResponse></StopResponse>");
-  }
-  if (operation == "ContinuousMove")
-  {
-    const Element* velocity = child(request, ns::PTZ, "Velocity");
-    const PanTiltArgument pan_tilt = panTiltOf(velocity);
-    const ZoomArgument zoom = zoomOf(velocity);
-    double timeout = 5.0;  // DefaultPTZTimeout
-    const Element* timeout_element = child(request, ns::PTZ, "Timeout");
-    if ((pan_tilt.given && !pan_tilt.space.empty() && pan_tilt.space != GENERIC_PAN_TILT_VELOCITY) ||
-        (zoom.given && !zoom.space.empty() && zoom.space != GENERIC_ZOOM_VELOCITY))
-    {
-      return invalid("ter:SpaceNotSupported", "A space is referenced which is not supported by the PTZ node");
-    }
-    if (!pan_tilt.numbers || !zoom.number || std::abs(pan_tilt.x) > 1 || std::abs(pan_tilt.y) > 1 ||
-        std::abs(zoom.x) > 1)
-    {
-      return invalid("ter:InvalidVelocity", "The requested speed is out of bounds");
-    }
-    if (timeout_element != nullptr &&
-        (!parseDuration(text(timeout_element), timeout) || timeout < MIN_TIMEOUT || timeout > MAX_TIMEOUT))
-    {
-      return invalid("ter:TimeoutNotSupported", "The specified timeout argument is not within the supported timeout "
-                                                "range");
-    }
-    // An axis left out goes on as it was; one at 0 stops.
-    if (pan_tilt.given)
-    {
-      model_.moveAxisAtVelocity(PAN, pan_tilt.x * device.axes[PAN].motion.max_speed, now);
-      model_.moveAxisAtVelocity(TILT, pan_tilt.y * device.axes[TILT].motion.max_speed, now);
-      velocity_axes_[PAN] = velocity_axes_[TILT] = true;
-    }
-    if (zoom.given)
-    {
-      model_.moveAxisAtVelocity(ZOOM, zoom.x * device.axes[ZOOM].motion.max_speed, now);
-      velocity_axes_[ZOOM] = true;
-    }
-    velocity_until_ = addSeconds(now, timeout);
-    return respond(ns::PTZ, "ContinuousMoveResponse></ContinuousMoveResponse>");
-  }
-  if (!config_.absolute)
-  {
-    return notSupported(operation);  // the continuous-only cameras: no positions, so no presets or home either
-  }
-  if (operation == "AbsoluteMove" || operation == "RelativeMove")
-  {
-    const bool absolute = operation == "AbsoluteMove";
-    if ((absolute && config_.refuse_absolute_move) || (!absolute && !config_.relative))
-    {
-      return notSupported(operation);
-    }
-    const Element* argument = child(request, ns::PTZ, absolute ? "Position" : "Translation");
-    PanTiltArgument pan_tilt = panTiltOf(argument);
-    ZoomArgument zoom = zoomOf(argument);
-    if (pan_tilt.space.empty())
-    {
-      pan_tilt.space = absolute ? defaultSpace() : GENERIC_PAN_TILT_TRANSLATION;
-    }
-    if (zoom.space.empty())
-    {
-      zoom.space = absolute ? GENERIC_ZOOM_SPACE : GENERIC_ZOOM_TRANSLATION;
-    }
-    const bool degrees = pan_tilt.space == (absolute ? DEGREE_SPACE : DEGREE_TRANSLATION);
-    const bool generic = pan_tilt.space == (absolute ? GENERIC_PAN_TILT_SPACE : GENERIC_PAN_TILT_TRANSLATION);
-    if ((pan_tilt.given && !(generic || (degrees && config_.degree_space))) ||
-        (zoom.given && zoom.space != (absolute ? GENERIC_ZOOM_SPACE : GENERIC_ZOOM_TRANSLATION)))
-    {
-      return invalid("ter:SpaceNotSupported", "A space is referenced that is not supported by the PTZ node");
-    }
-    // The camera's own ranges, whatever GetNodes lists (generic: the whole travel; degrees: its mechanics).
-    const double limit_x = degrees ? (absolute ? 180.0 : 360.0) : (absolute ? 1.0 : 2.0);
-    const double limit_y = degrees ? (absolute ? 90.0 : 180.0) : (absolute ? 1.0 : 2.0);
-    const bool zoom_in_range = absolute ? zoom.x >= 0.0 && zoom.x <= 1.0 : std::abs(zoom.x) <= 1.0;
-    if (!pan_tilt.numbers || !zoom.number || std::abs(pan_tilt.x) > limit_x || std::abs(pan_tilt.y) > limit_y ||
-        !zoom_in_range)
-    {
-      return absolute ? invalid("ter:InvalidPosition", "The requested position is out of bounds") :
-                        invalid("ter:InvalidTranslation", "The requested translation is out of bounds");
-    }
-    const AxisValues at = model_.sample(now).position;
-    for (Axis axis : ALL_AXES)
-    {
-      velocity_axes_[axis] = velocity_axes_[axis] && !(axis == ZOOM ? zoom.given : pan_tilt.given);
-    }
-    if (pan_tilt.given)
-    {
-      const double pan = degrees ? toRadians(pan_tilt.x) : pan_tilt.x * M_PI;
-      const double tilt = degrees ? toRadians(pan_tilt.y) : pan_tilt.y * M_PI / 2.0;
-      // A translation beyond the travel stops at its border (the model clamps).
-      model_.goToAxis(PAN, absolute ? pan : at[PAN] + pan, now);
-      model_.goToAxis(TILT, absolute ? tilt : at[TILT] + tilt, now);
-    }
-    if (zoom.given)
-    {
-      const double z = absolute ? zoom.x : std::log(at[ZOOM]) / std::log(zoom_max) + zoom.x;
-      model_.goToAxis(ZOOM, std::pow(zoom_max, std::clamp(z, 0.0, 1.0)), now);
-    }
-    return respond(ns::PTZ, operation + "Response></" + operation + "Response>");
-  }
-  if (operation == "GotoHomePosition" || operation == "SetHomePosition")
-  {
-    if (!config_.home)
-    {
-      return notSupported(operation);
-    }
-    if (operation == "SetHomePosition")
-    {
-      home_ = model_.sample(now).position;
-    }
-    else
-    {
-      goToAll(home_, now);
-    }
-    return respond(ns::PTZ, operation + "Response></" + operation + "Response>");
-  }
-  const bool preset_operation =
-      operation == "GetPresets" || operation == "SetPreset" || operation == "GotoPreset" || operation == "RemovePreset";
-  if (!preset_operation || !config_.presets || config_.max_presets <= 0)
-  {
-    return notSupported(operation);
-  }
-  if (operation == "GetPresets")
-  {
-    std::string listed;
-    for (const auto& preset : presets_)
-    {
-      listed += formatText("<Preset token=\"%d\"><sch:Name>", preset.first) + escaped(preset.second.name) +
-                "</sch:Name>" + positionVector("PTZPosition", preset.second.position) + "</Preset>";
-    }
-    return respond(ns::PTZ, "GetPresetsResponse>" + listed + "</GetPresetsResponse>");
-  }
-  const std::string token_text = text(child(request, ns::PTZ, "PresetToken"));
-  char* end = nullptr;
-  const long token = std::strtol(token_text.c_str(), &end, 10);
-  const auto found = !token_text.empty() && *end == '\0' ? presets_.find(static_cast<int>(token)) : presets_.end();
-  if (operation == "SetPreset")
-  {
-    if (!token_text.empty() && found == presets_.end())
-    {
-      return invalid("ter:NoToken", "The requested preset token does not exist");
-    }
-    const Element* name_element = child(request, ns::PTZ, "PresetName");
-    std::string name = text(name_element);
-    for (const auto& preset : presets_)
-    {
-      if (name_element != nullptr && preset.second.name == name &&
-          (found == presets_.end() || found->first != preset.first))
-      {
-        return invalid("ter:PresetExist", "The requested name already exist for another preset");
-      }
-    }
-    const PtzSample state = model_.sample(now);
-    if (state.moving)
-    {
-      return fault(false, { "ter:Action", "ter:MovingPTZ" }, "Preset cannot be set while PTZ unit is moving");
-    }
-    if (found == presets_.end() && static_cast<int>(presets_.size()) >= config_.max_presets)
-    {
-      return fault(false, { "ter:Action", "ter:TooManyPresets" }, "Maximum number of Presets reached");
-    }
-    const int stored = found != presets_.end() ? found->first : next_preset_++;
-    Preset& preset = presets_[stored];
-    if (name_element != nullptr || preset.name.empty())
-    {
-      preset.name = name_element != nullptr ? name : formatText("Preset %d", stored);
-    }
-    preset.position = state.position;
-    return respond(ns::PTZ, formatText("SetPresetResponse><PresetToken>%d</PresetToken></SetPresetResponse>", stored));
-  }
-  if (found == presets_.end())
-  {
-    return invalid("ter:NoToken", "The requested preset token does not exist");
-  }
-  if (operation == "GotoPreset")
-  {
-    goToAll(found->second.position, now);
-  }
-  else
-  {
-    presets_.erase(found);
-  }
-  return respond(ns::PTZ, operation + "Response></" + operation + "Response>");
 }
 
 }  // namespace ptz_action_server

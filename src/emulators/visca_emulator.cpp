@@ -4,15 +4,12 @@
 #include <cmath>
 
 #include "ptz_action_server/core/units.h"
+#include "visca_emulator_internal.h"
 
 namespace ptz_action_server
 {
 namespace
 {
-constexpr std::uint8_t ACK = 0x40;
-constexpr std::uint8_t COMPLETION = 0x50;
-constexpr std::uint8_t ERROR = 0x60;
-
 /// The motion model of a camera with \p model's ranges, speeds and steps.
 SimDeviceConfig modelConfig(const visca::ViscaModel& model)
 {
@@ -38,7 +35,54 @@ bool rests(const PtzSample& sample, Axis axis)
 {
   return std::abs(sample.velocity[axis]) < 1e-9;
 }
+
+/// The first VISCA packet's start in \p data (a request, 8x), or size.
+std::size_t requestStart(const std::uint8_t* data, std::size_t size)
+{
+  std::size_t index = 0;
+  while (index < size && (data[index] < 0x81 || data[index] > 0x88))
+  {
+    ++index;
+  }
+  return index;
+}
 }  // namespace
+
+const char* const ViscaEmulatorConfig::MODES = "g2-latency, g3-address, ndi-sequence, standard-zoom, no-inquiries, "
+                                               "sony-reply-port";
+
+bool ViscaEmulatorConfig::applyMode(const std::string& mode)
+{
+  if (mode == "g2-latency")
+  {
+    modes.g2_latency = true;
+  }
+  else if (mode == "g3-address")
+  {
+    modes.reply_header = 0xA0;
+  }
+  else if (mode == "ndi-sequence")
+  {
+    modes.ndi_sequence = true;
+  }
+  else if (mode == "standard-zoom")
+  {
+    modes.standard_zoom_only = true;
+  }
+  else if (mode == "no-inquiries")
+  {
+    modes.no_inquiries = true;
+  }
+  else if (mode == "sony-reply-port")
+  {
+    modes.reply_port = visca::SONY_IP_PORT;
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
 
 ViscaEmulator::ViscaEmulator(const ViscaEmulatorConfig& config)
   : LineEmulator(modelConfig(config.model)), config_(config)
@@ -81,9 +125,50 @@ void ViscaEmulator::skipSequence(std::uint32_t sequence)
   last_sequence_ = sequence;
 }
 
+double ViscaEmulator::g2Latency(const visca::Packet& packet, std::mt19937& random)
+{
+  const auto between = [&random](double low, double high) {
+    return std::uniform_real_distribution<double>(low, high)(random);
+  };
+  if (packet.size() < 3 || packet[0] < 0x81 || packet[0] > 0x88)
+  {
+    return 0.0;
+  }
+  if (packet[1] == 0x09)
+  {
+    const bool pan_tilt = packet.size() == 5 && packet[2] == 0x06 && packet[3] == 0x12;
+    return pan_tilt ? between(0.088, 0.123) : between(0.026, 0.058);
+  }
+  return between(0.028, 0.089);  // commands: the ACK
+}
+
+double ViscaEmulator::thinkingTime(const std::uint8_t* data, std::size_t size)
+{
+  double delay = LineEmulator::thinkingTime(data, size);
+  if (config_.modes.g2_latency)
+  {
+    // A request (over VISCA over IP, after its header): the time its reply takes. A piece of one on a serial line
+    // waits with the rest, and a control message is answered at once.
+    const std::size_t header = config_.framing == ViscaFraming::SONY_IP ? std::min(size, visca::IP_HEADER_SIZE) : 0;
+    const std::size_t start = header + requestStart(data + header, size - header);
+    const std::uint8_t* end = std::find(data + start, data + size, visca::TERMINATOR);
+    if (end != data + size)
+    {
+      delay += g2Latency(visca::Packet(data + start, end + 1), latency_random_);
+    }
+  }
+  return delay;
+}
+
 void ViscaEmulator::onBytes(const std::uint8_t* data, std::size_t size, TimePoint arrived_at)
 {
   Replies replies;
+  if (config_.port.kind == DevicePortConfig::Kind::UDP)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const std::string sender = port_->sender();
+    reply_host_ = sender.substr(0, sender.rfind(':'));
+  }
   if (config_.framing == ViscaFraming::SONY_IP)
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -117,7 +202,13 @@ void ViscaEmulator::onBytes(const std::uint8_t* data, std::size_t size, TimePoin
 void ViscaEmulator::onDatagram(const std::uint8_t* data, std::size_t size, TimePoint at, Replies& replies)
 {
   visca::IpMessage message;
-  if (visca::decodeIp(data, size, message) != visca::IpError::NONE)
+  const visca::IpError error = visca::decodeIp(data, size, message);
+  if (config_.modes.ndi_sequence && (message.sequence < 1 || message.sequence > 3))
+  {
+    ++counters_.unread_sequences;  // NDI PTZ1: whatever is numbered outside 1..3 goes unread, even the reset
+    return;
+  }
+  if (error != visca::IpError::NONE)
   {
     ++counters_.bad_datagrams;
     sendAll({ { visca::CONTROL_ERROR, visca::CONTROL_MESSAGE_ERROR } }, message.sequence, visca::IP_CONTROL_REPLY);
@@ -129,18 +220,32 @@ void ViscaEmulator::onDatagram(const std::uint8_t* data, std::size_t size, TimeP
   {
     if (message.payload == visca::Packet{ visca::CONTROL_RESET })
     {
-      last_sequence_ = message.sequence;
+      last_sequence_ = 0;  // "the value that was set as the sequence number is ignored"
       sendAll({ { visca::CONTROL_RESET } }, message.sequence, visca::IP_CONTROL_REPLY);
+    }
+    else
+    {
+      sendAll({ { visca::CONTROL_ERROR, visca::CONTROL_MESSAGE_ERROR } }, message.sequence, visca::IP_CONTROL_REPLY);
     }
     return;
   }
-  if (message.sequence <= last_sequence_)
+  if (message.type != visca::IP_COMMAND && message.type != visca::IP_INQUIRY &&
+      message.type != visca::IP_DEVICE_SETTING)
   {
-    ++counters_.sequence_errors;
-    sendAll({ { visca::CONTROL_ERROR, visca::CONTROL_SEQUENCE_ERROR } }, message.sequence, visca::IP_CONTROL_REPLY);
+    ++counters_.bad_datagrams;
+    sendAll({ { visca::CONTROL_ERROR, visca::CONTROL_MESSAGE_ERROR } }, message.sequence, visca::IP_CONTROL_REPLY);
     return;
   }
-  last_sequence_ = message.sequence;
+  if (!config_.modes.ndi_sequence && message.type != visca::IP_DEVICE_SETTING)
+  {
+    if (message.sequence <= last_sequence_)
+    {
+      ++counters_.sequence_errors;
+      sendAll({ { visca::CONTROL_ERROR, visca::CONTROL_SEQUENCE_ERROR } }, message.sequence, visca::IP_CONTROL_REPLY);
+      return;
+    }
+    last_sequence_ = message.sequence;
+  }
   std::vector<visca::Packet> packets;
   splitter_.feed(message.payload.data(), message.payload.size(), packets);
   splitter_.reset();
@@ -153,223 +258,31 @@ void ViscaEmulator::onDatagram(const std::uint8_t* data, std::size_t size, TimeP
 
 void ViscaEmulator::sendAll(const Replies& replies, std::uint32_t sequence, std::uint16_t type)
 {
+  const std::uint32_t numbered = config_.modes.ndi_sequence ? 1 : sequence;  // NDI PTZ1 answers 1, always
   for (const visca::Packet& packet : replies)
   {
     const visca::Packet bytes =
-        config_.framing == ViscaFraming::SONY_IP ? visca::encodeIp(visca::IpMessage{ type, sequence, packet }) : packet;
-    port_->send(bytes.data(), bytes.size());
+        config_.framing == ViscaFraming::SONY_IP ? visca::encodeIp(visca::IpMessage{ type, numbered, packet }) : packet;
+    if (config_.modes.reply_port != 0 && config_.port.kind == DevicePortConfig::Kind::UDP)
+    {
+      // Sony: replies to 52381 of the controller's host, whatever port asked.
+      port_->sendTo(reply_host_ + ":" + std::to_string(config_.modes.reply_port), bytes.data(), bytes.size());
+    }
+    else
+    {
+      port_->send(bytes.data(), bytes.size());
+    }
   }
 }
 
 visca::Packet ViscaEmulator::reply(std::uint8_t kind, std::initializer_list<std::uint8_t> rest) const
 {
   visca::Packet packet(rest.size() + 3, visca::TERMINATOR);
-  packet[0] = static_cast<std::uint8_t>((config_.address + 8) << 4);
+  packet[0] = config_.modes.reply_header != 0 ? config_.modes.reply_header :
+                                                static_cast<std::uint8_t>((config_.address + 8) << 4);
   packet[1] = kind;
   std::copy(rest.begin(), rest.end(), packet.begin() + 2);
   return packet;
-}
-
-void ViscaEmulator::execute(const visca::Packet& packet, TimePoint at, std::uint32_t sequence, Replies& replies)
-{
-  if (packet[0] == visca::BROADCAST)
-  {
-    if (packet == visca::addressSet())
-    {
-      replies.push_back({ visca::BROADCAST, 0x30, static_cast<std::uint8_t>(config_.address + 1), visca::TERMINATOR });
-    }
-    else if (packet == visca::ifClear())
-    {
-      sockets_.fill(Socket{});
-      replies.push_back(packet);
-    }
-    return;
-  }
-  if ((packet[0] & 0x0F) != config_.address)
-  {
-    return;  // for another camera of the chain
-  }
-  const std::uint8_t kind = packet[1];
-  if ((kind & 0xF0) == 0x20 && packet.size() == 3)
-  {
-    const std::uint8_t socket = kind & 0x0F;
-    if (socket == 0 || socket >= sockets_.size() || !sockets_[socket].busy)
-    {
-      replies.push_back(reply(ERROR | socket, { visca::NO_SOCKET }));
-      return;
-    }
-    model_.stop(at);  // the command in the socket ends where the axes come to rest
-    sockets_[socket] = Socket{};
-    replies.push_back(reply(ERROR | socket, { visca::CANCELLED }));
-    return;
-  }
-  if (kind == 0x09)
-  {
-    answerInquiry(packet, at, replies);
-    return;
-  }
-  if (kind == 0x01)
-  {
-    executeCommand(packet, at, sequence, replies);
-    return;
-  }
-  ++counters_.syntax_errors;
-  replies.push_back(reply(ERROR, { visca::SYNTAX }));
-}
-
-void ViscaEmulator::answerInquiry(const visca::Packet& packet, TimePoint at, Replies& replies)
-{
-  const PtzSample now = model_.sample(at);
-  const visca::ViscaModel& model = config_.model;
-  visca::Packet answer = reply(COMPLETION);
-  answer.pop_back();
-  if (packet.size() == 5 && packet[2] == 0x06 && packet[3] == 0x12)
-  {
-    visca::putNibbles(answer, static_cast<std::uint16_t>(model.toSteps(PAN, now.position[PAN])), 4);
-    visca::putNibbles(answer, static_cast<std::uint16_t>(model.toSteps(TILT, now.position[TILT])), 4);
-  }
-  else if (packet.size() == 5 && packet[2] == 0x04 && packet[3] == 0x47 && model.has_zoom)
-  {
-    visca::putNibbles(answer, model.zoomToPosition(now.position[ZOOM]), 4);
-  }
-  else
-  {
-    ++counters_.syntax_errors;
-    replies.push_back(reply(ERROR, { visca::SYNTAX }));
-    return;
-  }
-  answer.push_back(visca::TERMINATOR);
-  replies.push_back(answer);
-}
-
-void ViscaEmulator::executeCommand(const visca::Packet& packet, TimePoint at, std::uint32_t sequence, Replies& replies)
-{
-  // A command of the same group replaces the one still running; any other busy socket stays taken.
-  const Group group = packet[2] == 0x04 ? Group::ZOOM : Group::PAN_TILT;
-  std::size_t free_socket = 0;
-  for (std::size_t socket = 1; socket < sockets_.size() && free_socket == 0; ++socket)
-  {
-    free_socket = sockets_[socket].busy && sockets_[socket].group != group ? 0 : socket;
-  }
-  if (free_socket == 0)
-  {
-    ++counters_.buffer_full;
-    replies.push_back(reply(ERROR, { visca::BUFFER_FULL }));
-    return;
-  }
-  bool until_rest = false;
-  if (!run(packet, at, until_rest))
-  {
-    ++counters_.syntax_errors;  // illegal parameters: nothing moved, no socket taken
-    replies.push_back(reply(ERROR, { visca::SYNTAX }));
-    return;
-  }
-  for (std::size_t socket = 1; socket < sockets_.size(); ++socket)
-  {
-    if (sockets_[socket].busy && sockets_[socket].group == group)
-    {
-      sockets_[socket] = Socket{};
-      replies.push_back(reply(static_cast<std::uint8_t>(COMPLETION | socket)));
-    }
-  }
-  const auto socket_byte = static_cast<std::uint8_t>(free_socket);
-  replies.push_back(reply(ACK | socket_byte));
-  if (until_rest)
-  {
-    sockets_[free_socket] = Socket{ true, group, true, sequence };
-  }
-  else
-  {
-    replies.push_back(reply(COMPLETION | socket_byte));
-  }
-}
-
-bool ViscaEmulator::run(const visca::Packet& packet, TimePoint at, bool& until_rest)
-{
-  const visca::ViscaModel& model = config_.model;
-  const std::size_t size = packet.size();
-  const std::uint8_t category = packet[2];
-  const std::uint8_t command = size > 3 ? packet[3] : 0;
-  const auto speed_ok = [&](Axis axis, std::uint8_t byte) {
-    return byte >= 1 && byte <= model.axes[axis].max_speed_byte;
-  };
-  if (category == 0x06 && command == 0x01 && size == 9)  // pan-tilt drive
-  {
-    const std::uint8_t pan = packet[6];
-    const std::uint8_t tilt = packet[7];
-    if (!speed_ok(PAN, packet[4]) || !speed_ok(TILT, packet[5]) || pan < 1 || pan > 3 || tilt < 1 || tilt > 3)
-    {
-      return false;
-    }
-    const double pan_speed = model.speedOfByte(PAN, packet[4]);
-    const double tilt_speed = model.speedOfByte(TILT, packet[5]);
-    model_.moveAxisAtVelocity(PAN, pan == 2 ? pan_speed : (pan == 1 ? -pan_speed : 0.0), at);
-    model_.moveAxisAtVelocity(TILT, tilt == 1 ? tilt_speed : (tilt == 2 ? -tilt_speed : 0.0), at);
-    return true;
-  }
-  if (category == 0x06 && (command == 0x02 || command == 0x03) && size == 15)  // absolute, relative
-  {
-    const auto steps = [&](std::size_t offset) {
-      return static_cast<std::int16_t>(static_cast<std::uint16_t>(visca::getNibbles(packet.data() + offset, 4)));
-    };
-    AxisValues target = model_.sample(at).position;
-    for (Axis axis : { PAN, TILT })
-    {
-      const double value = model.fromSteps(axis, steps(axis == PAN ? 6 : 10));
-      target[axis] = command == 0x03 ? target[axis] + value : value;
-      if (!model_.config().axes[axis].range.contains(target[axis]))
-      {
-        return false;
-      }
-    }
-    if (!speed_ok(PAN, packet[4]) || !speed_ok(TILT, packet[5]))
-    {
-      return false;
-    }
-    for (Axis axis : { PAN, TILT })
-    {
-      model_.setCruiseSpeed(axis, model.speedOfByte(axis, packet[axis == PAN ? 4 : 5]), at);
-      model_.goToAxis(axis, target[axis], at);
-    }
-    until_rest = true;
-    return true;
-  }
-  if (category == 0x06 && command == 0x04 && size == 5)  // home
-  {
-    model_.goToAxis(PAN, 0.0, at);
-    model_.goToAxis(TILT, 0.0, at);
-    until_rest = true;
-    return true;
-  }
-  if (category == 0x04 && command == 0x07 && size == 6 && model.has_zoom)  // zoom stop, tele, wide
-  {
-    const std::uint8_t drive = packet[4];
-    const int step = (drive & 0x0F) + 1;
-    const double rate = drive == 0x00                       ? 0.0 :
-                        drive == 0x02                       ? model.zoom_rate :
-                        drive == 0x03                       ? -model.zoom_rate :
-                        (drive & 0xF0) == 0x20 && step <= 8 ? model.rateOfZoomSpeed(step) :
-                        (drive & 0xF0) == 0x30 && step <= 8 ? -model.rateOfZoomSpeed(step) :
-                                                              NAN;
-    if (std::isnan(rate))
-    {
-      return false;
-    }
-    model_.moveAxisAtVelocity(ZOOM, rate, at);
-    return true;
-  }
-  if (category == 0x04 && command == 0x47 && size == 9 && model.has_zoom)  // zoom direct
-  {
-    const auto position = static_cast<std::uint16_t>(visca::getNibbles(packet.data() + 4, 4));
-    if (position > model.zoom_table.back().position)
-    {
-      return false;
-    }
-    model_.goToAxis(ZOOM, model.positionToZoom(position), at);
-    until_rest = true;
-    return true;
-  }
-  return false;
 }
 
 void ViscaEmulator::onTick()
@@ -389,7 +302,7 @@ void ViscaEmulator::onTick()
       const bool done = running.group == Group::ZOOM ? rests(now, ZOOM) : rests(now, PAN) && rests(now, TILT);
       if (done)
       {
-        replies.push_back(reply(static_cast<std::uint8_t>(COMPLETION | socket)));
+        replies.push_back(reply(static_cast<std::uint8_t>(emulator_visca::COMPLETION | socket)));
         sequences.push_back(running.sequence);
         running = Socket{};
       }

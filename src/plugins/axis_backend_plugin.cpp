@@ -49,6 +49,10 @@ struct AxisPlugin
                         " are both set: set one (the table, or the optical zoom for a linear one)");
     }
     axis.zoom_guess = params.flag("zoom_guess", axis.zoom_guess);
+    const std::string queue = params.choice("control_queue", "auto", { "auto", "on", "off" });
+    axis.control_queue = queue == "on"  ? AxisControlQueue::ON :
+                         queue == "off" ? AxisControlQueue::OFF :
+                                          AxisControlQueue::AUTO;
   }
 };
 

@@ -28,6 +28,12 @@ struct MavlinkGimbalPlugin
     gimbal.target_component = id("target_component", gimbal.target_component, 0);
     gimbal.gimbal_device_id = id("gimbal_device_id", gimbal.gimbal_device_id, 0);
     gimbal.yaw_lock = params.choice("yaw_frame", "vehicle", { "vehicle", "north" }) == "north";
+    const std::string attitude_frame =
+        params.choice("attitude_yaw_frame", "auto", { "auto", "flags", "vehicle", "north" });
+    gimbal.attitude_yaw_frame = attitude_frame == "flags"   ? MavlinkYawFrame::FLAGS :
+                                attitude_frame == "vehicle" ? MavlinkYawFrame::VEHICLE :
+                                attitude_frame == "north"   ? MavlinkYawFrame::EARTH :
+                                                              MavlinkYawFrame::AUTO;
     gimbal.heartbeat_period = params.number("heartbeat_period", gimbal.heartbeat_period, 0.1, 5.0);
     gimbal.discovery_time = params.number("discovery_time", gimbal.discovery_time, 0.0, 30.0);
     gimbal.attitude_interval = params.number("attitude_interval", gimbal.attitude_interval, 0.005, 1.0);

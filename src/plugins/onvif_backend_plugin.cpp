@@ -45,6 +45,8 @@ struct OnvifPlugin
     onvif.zoom_max_rate = params.number("zoom/max_rate", onvif.zoom_max_rate, 1e-3, 1000.0);
     onvif.acceleration = params.number("acceleration", onvif.acceleration, 0.0, 1e4);
     onvif.velocity_timeout = params.integer("velocity_timeout", onvif.velocity_timeout, 1, 3600);
+    // A camera whose axes have not begun this long after an AbsoluteMove answered it does not move (0: never judged).
+    onvif.move_start_timeout = params.number("move_start_timeout", onvif.move_start_timeout, 0.0, 10.0);
     // What the camera contradicts itself in (a listed range its own status leaves): once, also in diagnostics.
   }
 };

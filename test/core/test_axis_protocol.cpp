@@ -19,6 +19,7 @@
 #include <boost/asio/streambuf.hpp>
 #include <boost/asio/write.hpp>
 
+#include "diagnostic_value.h"
 #include "startup_error.h"
 #include "goal_supervisor_fixture.h"
 #include "ptz_action_server/core/axis/axis_protocol.h"
@@ -94,20 +95,6 @@ std::string runGoal(const std::shared_ptr<PtzBackend>& backend, const GoalConver
   GoalMonitorConfig config;
   config.stall_timeout = 2.0;
   return goal_supervisor_test::runGoalToItsEnd(backend, goal, config, WAIT);
-}
-
-std::string diagnostic(const PtzBackend& backend, const std::string& name)
-{
-  std::vector<DiagnosticValue> values;
-  backend.diagnostics(values);
-  for (const DiagnosticValue& value : values)
-  {
-    if (value.first == name)
-    {
-      return value.second;
-    }
-  }
-  return "(no " + name + ")";
 }
 
 AxisZoomSource zoomSource(const DeviceBackend& backend)
@@ -240,10 +227,10 @@ TEST(AxisBackend, ReadsTheLimitsTheCommandsAndTheCamerasZoomStepsAtStart)
   EXPECT_TRUE(capabilities.device_presets);
   EXPECT_TRUE(capabilities.device_home);
   EXPECT_EQ(zoomSource(*backend), AxisZoomSource::CAMERA_TABLE);
-  EXPECT_EQ(diagnostic(*backend, "zoom X-factor"), "the camera's zoomSteps (18 points, 1..18X)");
+  EXPECT_EQ(diagnosticValue(*backend, "zoom X-factor"), "the camera's zoomSteps (18 points, 1..18X)");
   EXPECT_EQ(targets(camera.server(), "query=attributes&group=zoom").size(), 1u);
   EXPECT_EQ(targets(camera.server(), "info=1").size(), 1u);
-  EXPECT_TRUE(targets(camera.server(), "param.cgi").empty());  // the camera's table needs no model
+  EXPECT_TRUE(targets(camera.server(), "group=root.Brand").empty());  // the camera's table needs no model
   EXPECT_TRUE(warnings.all(*backend).empty());
 
   // 4X goes out as the camera's step for 4X, and the camera gets to 4X.
@@ -276,9 +263,9 @@ TEST(AxisBackend, AFieldCameraWithoutAttributesGetsItsModelFamilysZoomAsAGuessWa
             0u)
       << warning;
   EXPECT_NE(warning.find("set axis/zoom_max_factor"), std::string::npos) << warning;
-  EXPECT_EQ(diagnostic(*backend, "zoom X-factor").rfind("GUESS: 30X optical at VAPIX zoom 9999, linear", 0), 0u)
-      << diagnostic(*backend, "zoom X-factor");
-  EXPECT_EQ(diagnostic(*backend, "model"), "AXIS Q6155-E PTZ Network Camera");
+  EXPECT_EQ(diagnosticValue(*backend, "zoom X-factor").rfind("GUESS: 30X optical at VAPIX zoom 9999, linear", 0), 0u)
+      << diagnosticValue(*backend, "zoom X-factor");
+  EXPECT_EQ(diagnosticValue(*backend, "model"), "AXIS Q6155-E PTZ Network Camera");
 
   // The goal of the field report: zoom 4 now reaches 4X on the camera itself (its lens is what the family has).
   EXPECT_EQ(runGoal(backend, goal_supervisor_test::positionGoal(0.2, 0.1, 4.0)).rfind("SUCCEEDED: reached", 0), 0u);
@@ -288,10 +275,10 @@ TEST(AxisBackend, AFieldCameraWithoutAttributesGetsItsModelFamilysZoomAsAGuessWa
   camera.server().setListening(false);
   camera.server().dropConnections();
   ASSERT_TRUE(waitUntil([&] { return !backend->sample().link_up; }, WAIT));
-  const std::size_t asked = targets(camera.server(), "param.cgi").size();
+  const std::size_t asked = targets(camera.server(), "group=root.Brand").size();
   camera.server().setListening(true);
   ASSERT_TRUE(waitUntil([&] { return backend->sample().link_up; }, WAIT));
-  EXPECT_EQ(targets(camera.server(), "param.cgi").size(), asked + 1);
+  EXPECT_EQ(targets(camera.server(), "group=root.Brand").size(), asked + 1);
   EXPECT_EQ(warnings.all(*backend).size(), 1u);
 }
 
@@ -317,7 +304,7 @@ TEST(AxisBackend, WithoutAnyZoomTableTheZoomIsADeclaredMissingCapabilityNeverASi
     EXPECT_NE(warnings.all(*backend)[0].find(guess ? "its model family has no default" : "zoom_guess is off"),
               std::string::npos)
         << warnings.all(*backend)[0];
-    EXPECT_EQ(diagnostic(*backend, "zoom X-factor").rfind("UNKNOWN: no zoom table", 0), 0u);
+    EXPECT_EQ(diagnosticValue(*backend, "zoom X-factor").rfind("UNKNOWN: no zoom table", 0), 0u);
 
     // The field report's goal is refused, naming what to set; nothing moves.
     EXPECT_EQ(runGoal(backend, goal_supervisor_test::positionGoal(0.2, 0.1, 4.0)), "REJECTED: this Axis camera gives "
@@ -337,6 +324,17 @@ TEST(AxisBackend, WithoutAnyZoomTableTheZoomIsADeclaredMissingCapabilityNeverASi
     ASSERT_TRUE(waitUntil([&] { return camera.sample().position[ZOOM] > 1.5; }, WAIT));
     backend->stop();
     ASSERT_TRUE(waitUntil([&] { return !camera.sample().moving; }, WAIT));
+    // Zoom 1, the widest view, it can still go to (issue 32): `zoom=` the limits' MinZoom; NaN sends no zoom=.
+    EXPECT_TRUE(zoom.widest_view);
+    backend->goTo({ -0.1, 0.0, 1.0 });
+    ASSERT_TRUE(waitUntil([&] { return !targets(camera.server(), "&zoom=").empty(); }, WAIT));
+    EXPECT_EQ(targets(camera.server(), "&zoom=")[0], "/axis-cgi/com/ptz.cgi?camera=1&pan=-5.7296&tilt=0.0000&zoom=1&"
+                                                     "speed=100");
+    ASSERT_TRUE(
+        waitUntil([&] { return camera.sample().position[ZOOM] < 1.0 + 1e-6 && !camera.sample().moving; }, WAIT));
+    backend->goTo({ 0.1, 0.0, std::nan("") });
+    ASSERT_TRUE(waitUntil([&] { return targets(camera.server(), "&pan=").size() == 3; }, WAIT));
+    EXPECT_EQ(targets(camera.server(), "&pan=")[2], "/axis-cgi/com/ptz.cgi?camera=1&pan=5.7296&tilt=0.0000&speed=100");
   }
 }
 
@@ -383,7 +381,7 @@ TEST(AxisBackend, AConfiguredTableOrOpticalZoomWinsOverTheCameraAndIsNoGuess)
     EXPECT_EQ(zoomSource(*backend), AxisZoomSource::CONFIGURED_TABLE);
     EXPECT_NEAR(backend->capabilities().axes[ZOOM].range.max, 20.0, 1e-9);
     EXPECT_TRUE(targets(camera.server(), "query=attributes").empty());
-    EXPECT_EQ(diagnostic(*backend, "zoom X-factor"), "zoom_table 1:1,9999:20");
+    EXPECT_EQ(diagnosticValue(*backend, "zoom X-factor"), "zoom_table 1:1,9999:20");
   }
   {
     AxisCameraEmulator camera(fieldCamera("Q8665-E"));
@@ -398,7 +396,7 @@ TEST(AxisBackend, AConfiguredTableOrOpticalZoomWinsOverTheCameraAndIsNoGuess)
     EXPECT_EQ(zoom.limitation, "");
     EXPECT_TRUE(warnings.all(*backend).empty());
     EXPECT_TRUE(targets(camera.server(), "query=attributes").empty());
-    EXPECT_TRUE(targets(camera.server(), "param.cgi").empty());
+    EXPECT_TRUE(targets(camera.server(), "group=root.Brand").empty());
     EXPECT_EQ(runGoal(backend, goal_supervisor_test::positionGoal(-0.2, 0.0, 12.0)).rfind("SUCCEEDED: reached", 0), 0u);
     EXPECT_NEAR(camera.sample().position[ZOOM], 12.0, 0.02);
   }
@@ -461,6 +459,7 @@ TEST(AxisBackend, TheCamerasOpticalMaximumAndAPositionWithoutZoomAreTakenAsTheyA
   EXPECT_TRUE(zoom.present && zoom.velocity);
   EXPECT_FALSE(zoom.absolute || zoom.feedback);
   EXPECT_EQ(zoom.limitation, "this Axis camera reports no zoom position");
+  EXPECT_TRUE(zoom.widest_view);  // zoom= MinZoom is still its widest view
   ASSERT_EQ(warnings.all(*backend).size(), 1u);
 }
 

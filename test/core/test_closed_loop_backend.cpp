@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <memory>
@@ -10,6 +11,7 @@
 #include "ptz_action_server/core/goal/goal_monitor.h"
 #include "ptz_action_server/core/onvif/onvif_protocol.h"
 #include "ptz_action_server/core/sim/sim_backend.h"
+#include "ptz_action_server/core/timed_steering.h"
 #include "ptz_action_server/emulators/onvif_camera_emulator.h"
 #include "wait_until.h"
 
@@ -211,8 +213,17 @@ class ClosedLoopOnvif : public ::testing::Test
 protected:
   void start(const std::string& mode)
   {
+    start(std::vector<std::string>{ mode });
+  }
+  /// The camera in \p modes, the node's goals judged with \p config (and steered to half its tolerance).
+  void start(const std::vector<std::string>& modes, const GoalMonitorConfig& goal_config = GoalMonitorConfig())
+  {
+    goal_config_ = goal_config;
     OnvifCameraEmulatorConfig camera;
-    ASSERT_TRUE(camera.applyMode(mode)) << mode;
+    for (const std::string& mode : modes)
+    {
+      ASSERT_TRUE(camera.applyMode(mode)) << mode;
+    }
     camera_ = std::make_unique<OnvifCameraEmulator>(camera);
     DeviceConfig<OnvifProtocol> config;
     config.link.port = camera_->port();
@@ -220,7 +231,7 @@ protected:
     config.link.http.password = config.settings.password = camera.password;
     config.session.state_timeout = 1.0;
     device_ = std::shared_ptr<PtzBackend>(makeDeviceBackend<OnvifProtocol>(config));
-    backend_ = withClosedLoop(device_, GoalMonitorConfig().tolerance);
+    backend_ = withClosedLoop(device_, goal_config.tolerance);
     backend_->setSampleListener([] {});
     backend_->start();
   }
@@ -229,8 +240,7 @@ protected:
   std::string run(const AxisValues& target)
   {
     return goal_supervisor_test::runGoalToItsEnd(
-        backend_, goal_supervisor_test::positionGoal(target[PAN], target[TILT], target[ZOOM]), GoalMonitorConfig(),
-        WAIT);
+        backend_, goal_supervisor_test::positionGoal(target[PAN], target[TILT], target[ZOOM]), goal_config_, WAIT);
   }
 
   std::size_t absoluteMoves() const
@@ -243,6 +253,26 @@ protected:
     return count;
   }
 
+  /// How often the pan's ContinuousMoves turned the other way (a swing about the target turns at each pass).
+  int panTurns() const
+  {
+    int turns = 0;
+    double last = 0.0;
+    for (const HttpExchange& exchange : camera_->server().received().items())
+    {
+      const std::size_t at = exchange.body.find("<tptz:Velocity><tt:PanTilt x=\"");
+      if (at == std::string::npos)
+      {
+        continue;
+      }
+      const double x = std::stod(exchange.body.substr(at + 30));
+      turns += x * last < 0.0 ? 1 : 0;
+      last = x != 0.0 ? x : last;
+    }
+    return turns;
+  }
+
+  GoalMonitorConfig goal_config_;
   std::unique_ptr<OnvifCameraEmulator> camera_;
   std::shared_ptr<PtzBackend> device_;
   std::shared_ptr<PtzBackend> backend_;
@@ -275,4 +305,147 @@ TEST_F(ClosedLoopOnvif, ACameraThatRefusesTheAbsoluteMoveItListedIsSteeredFromIt
   EXPECT_EQ(second.rfind("SUCCEEDED: reached pan 0.", 0), 0u) << second;
   EXPECT_NEAR(camera_->sample().position[PAN], 0.5, GoalMonitorConfig().tolerance[PAN]);
   EXPECT_EQ(absoluteMoves(), 1u);
+}
+
+TEST_F(ClosedLoopOnvif, ACameraThatAnswersAbsoluteMoveAndNeverMovesIsNamedThenSteeredFromItsNextGoalOn)
+{
+  start("absolute-never-moves");
+  const std::string first = run({ { 0.5, 0.0, 1.0 } });
+  EXPECT_EQ(
+      first.rfind("ABORTED: device fault: the ONVIF camera answered AbsoluteMove but did not move its pan-tilt", 0), 0u)
+      << first;
+  EXPECT_EQ(absoluteMoves(), 1u);
+  // Its status told the truth about it: the next goal is steered on its status, and reached, never SUCCEEDED before.
+  const std::string second = run({ { 0.5, 0.0, 1.0 } });
+  EXPECT_EQ(second.rfind("SUCCEEDED: reached pan 0.", 0), 0u) << second;
+  EXPECT_NEAR(camera_->sample().position[PAN], 0.5, GoalMonitorConfig().tolerance[PAN]);
+  EXPECT_EQ(absoluteMoves(), 1u);
+}
+
+TEST_F(ClosedLoopOnvif, ACameraWhoseSpeedIgnoresTheMagnitudeReachesItsGoalsWithoutSwingingAboutThem)
+{
+  // A camera with one speed (0.75 rad/s pan) covers 0.075 rad between two statuses: a tolerance of 0.01 rad asks
+  // stops timed to 13 ms. Steering on speeds alone swings it about each target, pass after pass.
+  GoalMonitorConfig config;
+  config.tolerance = { { 0.01, 0.01, 0.05 } };
+  start({ "continuous-only", "speed-ignores-magnitude" }, config);
+  int turns = 0;
+  for (const AxisValues& target : { AxisValues{ { 0.6, -0.2, 0.0 } }, AxisValues{ { -0.3, 0.1, 0.0 } },
+                                    AxisValues{ { -0.25, 0.1, 0.0 } }, AxisValues{ { 0.4, 0.3, 0.0 } } })
+  {
+    camera_->server().received().clear();
+    const std::string end = run(target);
+    EXPECT_EQ(end.rfind("SUCCEEDED: reached pan ", 0), 0u) << end;
+    EXPECT_NEAR(camera_->sample().position[PAN], target[PAN], config.tolerance[PAN]);
+    EXPECT_NEAR(camera_->sample().position[TILT], target[TILT], config.tolerance[TILT]);
+    turns += panTurns();
+  }
+  // Learnt on the way to the first target: at most a turn or two there, while it learns how far it coasts.
+  EXPECT_LE(turns, 3);
+  const std::vector<std::string> told = backend_->takeWarnings();
+  ASSERT_FALSE(told.empty());
+  EXPECT_NE(std::find_if(told.begin(), told.end(),
+                         [](const std::string& text) {
+                           return text.rfind("the pan moves at one speed (0.7", 0) == 0 &&
+                                  text.find(" rad/s) whatever the speed it is given: position goals steer it by timed "
+                                            "moves at that speed") != std::string::npos;
+                         }),
+            told.end())
+      << told[0];
+}
+
+// ---------------------------------------------------------------- TimedSteering, on reports written by hand
+
+namespace
+{
+const TimePoint T0(std::chrono::seconds(50));
+TimePoint at(double seconds)
+{
+  return addSeconds(T0, seconds);
+}
+}  // namespace
+
+TEST(TimedSteering, AnAxisThatMovesAtTheSpeedItIsGivenIsNeverTakenForOneAtOneSpeed)
+{
+  TimedSteering axis(0.0025, 3.0);
+  axis.startGoal(1.0);
+  // Slowing down towards the target as it is told, a poll behind (it brakes towards each lower speed, never past it).
+  double position = 0.0;
+  double speed = 1.5;
+  for (int report = 0; report < 60; ++report)
+  {
+    axis.observe(at(0.1 * report), position);
+    const double commanded = std::max(0.03, std::min(1.5, 2.0 * (1.0 - position)));
+    axis.commanded(commanded, at(0.1 * report));
+    speed = std::max(commanded, speed - 0.3);  // 3 rad/s^2 for 0.1 s
+    position = std::min(1.0, position + speed * 0.1);
+  }
+  EXPECT_FALSE(axis.fixedSpeed());
+}
+
+TEST(TimedSteering, AnAxisAtOneSpeedIsLearntAndGetsATimedMoveNearItsTarget)
+{
+  TimedSteering axis(0.005, 3.0);
+  axis.startGoal(0.5);
+  // Commanded lower and lower, it goes on at 0.75 rad/s.
+  const double commanded[] = { 0.6, 0.3, 0.15 };
+  for (int report = 0; report < 3; ++report)
+  {
+    axis.observe(at(0.1 * report), 0.075 * report);
+    EXPECT_FALSE(axis.fixedSpeed()) << report;
+    axis.commanded(commanded[report], at(0.1 * report));
+  }
+  axis.observe(at(0.3), 0.225);
+  ASSERT_TRUE(axis.fixedSpeed());
+  EXPECT_NEAR(axis.speed(), 0.75, 1e-9);
+  // 0.275 rad from the target, more than a report and a half at its speed plus its coast: it moves on, untimed.
+  TimedSteering::Step step = axis.step(0.1);
+  EXPECT_NEAR(step.speed, 0.75, 1e-9);
+  EXPECT_LT(step.stop_after, 0.0);
+  axis.commanded(step.speed, at(0.3));
+  axis.observe(at(0.4), 0.3);
+  axis.observe(at(0.5), 0.375);
+  // 0.125 rad: a timed move, stopped when its speed has covered the distance less the coast it is thought to have
+  // (0.75^2 / (2 x 3) = 0.09375 rad before it has learnt its own).
+  step = axis.step(0.1);
+  EXPECT_NEAR(step.speed, 0.75, 1e-9);
+  EXPECT_NEAR(step.stop_after, (0.125 - 0.09375) / 0.75, 1e-6);
+  EXPECT_TRUE(axis.busy());
+  EXPECT_NEAR(axis.step(0.1).speed, 0.75, 1e-9);  // until the timer stops it
+  axis.timedStopDone();
+  axis.observe(at(0.6), 0.44);
+  EXPECT_EQ(axis.step(0.1).speed, 0.0);  // coasting
+  axis.observe(at(0.7), 0.45);
+  EXPECT_EQ(axis.step(0.1).speed, 0.0);
+  axis.observe(at(0.8), 0.45);
+  // At rest 0.05 short: it went 0.075 rad, 0.03125 of it its speed's over the move: it coasts 0.04375 rad. The next
+  // timed move covers the rest less that.
+  step = axis.step(0.1);
+  EXPECT_NEAR(axis.coast(), 0.075 - 0.03125, 1e-9);
+  EXPECT_NEAR(step.stop_after, (0.05 - axis.coast()) / 0.75, 1e-9);
+}
+
+TEST(TimedSteering, ItGivesUpWhereAnotherMoveCouldOnlyTakeItFarther)
+{
+  TimedSteering axis(0.005, 3.0);
+  axis.startGoal(0.5);
+  const double commanded[] = { 0.3, 0.15, 0.1 };
+  for (int report = 0; report < 3; ++report)
+  {
+    axis.observe(at(0.1 * report), 0.075 * report);
+    axis.commanded(commanded[report], at(0.1 * report));
+  }
+  axis.observe(at(0.3), 0.45);
+  ASSERT_TRUE(axis.fixedSpeed());
+  // A timed move of nothing (it is nearer than its guessed coast) that goes 0.06 rad: past the target by 0.01.
+  TimedSteering::Step step = axis.step(0.1);
+  EXPECT_EQ(step.stop_after, 0.0);
+  axis.timedStopDone();
+  axis.observe(at(0.4), 0.51);
+  axis.step(0.1);
+  axis.observe(at(0.5), 0.51);
+  step = axis.step(0.1);
+  // 0.01 rad away, its smallest move 0.06: another would take it farther.
+  EXPECT_TRUE(step.gave_up);
+  EXPECT_EQ(step.speed, 0.0);
 }

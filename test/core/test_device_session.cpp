@@ -1,11 +1,12 @@
 /**
  * \file
  * \brief The device session on its own: a scripted protocol over a real UDP link to a device the test plays by hand,
- * so every ordering question (stale faults, the recovery and a fresh command, start-up) has one answer; and the
- * request/reply channel on an injected clock.
+ * so every ordering question (stale faults, the recovery and a fresh command, start-up) has one answer (the
+ * request/reply channel is test_transaction_channel.cpp's).
  */
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 
@@ -19,7 +20,6 @@
 #include <boost/asio/write.hpp>
 
 #include "ptz_action_server/core/device/device_backend.h"
-#include "ptz_action_server/core/device/transaction_channel.h"
 #include "ptz_action_server/emulators/udp_socket.h"
 
 using namespace ptz_action_server;
@@ -407,95 +407,29 @@ TEST(DeviceSessionReconnection, AfterAReconnectionTheLinkIsUpOnlyOnceTheDeviceRe
   EXPECT_EQ(readLine().substr(0, 4), "GOTO");
 }
 
-// ---------------------------------------------------------------- the request/reply channel
+// ---------------------------------------------------------------- the state deadline
 
-/// Runs \p context until \p condition holds (or the deadline passes).
-bool runUntil(boost::asio::io_context& context, const std::function<bool()>& condition)
+TEST(DeviceSessionStateDeadline, FollowsTheReplyDeadlineAboveTheConfiguredStateTimeout)
 {
-  const TimePoint deadline = addSeconds(SteadyClock::now(), WAIT);
-  while (!condition() && SteadyClock::now() < deadline)
-  {
-    context.restart();
-    context.run_one_for(std::chrono::milliseconds(20));
-  }
-  return condition();
-}
-
-TEST(TransactionChannel, RunsOnTheInjectedClock)
-{
-  // A clock that stands still, far from the steady clock: the drain after a timeout ends when *it* says so.
-  boost::asio::io_context context;
-  ManualClock clock(TimePoint(std::chrono::hours(1000)));
-  std::vector<std::string> written;
-  int timeouts = 0;
-  TransactionChannel channel(
-      context, clock, [&](const std::string& bytes) { written.push_back(bytes); }, 0.01,
-      [&](const TransactionChannel::Request&) { ++timeouts; });
-  channel.queue({ "A", 1, true, 0 });
-  channel.queue({ "B", 2, true, 0 });
-  EXPECT_EQ(written, (std::vector<std::string>{ "A" }));  // one on the wire at a time
-  ASSERT_TRUE(runUntil(context, [&] { return timeouts == 1; }));
-
-  // Draining: a reply now is a late one, and B waits until the injected clock passes the drain time, however long
-  // the steady clock runs meanwhile (this shows nothing happening for a while).
-  EXPECT_FALSE(channel.complete().has_value());
-  EXPECT_EQ(channel.lateReplies(), 1u);
-  context.restart();
-  context.run_for(std::chrono::milliseconds(100));
-  EXPECT_EQ(written.size(), 1u) << "B went out while the injected clock still said \"draining\"";
-  clock.advance(0.02);
-  channel.queue({ "C", 3, true, 0 });  // any activity pumps the queue once the drain is over
-  ASSERT_EQ(written.size(), 2u);
-  EXPECT_EQ(written.back(), "B");
-  const std::optional<TransactionChannel::Request> answered = channel.complete();
-  ASSERT_TRUE(answered.has_value());
-  EXPECT_EQ(answered->tag, 2);
-}
-
-/// A channel with a reply timeout of 1 s on a ManualClock, its writes kept.
-class ChannelOnManualClock : public ::testing::Test
-{
-protected:
-  boost::asio::io_context context_;
-  ManualClock clock_;
-  std::vector<std::string> written_;
-  TransactionChannel channel_{ context_, clock_, [this](const std::string& bytes) { written_.push_back(bytes); }, 1.0,
-                               [](const TransactionChannel::Request&) {} };
-};
-
-TEST_F(ChannelOnManualClock, AnUrgentRequestGoesOutAheadOfTheQueue)
-{
-  TransactionChannel& channel = channel_;
-  std::vector<std::string>& written = written_;
-  channel.queue({ "A", 1, true, 0 });
-  channel.queue({ "B", 2, true, 0 });
-  channel.sendUrgent({ "HALT", 3, true, 0 });
-  EXPECT_EQ(written, (std::vector<std::string>{ "A", "HALT" }));
-  EXPECT_EQ(channel.complete()->tag, 1);  // the device answers in order: A first, then the halt
-  EXPECT_EQ(channel.complete()->tag, 3);
-  EXPECT_EQ(written.back(), "B");
-}
-
-TEST_F(ChannelOnManualClock, AReplyThatDoesNotAnswerTheRequestOnTheWireLeavesItWaitingForItsOwn)
-{
-  // A reply later than the drain, on a device whose replies say what they answer: it must not take the place of the
-  // reply of the request now on the wire, or every reply from then on would be matched one request behind.
-  TransactionChannel& channel = channel_;
-  std::vector<std::string>& written = written_;
-  channel.queue({ "PAN?", 1, true, 0 });
-  channel.queue({ "TILT?", 2, true, 0 });
-  const auto answers_tag = [](int tag) {
-    return [tag](const TransactionChannel::Request& on_wire) { return on_wire.tag == tag; };
-  };
-  // The pan answer came: the tilt question goes out.
-  ASSERT_EQ(channel.complete(answers_tag(1))->tag, 1);
-  EXPECT_EQ(written.back(), "TILT?");
-  // A late pan answer (of a question before) is dropped, and the tilt question is still the one on the wire.
-  EXPECT_FALSE(channel.complete(answers_tag(1)).has_value());
-  EXPECT_EQ(channel.lateReplies(), 1u);
-  const std::optional<TransactionChannel::Request> tilt = channel.complete(answers_tag(2));
-  ASSERT_TRUE(tilt.has_value());
-  EXPECT_EQ(tilt->tag, 2);
+  // The shipped VISCA, FLIR and Pelco-D timing: a state deadline of 0.25 s, polls every 0.05 s.
+  LinkConfig link;
+  link.kind = LinkKind::UDP;
+  link.port = 9;
+  DeviceSessionConfig config;
+  config.state_timeout = 0.25;
+  config.poll_period = 0.05;
+  DeviceSession session(link, config, std::make_shared<SystemClock>());
+  EXPECT_DOUBLE_EQ(session.stateDeadline(), 0.25);
+  session.replyDeadlineChanged(0.1);  // the reply deadline's floor: two of them and a poll are the configured 0.25 s
+  EXPECT_DOUBLE_EQ(session.stateDeadline(), 0.25);
+  session.replyDeadlineChanged(0.185);  // learnt from a PTZOptics G2 (answers up to 123 ms)
+  EXPECT_DOUBLE_EQ(session.stateDeadline(), 0.42);
+  std::vector<DiagnosticValue> values;
+  session.diagnostics(values);
+  EXPECT_NE(std::find(values.begin(), values.end(), DiagnosticValue("state deadline (s)", "0.420")), values.end());
+  session.replyDeadlineChanged(0.01);  // never below the configured value
+  EXPECT_DOUBLE_EQ(session.stateDeadline(), 0.25);
+  EXPECT_DOUBLE_EQ(session.config().state_timeout, 0.25);
 }
 
 }  // namespace

@@ -156,6 +156,31 @@ TEST_F(FlirTest, VelocityGoalsUseVelocityModeWithTheUnitsSign)
   ASSERT_TRUE(waitUntil([&] { return !backend_->sample().moving; }, WAIT));
 }
 
+TEST_F(FlirTest, JointStateVelocitiesAreTheUnitsMeasuredMotionNeverItsSetPoint)
+{
+  // flir_ptu PR 51: its driver published the configured speed as the joints' velocity, non-zero at rest, and rviz
+  // models twitched. Here the velocity is what the unit's reported positions did.
+  backend_->goTo({ 0.2, -0.1, 1.0 });  // sets the unit's speeds (PS, TS): a set-point that stays after the move
+  ASSERT_TRUE(waitUntil([&] { return std::abs(emulator_->sample().position[PAN] - 0.2) < 1e-3; }, WAIT));
+  ASSERT_TRUE(waitUntil([&] { return !backend_->sample().moving; }, WAIT));
+  PtzSample rest = backend_->sample();
+  EXPECT_EQ(rest.velocity[PAN], 0.0);
+  EXPECT_EQ(rest.velocity[TILT], 0.0);
+
+  // Pan stalled (the unit takes the command and does not turn), tilt turning: pan's velocity is 0, not the 0.3 asked.
+  SimFaults faults;
+  faults.stalled[PAN] = true;
+  emulator_->setFaults(faults);
+  backend_->moveAtVelocity({ 0.3, 0.2, 0.0 });
+  ASSERT_TRUE(waitUntil([&] { return backend_->sample().velocity[TILT] > 0.15; }, WAIT));
+  const PtzSample moving = backend_->sample();
+  EXPECT_EQ(moving.velocity[PAN], 0.0);
+  EXPECT_NEAR(moving.velocity[TILT], emulator_->sample().velocity[TILT], 0.05);
+  backend_->stop();
+  ASSERT_TRUE(waitUntil([&] { return !backend_->sample().moving; }, WAIT));
+  EXPECT_EQ(backend_->sample().velocity[TILT], 0.0);
+}
+
 TEST_F(FlirTest, AUnitThatRestartsMidSessionIsSetUpAgainAndReachesGoals)
 {
   backend_->goTo({ 0.3, 0.1, 1.0 });

@@ -69,6 +69,26 @@ TEST_F(LinkSupervisorTest, AStateOlderThanTheDeadlineIsALossWithItsReason)
   EXPECT_EQ(supervisor_.losses(), 1u);
 }
 
+TEST_F(LinkSupervisorTest, ALongerDeadlineKeepsTheLinkOfASlowDeviceAndTheLossNamesTheDeadlineInForce)
+{
+  // The session stretches the deadline for a device whose replies take long (DeviceSession::replyDeadlineChanged()).
+  bringUp();
+  supervisor_.setStateTimeout(0.8);
+  clock_->advance(0.7);
+  EXPECT_EQ(supervisor_.check(), LinkSupervisor::Loss::NONE);
+  EXPECT_TRUE(supervisor_.up());
+  clock_->advance(0.2);
+  EXPECT_EQ(supervisor_.check(), LinkSupervisor::Loss::SILENCE);
+  EXPECT_EQ(supervisor_.lastLoss(), "no state from the test device for 0.80 s");
+  // Shorter again (the device answers fast now): a report older than that is a loss at once.
+  supervisor_.stateReported();
+  ASSERT_EQ(supervisor_.refresh(), LinkSupervisor::Rise::RECOVERED);
+  clock_->advance(0.6);
+  supervisor_.setStateTimeout(0.5);
+  EXPECT_EQ(supervisor_.check(), LinkSupervisor::Loss::SILENCE);
+  EXPECT_EQ(supervisor_.losses(), 2u);
+}
+
 TEST_F(LinkSupervisorTest, AnAnswerWithoutStateKeepsTheLinkAlive)
 {
   bringUp();

@@ -11,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include "diagnostic_value.h"
 #include "ptz_action_server/core/mavlink/mavlink_gimbal_protocol.h"
 #include "ptz_action_server/emulators/mavlink_gimbal_emulator.h"
 #include "ptz_action_server/emulators/udp_socket.h"
@@ -85,16 +86,7 @@ protected:
   }
   std::string diagnostic(const std::string& name) const
   {
-    std::vector<DiagnosticValue> values;
-    backend_->diagnostics(values);
-    for (const auto& entry : values)
-    {
-      if (entry.first == name)
-      {
-        return entry.second;
-      }
-    }
-    return "(missing)";
+    return diagnosticValue(*backend_, name);
   }
   /// The COMMAND_LONGs of \p id the emulator received, with the component each was sent to.
   std::vector<CommandLong> commandsTo(std::uint16_t id, std::uint8_t component) const

@@ -499,8 +499,24 @@ TEST(OnvifCodec, TimesAndDurations)
   EXPECT_EQ(seconds, 1284623445.0);
   EXPECT_TRUE(parseIsoTime("2010-09-16T07:50:45.5Z", seconds));
   EXPECT_EQ(seconds, 1284623445.5);
-  for (const char* bad : { "", "2010-09-16T07:50:45", "2010-09-16 07:50:45Z", "2010-13-16T07:50:45Z",
-                           "2010-09-16T07:50:45.Z", "2010-09-16T07:50:45+01:00" })
+  // Every xsd:dateTime is a valid wsu:Created: python-onvif-zeep (Home Assistant's ONVIF integration) stamps
+  // "+00:00" with microseconds; a zone moves the instant; a time without one is UTC; 24:00:00 ends the day.
+  const std::pair<const char*, double> valid[] = {
+    { "2010-09-16T07:50:45+00:00", 1284623445.0 }, { "2010-09-16T07:50:45.123456+00:00", 1284623445.123456 },
+    { "2010-09-16T08:50:45+01:00", 1284623445.0 }, { "2010-09-16T02:20:45-05:30", 1284623445.0 },
+    { "2010-09-16T07:50:45", 1284623445.0 },       { "2010-09-15T24:00:00Z", 1284595200.0 },
+    { "2012-02-29T00:00:00Z", 1330473600.0 },      { "2010-09-16T07:50:45.25-00:00", 1284623445.25 },
+  };
+  for (const auto& time : valid)
+  {
+    EXPECT_TRUE(parseIsoTime(time.first, seconds)) << time.first;
+    EXPECT_NEAR(seconds, time.second, 1e-6) << time.first;
+  }
+  for (const char* bad :
+       { "", "2010-09-16 07:50:45Z", "2010-13-16T07:50:45Z", "2010-09-16T07:50:45.Z", "2010-09-16T07:50:45+1:00",
+         "2010-09-16T07:50:45+15:00", "2010-09-16T07:50:45+01:60", "2011-02-29T00:00:00Z", "2010-09-31T00:00:00Z",
+         "2010-09-16T24:00:01Z", "2010-09-16T07:50:45Zjunk", "10-09-16T07:50:45Z", "02010-09-16T07:50:45Z",
+         "2010-9-16T07:50:45Z" })
   {
     EXPECT_FALSE(parseIsoTime(bad, seconds)) << bad;
   }

@@ -189,7 +189,7 @@ public:
     return visca::toHex(visca::Packet(buffer, buffer + size));
   }
   /// Answers `81 09 06 12 FF` with \p pan and \p tilt in steps.
-  void answerPanTilt(std::int16_t pan, std::int16_t tilt)
+  void answerPanTilt(std::int32_t pan, std::int32_t tilt)
   {
     visca::Packet answer{ 0x90, 0x50 };
     visca::putNibbles(answer, static_cast<std::uint16_t>(pan), 4);
@@ -242,6 +242,9 @@ protected:
     camera_.answerZoom(0);
     starter.join();
     ASSERT_TRUE(backend_->sample().link_up);
+    // The link is up once the round's answers came and the protocol said ready(); its state is reported right
+    // after, on the I/O thread: the count starts from it.
+    ASSERT_TRUE(waitUntil([&] { return stateReports() > 0; }, WAIT));
     reports_ = stateReports();
   }
   std::uint64_t stateReports() const

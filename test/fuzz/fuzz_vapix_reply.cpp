@@ -1,8 +1,8 @@
 /**
  * \file
  * \brief libFuzzer target: the VAPIX reply reader, the position and limits readers, the zoom attributes, info=1 and
- * brand readers and the zoom table on arbitrary text. Whatever reads, reads consistently: a zoom table maps every
- * value inside it and back, and the attributes give a table or say why not.
+ * brand readers, the zoom table and the PTZ control queue's parameters and answers on arbitrary text. Whatever reads,
+ * reads consistently: a zoom table maps every value inside it and back, and the attributes give a table or say why not.
  */
 #include <cmath>
 #include <cstdint>
@@ -10,6 +10,7 @@
 #include <string>
 
 #include "ptz_action_server/core/axis/vapix_codec.h"
+#include "ptz_action_server/core/axis/vapix_queue.h"
 
 using namespace ptz_action_server::vapix;
 
@@ -84,6 +85,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       ZoomTable::linear(family.max_optical).empty())
   {
     std::abort();
+  }
+  QueueSettings queue;
+  if (readQueueSettings(body, 1, queue).empty() && !(queue.poll_time >= 0.0 && std::isfinite(queue.poll_time)))
+  {
+    std::abort();
+  }
+  QueueStatus status;
+  if (!readQueueStatus(body, status).empty() ?
+          status.position != 0 :
+          status.position < 0 || !std::isfinite(status.seconds) || !(status.period >= 0.0))
+  {
+    std::abort();  // a problem leaves nothing behind; a status is whole
   }
   return 0;
 }

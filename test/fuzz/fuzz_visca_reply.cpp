@@ -37,7 +37,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   for (const Packet& packet : from_whole)
   {
-    // Every packet is a start byte, bytes below 0x80, the terminator, 3..16 bytes.
+    // Every packet is a start byte, bytes below 0x80, the terminator, 3..17 bytes.
     if (packet.size() < MIN_PACKET || packet.size() > MAX_PACKET || packet.front() < 0x80 ||
         packet.back() != TERMINATOR)
     {
@@ -51,12 +51,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
     }
     const Reply reply = classify(packet);
-    std::int16_t pan = 0;
-    std::int16_t tilt = 0;
+    std::int32_t pan = 0;
+    std::int32_t tilt = 0;
     std::uint16_t zoom = 0;
-    if (decodePanTiltAnswer(reply, pan, tilt) && reply.data.size() != 8)
+    // Every layout a model has: 4 + 4, 5 + 4, 5 + 5 nibbles; a position fits its nibbles.
+    for (const PositionLayout layout :
+         { PositionLayout{ 4, 4, false }, PositionLayout{ 5, 4, false }, PositionLayout{ 5, 5, true } })
     {
-      std::abort();
+      if (decodePanTiltAnswer(reply, layout, pan, tilt) &&
+          (reply.data.size() != layout.answerSize() || pan > PositionLayout::limit(layout.pan_nibbles) ||
+           pan < -PositionLayout::limit(layout.pan_nibbles) - 1 || tilt > PositionLayout::limit(layout.tilt_nibbles) ||
+           tilt < -PositionLayout::limit(layout.tilt_nibbles) - 1))
+      {
+        std::abort();
+      }
     }
     if (decodeZoomAnswer(reply, zoom) && reply.data.size() != 4)
     {

@@ -159,7 +159,7 @@ TEST_F(ClampTest, OutOfRangeGoalsAreClampedAndSaySo)
   EXPECT_EQ(absolute_->getState(), State::REJECTED);
 }
 
-TEST_F(NodeTest, CapabilitiesAreLatchedAndAZoomTheDeviceCannotPositionIsRefusedNamingIt)
+TEST_F(NodeTest, CapabilitiesAreLatchedAndZoomGoalsFollowWhatTheDeviceHas)
 {
   const ptz_action_server::PtzCapabilities& can = *capabilities_;
   EXPECT_FALSE(can.backend.empty());

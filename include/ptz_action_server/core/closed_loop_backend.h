@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "ptz_action_server/core/forwarding_backend.h"
+#include "ptz_action_server/core/timed_steering.h"
+#include "ptz_action_server/core/timer_thread.h"
 
 namespace ptz_action_server
 {
@@ -37,6 +39,14 @@ struct ClosedLoopConfig
  * by braking at half the device's acceleration, and by the gain), and the device is stopped once every axis is within
  * stop_within. Those axes then report `absolute`. The goal itself is judged by the node, as on any device.
  *
+ * Some devices move at one speed whatever the magnitude they are given (cheap ONVIF cameras): slowing down as the
+ * target nears does nothing, and a stop at a report overshoots by what the axis covers between two reports, back and
+ * forth. Each steered axis learns that from its reports (TimedSteering: twice as fast as commanded, twice in a row),
+ * says so once (takeWarnings()), and is from then on steered by timed moves: stopped by a timer on the process's
+ * TimerThread when its speed has covered the distance left, less what it goes on after a stop (learnt as it goes).
+ * One that cannot come within the goal's tolerance stops where it is, and the goal ends with a fault naming it
+ * (lastFault()), never with an endless swing about the target.
+ *
  * Devices whose axes all go to positions, and devices that cannot report state as it comes, pass through unchanged.
  * moveAtVelocity() and stop() end the steering. A lost link ends it too: the recovery never resumes an old goal.
  * Thread-safe.
@@ -55,6 +65,9 @@ public:
   void moveAtVelocity(const AxisValues& velocity) override;
   void stop() override;
   bool setSampleListener(SampleListener listener) override;
+  PtzSample sample() const override;
+  std::string lastFault() const override;
+  std::vector<std::string> takeWarnings() override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 
   /// True when position goals are steered here (decided at start(), and again at each goTo()).
@@ -70,6 +83,16 @@ private:
   Capabilities steeredView(Capabilities device, std::array<bool, AXIS_COUNT>& steered) const;
   /// The speed that brings \p axis from \p position to the target.
   double speedFor(Axis axis, double position) const;
+  /// The speed \p axis gets now: speedFor(), or its timed move's (arming the timer) for one that moves at one speed.
+  double nextSpeed(Axis axis, const PtzSample& sample);
+  /// Sends \p velocity (all zero: stop()) and records it.
+  void command(const AxisValues& velocity, TimePoint at);
+  /// The timer of \p axis ran out: stops that axis.
+  void timedStop(Axis axis);
+  /// Ends the steering: every timer disarmed.
+  void endSteeringLocked();
+  /// The steering could not bring \p axis within the tolerance: a fault of this decorator's, naming why.
+  void giveUpLocked(Axis axis);
 
   const ClosedLoopConfig config_;
   SampleListener listener_;  ///< the node's, called after each steering step
@@ -88,8 +111,20 @@ private:
   std::array<bool, AXIS_COUNT> steered_{};  ///< axes run here (set once by start())
   bool steering_ = false;                   ///< a goTo() is under way
   AxisValues target_{};
-  AxisValues sent_velocity_{};  ///< the last speeds commanded while steering
-  std::uint64_t steps_ = 0;     ///< speed commands sent while steering
+  AxisValues sent_velocity_{};                  ///< the last speeds commanded while steering
+  std::uint64_t steps_ = 0;                     ///< speed commands sent while steering
+  std::array<TimedSteering, AXIS_COUNT> axes_;  ///< what each axis taught, and its timed move
+  std::array<bool, AXIS_COUNT> told_{};         ///< its one speed was told (warning)
+  std::vector<std::string> warnings_;           ///< not yet taken
+  double report_period_ = 0.1;                  ///< s between the device's reports (smoothed)
+  TimePoint last_report_{};
+  std::uint64_t own_faults_ = 0;           ///< faults of this decorator (a goal it could not bring within reach)
+  std::uint64_t inner_faults_at_own_ = 0;  ///< the wrapped backend's fault count at the last of them
+  std::string own_fault_;
+  std::uint64_t timed_moves_ = 0;
+
+  std::shared_ptr<TimerThread> timer_;                ///< the process's
+  std::array<TimerThread::Id, AXIS_COUNT> timers_{};  ///< one per axis, armed for a timed move's end
 };
 
 /// Wraps \p backend in a ClosedLoopBackend configured for the goal tolerances \p tolerance.

@@ -5,11 +5,13 @@
  */
 #pragma once
 
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
 
 #include "ptz_action_server/core/axis/vapix_codec.h"
+#include "ptz_action_server/core/axis/vapix_queue.h"
 #include "ptz_action_server/core/sim/sim_device_model.h"
 #include "ptz_action_server/emulators/http_camera_server.h"
 
@@ -32,6 +34,16 @@ struct AxisCameraEmulatorConfig
   /// `root.Brand.ProdNbr` of param.cgi (`ProdFullName` "AXIS <model> PTZ Network Camera").
   std::string model = DEFAULT_MODEL;
   int cameras = 1;  ///< video channels: `camera=` beyond them is refused
+  /// PTZ control queue on (`root.PTZ.Various.V1.CtlQueueing=true`), as the VAPIX Queuing API describes it with the
+  /// Administrator group's defaults (UseCookie=yes, TimeoutType=activity): every client gets a cookie with its first
+  /// ptz.cgi or ptzqueue.cgi request and is told apart by it; `ptzqueue.cgi?control=request|query|drop` answers
+  /// `<a name="pos"></a><a name="seconds"></a><a name="period"></a>`; a move from a client that does not hold control
+  /// is answered as any (204) and moves nothing (the queue documents no answer for it: the worst case). Queries are
+  /// everyone's. false: `CtlQueueing=false`, no cookies, and ptzqueue.cgi answers `Error:`.
+  bool control_queue = false;
+  double control_time = 60.0;     ///< TimeoutTime: s of control after the holder's last move or request
+  double queue_period = 5.0;      ///< the period ptzqueue.cgi recommends, s
+  double queue_poll_time = 20.0;  ///< CtlQueuePollTime, s
 
   static SimDeviceConfig defaultDevice();
   /// An 18X optical zoom listed per X as Axis cameras list their zoomSteps: VAPIX values step evenly per X.
@@ -75,15 +87,30 @@ public:
   void setRefuse(bool refuse);
   /// Fault hooks of the motion model: a stalled axis accepts every command and silently stays where it is.
   void setFaults(const SimFaults& faults);
+  /// control_queue: another client (a browser, a guard tour) holds PTZ control for \p seconds from now (-1: for good,
+  /// as a client with TimeoutType infinity); 0 lets it go.
+  void holdControlElsewhere(double seconds);
+  /// control_queue: the client (cookie value) that holds control now; "" for none, "other" for holdControlElsewhere().
+  std::string controlHolder() const;
 
   /// The camera's words when it refuses a move under setRefuse().
   static constexpr const char* REFUSAL = "PTZ control is locked by another user";
 
 private:
   HttpAnswer handle(const std::string& method, const std::string& target, const std::string& body);
+  /// A ptz.cgi or ptzqueue.cgi request of \p client; mutex_ held.
+  HttpAnswer command(const std::string& path, std::map<std::string, std::string>& values, const std::string& client,
+                     TimePoint now);
   HttpAnswer query(const std::string& what, const std::string& group, TimePoint now);
   HttpAnswer info() const;
   HttpAnswer parameters(const std::string& action, const std::string& group) const;
+  // PTZ control queue (axis_camera_emulator_queue.cpp); mutex_ held.
+  /// The client the request's cookie names; a new one (and \p set_cookie) when it names none.
+  std::string clientOf(const std::string& cookie, std::string& set_cookie);
+  HttpAnswer queueAnswer(const std::string& control, const std::string& client, TimePoint now);
+  /// \p client may move the camera now (no queue, or it holds control: its time starts again).
+  bool mayMove(const std::string& client, TimePoint now);
+  std::string queueParameters(const std::string& group) const;
 
   const AxisCameraEmulatorConfig config_;
   const std::shared_ptr<const Clock> clock_;
@@ -91,6 +118,10 @@ private:
   mutable std::mutex mutex_;  ///< guards the model and refuse_
   mutable SimDeviceModel model_;
   bool refuse_ = false;
+  std::string holder_;  ///< the client that holds PTZ control ("" none)
+  TimePoint held_until_{};
+  bool held_for_good_ = false;
+  unsigned clients_ = 0;  ///< cookies handed out
   int speed_ = 100;
   std::unique_ptr<HttpCameraServer> server_;  ///< last: its thread calls handle()
 };

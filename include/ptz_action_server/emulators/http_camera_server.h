@@ -60,6 +60,10 @@ struct HttpAnswer
   unsigned status = 200;
   std::string content_type = "text/plain";
   std::string body;
+  /// A WWW-Authenticate the handler sends with a 401 of its own (a camera whose service asks for credentials its web
+  /// server does not check: Axis's ONVIF service); "" for none. (Initialised here: answers brace-initialise the
+  /// fields above only.)
+  std::string challenge{};
 };
 
 /// What the server counts. Any thread.
@@ -128,6 +132,16 @@ public:
   void setListening(bool listening);
   /// Makes every outstanding nonce stale (the next request is challenged with stale=true).
   void renewNonce();
+  /// The Cookie header of the request being handled ("" without one): for the handler, on its thread, during its call.
+  const std::string& requestCookie() const
+  {
+    return request_cookie_;
+  }
+  /// For the handler, during its call: its answer carries `Set-Cookie: value`.
+  void setAnswerCookie(const std::string& value)
+  {
+    answer_cookie_ = value;
+  }
   /// Appends \p values (the empty ones skipped) to config's secrets_file, one a line; nothing without one. Any thread.
   void recordSecrets(const std::vector<std::string>& values);
 
@@ -152,6 +166,8 @@ private:
   std::string newNonce();
 
   const HttpCameraServerConfig config_;
+  std::string request_cookie_;  ///< see requestCookie()
+  std::string answer_cookie_;   ///< see setAnswerCookie()
   const Handler handler_;
   const Open open_;
   void makeCertificate();

@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -117,15 +118,24 @@ protected:
 
   /// What the unit does when it starts (called with mutex_ held).
   virtual void powerUp() = 0;
+  /// s the unit thinks before it reads \p data (the port's thread, mutex_ not held): SimFaults::reply_delay, unless a
+  /// unit takes longer for some requests than for others.
+  virtual double thinkingTime(const std::uint8_t* data, std::size_t size)
+  {
+    (void)data;
+    (void)size;
+    return reply_delay_;
+  }
 
   /// Creates the port and starts its thread: the last thing the derived constructor does.
   void openPort(const DevicePortConfig& config, DevicePort::Handlers handlers)
   {
-    // A slow unit (SimFaults::reply_delay) thinks before it reads what came: every answer waits, and so does the
-    // next request, as on a device that handles one request at a time.
+    // A slow unit (thinkingTime()) reads each request that long after it arrived, in order: a
+    // request that came while the unit was busy with the one before it waits only what is left of its own time, so
+    // requests written together (a goal's frames without reply) do not hold back each other's answers.
     handlers.on_bytes = [this, on_bytes = std::move(handlers.on_bytes)](const std::uint8_t* data, std::size_t size,
                                                                         TimePoint arrived_at) {
-      const TimePoint until = addSeconds(SteadyClock::now(), reply_delay_.load());
+      const TimePoint until = addSeconds(arrived_at, thinkingTime(data, size));
       std::unique_lock<std::mutex> lock(handler_mutex_);
       closing_changed_.wait_until(lock, until, [this] { return closing_.load(); });
       if (!closing_)  // closePort() may be under way: port_ is going

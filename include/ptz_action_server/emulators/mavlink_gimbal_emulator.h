@@ -62,6 +62,20 @@ struct MavlinkGimbalEmulatorConfig
   double rate_timeout = 0.5;        ///< s a rate setpoint lasts unless repeated
   double vehicle_yaw = 0.0;         ///< rad: the vehicle's heading, delta_yaw in every attitude
   bool report_earth_frame = false;  ///< attitudes with the yaw relative to North (YAW_IN_EARTH_FRAME)
+  /// An autopilot that speaks only gimbal protocol v1 (its mount driven by MOUNT_CONTROL): no gimbal manager
+  /// (REQUEST_MESSAGE of GIMBAL_MANAGER_INFORMATION answered UNSUPPORTED, no GIMBAL_MANAGER_STATUS, no
+  /// GIMBAL_DEVICE_ATTITUDE_STATUS); the mount's orientation goes out as MOUNT_ORIENTATION every attitude_interval,
+  /// or with v1_mount_status as ArduPilot's MOUNT_STATUS (the autopilot then says ArduPilot in its HEARTBEAT).
+  bool gimbal_v1 = false;
+  bool v1_mount_status = false;
+  /// PX4's gimbal module driving its gimbal on AUX outputs (MNT_MODE_OUT AUX, src/modules/gimbal/output_rc.cpp):
+  /// every GIMBAL_DEVICE_ATTITUDE_STATUS carries NEUTRAL | ROLL_LOCK | PITCH_LOCK | YAW_LOCK and no yaw frame flag,
+  /// its quaternion is the output angles relative to the vehicle whatever YAW_LOCK says, and delta_yaw is 0 (PX4
+  /// never fills it); the vehicle's heading (vehicle_yaw) goes out in ATTITUDE from the autopilot.
+  bool px4_gimbal_output = false;
+  /// PX4 losing YAW_IN_EARTH_FRAME on its way to the gimbal (PX4-Autopilot issue 26569): a setpoint's earth-frame
+  /// flag is dropped; only YAW_LOCK aims relative to North.
+  bool earth_frame_flag_dropped = false;
 };
 
 /// A frame as it reached the emulator (whichever of its components it was for).
@@ -187,6 +201,10 @@ private:
   void sendStatus(const Gimbal& gimbal);
   void sendInformation(const Gimbal& gimbal);
   void sendAttitude(Gimbal& gimbal, TimePoint now);
+  /// gimbal_v1: MOUNT_ORIENTATION (or MOUNT_STATUS) from the autopilot.
+  void sendMountAttitude(const Gimbal& gimbal, const PtzSample& state, TimePoint now);
+  /// px4_gimbal_output: the attitude as PX4's gimbal module sends it, and the vehicle's ATTITUDE.
+  void sendPx4Attitude(const Gimbal& gimbal, const PtzSample& state, TimePoint now);
   Gimbal& at(std::size_t index) const;
 
   const MavlinkGimbalEmulatorConfig config_;

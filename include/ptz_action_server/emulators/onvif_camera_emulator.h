@@ -13,6 +13,11 @@
 #include "ptz_action_server/core/sim/sim_device_model.h"
 #include "ptz_action_server/emulators/http_camera_server.h"
 
+namespace tinyxml2
+{
+class XMLElement;
+}
+
 namespace ptz_action_server
 {
 namespace onvif
@@ -61,13 +66,41 @@ struct OnvifCameraEmulatorConfig
   double listed_generic_pan_max = 1.0;
   double clock_offset = 0.0;   ///< s the camera's clock runs ahead of the system's (tokens are judged by it)
   double max_token_age = 5.0;  ///< s a UsernameToken's Created may differ from the camera's clock
-  std::string advertised_host = "192.0.2.1";  ///< the host its XAddrs name (wrong, as some firmware's)
+  /// The host its XAddrs name: "" = the address and port it listens on (its own URL, what clients that follow XAddrs
+  /// need). Field case "advertises a wrong address": a loopback address it does not listen on ("127.0.0.2").
+  std::string advertised_host;
+  /// GetProfiles lists profile_1 (with PTZ) first, as clients that take the first profile (node-onvif) need; false:
+  /// profile_0 (no PTZ) first.
+  bool ptz_profile_first = true;
+  double min_timeout = 1.0;   ///< s, the PTZTimeout range GetConfigurationOptions lists; a ContinuousMove whose
+  double max_timeout = 60.0;  ///< Timeout lies outside it is refused (ter:TimeoutNotSupported). Field case: 1..10
+  /// GetSystemDateAndTime is answered without authentication, as the specification says. False: field case "Axis":
+  /// HTTP 401 (with a Digest challenge) to one without a valid WS-Security UsernameToken.
+  bool open_clock = true;
+  /// Field case "stop keeps moving": Stop is answered, but what a ContinuousMove set in motion goes on, past its
+  /// Timeout too, until a ContinuousMove with zero velocity (or the end of the travel).
+  bool stop_keeps_moving = false;
+  /// Field case "AbsoluteMove never moves": AbsoluteMove is answered, and nothing moves (ContinuousMove still works).
+  bool absolute_never_moves = false;
+  /// > 0: field case "speed ignores the magnitude": any non-zero ContinuousMove velocity moves its axis at this share
+  /// of the axis' max speed (the sign is kept).
+  double fixed_speed_share = 0.0;
+  /// rad > 0: field case "zoom-only AbsoluteMove moves pan and tilt": the camera approaches every pan-tilt position
+  /// an AbsoluteMove gives from this far below (it takes up its gears' backlash), so a PanTilt where it already is
+  /// still moves pan and tilt.
+  double backlash = 0.0;
+  /// The generic zoom its lens really reaches (GetNodes lists [0, 1] all the same). Field case "listed zoom range not
+  /// honoured": 0.5 (a move beyond is answered, and the zoom stops there).
+  double honoured_zoom = 1.0;
 
   static SimDeviceConfig defaultDevice();
-  /// The modes by name, for the program's --mode and the tests: "standard", "generic-status" (degrees listed, status in
-  /// the generic space), "continuous-only", "refuse-absolute-move", "no-position", "no-presets", "wrong-generic-range"
-  /// (the field report's camera: generic-status with the generic pan listed as 0..1, starting at pan -155.6 deg,
-  /// generic -0.864666, so the contradiction shows at once), "no-relative", "generic-only". False for another name.
+  /// The modes by name, for the program's --mode and the tests (MODES lists them; each sets the fields above that
+  /// name it): "standard", "generic-status" (degrees listed, status in the generic space), "continuous-only",
+  /// "refuse-absolute-move", "no-position", "no-presets", "wrong-generic-range" (the field report's camera:
+  /// generic-status with the generic pan listed as 0..1, starting at pan -155.6 deg, generic -0.864666, so the
+  /// contradiction shows at once), "no-relative", "generic-only", "wrong-address", "ptz-profile-second",
+  /// "timeout-range", "axis-401", "stop-keeps-moving", "absolute-never-moves", "speed-ignores-magnitude",
+  /// "zoom-only-moves-pantilt", "zoom-range-not-honoured". False for another name.
   bool applyMode(const std::string& mode);
   static const char* const MODES;  ///< the names, for help texts
 };
@@ -77,8 +110,12 @@ struct OnvifCameraEmulatorConfig
  *
  * - `/onvif/device_service` (ver10/device): GetSystemDateAndTime (without authentication), GetCapabilities,
  *   GetServices (with the services' capabilities if asked), GetDeviceInformation.
- * - `/onvif/media_service` (ver10/media): GetProfiles, GetProfile (`profile_0` without PTZ, `profile_1` with `ptz0` on
- *   node `node0`; both on video source `video_source_0`), GetVideoSources.
+ * - `/onvif/media_service` (ver10/media): GetProfiles, GetProfile (`profile_1` with `ptz0` on node `node0`, listed
+ *   first, and `profile_0` without PTZ; both on video source `video_source_0`, each with a video encoder
+ *   configuration, as clients expect), GetVideoSources.
+ *
+ * Its XAddrs name the address and port it listens on (advertised_host aside); a token's Created may be any
+ * xsd:dateTime.
  * - `/onvif/ptz_service` (ver20/ptz): GetServiceCapabilities, GetNodes, GetNode, GetConfigurations, GetConfiguration,
  *   GetConfigurationOptions, AbsoluteMove, RelativeMove, ContinuousMove (its Timeout), Stop (per axis), GetStatus (in
  *   the default spaces, MoveStatus per axis), GetPresets, SetPreset, GotoPreset, RemovePreset, GotoHomePosition,
@@ -130,10 +167,17 @@ private:
   HttpAnswer device(const std::string& operation, const onvif::SoapMessage& message);
   HttpAnswer media(const std::string& operation, const onvif::SoapMessage& message);
   HttpAnswer ptz(const std::string& operation, const onvif::SoapMessage& message, TimePoint now);
+  /// The PTZ operations on a profile: moves, status, presets, home.
+  HttpAnswer move(const std::string& operation, const tinyxml2::XMLElement* request, TimePoint now);
+  HttpAnswer presets(const std::string& operation, const tinyxml2::XMLElement* request, TimePoint now);
   /// The reason a token is refused, or "".
   std::string checkToken(const onvif::SoapMessage& message) const;
-  void expireVelocity(TimePoint now) const;
+  /// Brings the camera's own doings up to \p now: a ContinuousMove's Timeout running out, the second half of a
+  /// backlash approach.
+  void advance(TimePoint now) const;
   double cameraUtc() const;
+  /// "http://127.0.0.1:8081": where its XAddrs point.
+  std::string serviceAddress() const;
   /// The default absolute pan-tilt space of ptz0.
   const char* defaultSpace() const;
   std::string ptzConfiguration(const char* element) const;
@@ -142,6 +186,15 @@ private:
   std::string positionVector(const char* element, const AxisValues& position) const;
   /// Moves to \p position on every axis (a preset, home).
   void goToAll(const AxisValues& position, TimePoint now);
+  /// Moves pan or tilt to \p target as the camera does (from below by the backlash, if it has one).
+  void goToPanTilt(Axis axis, double target, TimePoint now);
+  /// Moves \p axis at the generic velocity \p x (a ContinuousMove's), as the camera does.
+  void moveAxis(Axis axis, double x, TimePoint now);
+  /// X at generic zoom 1 (the listed range's end: X = zoomMax() ^ z).
+  double zoomMax() const
+  {
+    return config_.device.axes[ZOOM].range.max;
+  }
 
   const OnvifCameraEmulatorConfig config_;
   const std::shared_ptr<const Clock> clock_;
@@ -150,6 +203,11 @@ private:
   bool refuse_ = false;
   mutable std::array<bool, AXIS_COUNT> velocity_axes_{};  ///< axes a ContinuousMove moves until its timeout
   TimePoint velocity_until_{};
+  /// Backlash: the target each pan-tilt axis goes on to once it has reached the point below it (NaN: none).
+  mutable AxisValues approach_{};
+  /// Axes a command drives (a position not yet reached, a speed): MoveStatus says MOVING for them, even when a fault
+  /// blocks the axis (a blocked motor's controller still drives it).
+  mutable std::array<bool, AXIS_COUNT> driving_{};
   std::map<int, Preset> presets_;  ///< by token number
   int next_preset_ = 1;
   AxisValues home_{ { 0.0, 0.0, 1.0 } };

@@ -51,28 +51,6 @@ AxisProtocol::AxisProtocol(const AxisSettings& settings, DeviceSession& session)
   }
 }
 
-const char* zoomSourceName(AxisZoomSource source)
-{
-  switch (source)
-  {
-    case AxisZoomSource::NO_ZOOM:
-      return "no zoom";
-    case AxisZoomSource::CONFIGURED_TABLE:
-      return "configured zoom_table";
-    case AxisZoomSource::CONFIGURED_MAXIMUM:
-      return "configured zoom_max_factor";
-    case AxisZoomSource::CAMERA_TABLE:
-      return "camera zoomSteps";
-    case AxisZoomSource::CAMERA_MAXIMUM:
-      return "camera maxOpticalZoomMag";
-    case AxisZoomSource::MODEL_GUESS:
-      return "model family guess";
-    case AxisZoomSource::UNKNOWN:
-      return "unknown";
-  }
-  return "?";
-}
-
 Capabilities AxisProtocol::capabilities() const
 {
   // Before the camera is asked: pan and tilt as VAPIX documents them, zoom as the settings say.
@@ -87,79 +65,6 @@ Capabilities AxisProtocol::capabilities() const
           absentAxis("the Axis camera has not been asked yet") :
           fullAxis({ configured_table_.minFactor(), configured_table_.maxFactor() }, settings_.zoom_max_rate, 0.0);
   return capabilities;
-}
-
-Capabilities AxisProtocol::cameraCapabilities(const vapix::Limits& limits, const vapix::CommandList& commands) const
-{
-  // A camera that gave no usable info=1 is taken to offer what VAPIX documents for a PTZ camera; the informative
-  // flags (relative moves, presets, home) are only declared when it lists them.
-  const bool listed = !commands.empty();
-  const auto offered = [&](const char* name) { return !listed || commands.has(name); };
-  Capabilities capabilities;
-  AxisCapability& pan = capabilities.axes[PAN];
-  pan = fullAxis({ toRadians(limits.min_pan), toRadians(limits.max_pan) }, settings_.pan_max_speed,
-                 settings_.acceleration);
-  pan.absolute = offered("pan");
-  pan.velocity = offered("continuouspantiltmove");
-  AxisCapability& tilt = capabilities.axes[TILT];
-  tilt = fullAxis({ toRadians(limits.min_tilt), toRadians(limits.max_tilt) }, settings_.tilt_max_speed,
-                  settings_.acceleration);
-  tilt.absolute = offered("tilt");
-  tilt.velocity = offered("continuouspantiltmove");
-  for (AxisCapability* axis : { &pan, &tilt })
-  {
-    if (!axis->absolute)
-    {
-      axis->limitation = "this Axis camera does not list absolute pan/tilt in info=1";
-    }
-  }
-
-  capabilities.relative_moves = listed && commands.has("rpan") && commands.has("rtilt");
-  capabilities.device_presets =
-      listed && (commands.offers("query", "presetposall") || commands.offers("query", "presetposcam") ||
-                 commands.has("gotoserverpresetno"));
-  capabilities.device_home = listed && commands.offers("move", "home");
-
-  AxisCapability& zoom = capabilities.axes[ZOOM];
-  if (zoom_source_ == AxisZoomSource::NO_ZOOM)
-  {
-    zoom = absentAxis("this Axis camera's limits give no zoom");
-    return capabilities;
-  }
-  zoom = fullAxis({ 1.0, 1.0 }, settings_.zoom_max_rate, 0.0);
-  zoom.velocity = zoom_velocity_;
-  if (zoom_feedback_)
-  {
-    zoom.range = { zoom_table_.toFactor(std::max(limits.min_zoom, zoom_table_.minValue())),
-                   zoom_table_.toFactor(std::min(limits.max_zoom, zoom_table_.maxValue())) };
-    zoom.absolute = offered("zoom");
-    if (zoom_source_ == AxisZoomSource::MODEL_GUESS)
-    {
-      zoom.limitation = "this Axis camera gives no zoom table: its X-factor is a guess (" + zoom_text_ + ")";
-      zoom.remedy = "set axis/zoom_max_factor to its optical zoom, or axis/zoom_table";
-    }
-  }
-  else
-  {
-    zoom.absolute = false;
-    zoom.feedback = false;
-    if (zoom_table_.empty())
-    {
-      zoom.limitation = "this Axis camera gives no zoom table";
-      zoom.remedy = "set axis/zoom_table (or axis/zoom_max_factor, its optical zoom)";
-    }
-    else
-    {
-      zoom.limitation = "this Axis camera reports no zoom position";
-    }
-  }
-  return capabilities;
-}
-
-AxisZoomSource AxisProtocol::zoomSource() const
-{
-  std::lock_guard<std::mutex> lock(facts_mutex_);
-  return shared_zoom_source_;
 }
 
 bool AxisProtocol::exchange(const std::string& path, const std::string& what, std::string& body, std::string& problem)
@@ -230,122 +135,6 @@ void AxisProtocol::setupFailed(const std::string& problem)
   session_.disconnect(problem);
 }
 
-bool AxisProtocol::findZoomTable(const vapix::Limits& limits)
-{
-  zoom_table_ = vapix::ZoomTable();
-  std::string text;
-  std::string model;
-  if (!limits.has_zoom)
-  {
-    zoom_source_ = AxisZoomSource::NO_ZOOM;
-    text = "none: query=limits gives no MinZoom/MaxZoom";
-  }
-  else if (!configured_table_.empty())
-  {
-    zoom_table_ = configured_table_;
-    zoom_source_ = settings_.zoom_table.empty() ? AxisZoomSource::CONFIGURED_MAXIMUM : AxisZoomSource::CONFIGURED_TABLE;
-    text = settings_.zoom_table.empty() ? formatText("zoom_max_factor %gX, linear", settings_.zoom_max_factor) :
-                                          "zoom_table " + settings_.zoom_table;
-  }
-  else
-  {
-    std::string problem;
-    std::string body;
-    const std::string arguments = "query=attributes&group=zoom";
-    vapix::ZoomAttributes attributes;
-    const std::string path = formatText("%s?camera=%d&%s", vapix::PTZ_PATH, settings_.camera, arguments.c_str());
-    std::string refusal = "no answer";
-    if (exchange(path, "'" + arguments + "'", body, problem))
-    {
-      problem = vapix::readZoomAttributes(body, settings_.camera, attributes);
-      if (problem.empty() && attributes.refused)
-      {
-        refusal = attributes.refusal;
-      }
-      else if (problem.empty() && attributes.steps.empty() && attributes.max_optical == 0.0)
-      {
-        refusal = "no zoomSteps and no maxOpticalZoomMag in the answer";
-      }
-      else if (problem.empty())
-      {
-        problem = vapix::zoomTableOf(attributes, zoom_table_);
-      }
-      if (!problem.empty())
-      {
-        ++counters_.malformed;
-        setupFailed(arguments + ": " + problem + " (set axis/zoom_table or axis/zoom_max_factor to override it)");
-        return false;
-      }
-    }
-    else if (!session_.connected())
-    {
-      return false;
-    }
-    else
-    {
-      refusal = problem;  // an HTTP error: no attributes either
-    }
-    if (!zoom_table_.empty())
-    {
-      zoom_source_ = attributes.steps.empty() ? AxisZoomSource::CAMERA_MAXIMUM : AxisZoomSource::CAMERA_TABLE;
-      text = attributes.steps.empty() ?
-                 formatText("the camera's maxOpticalZoomMag %gX, linear", attributes.max_optical) :
-                 formatText("the camera's zoomSteps (%zu points, %g..%gX)", zoom_table_.size(), zoom_table_.minFactor(),
-                            zoom_table_.maxFactor());
-    }
-    else
-    {
-      // No table from the camera: its model may tell (param.cgi), as a guess.
-      vapix::Product product;
-      if (exchange(vapix::BRAND_PATH, "the brand parameters", body, problem))
-      {
-        vapix::Reply brand;
-        if (vapix::parseReply(body, brand).empty() && vapix::readProduct(brand, product).empty())
-        {
-          model = product.full_name.empty() ? "AXIS " + product.number : product.full_name;
-        }
-      }
-      else if (!session_.connected())
-      {
-        return false;
-      }
-      vapix::FamilyZoom family;
-      const std::string camera = model.empty() ? "this Axis camera" : model;
-      const std::string why = "query=attributes&group=zoom: " + refusal;
-      if (settings_.zoom_guess && !product.number.empty() && vapix::modelFamilyZoom(product.number, family))
-      {
-        zoom_table_ = vapix::ZoomTable::linear(family.max_optical);
-        zoom_source_ = AxisZoomSource::MODEL_GUESS;
-        text = formatText("GUESS: %gX optical at VAPIX zoom 9999, linear, the usual zoom of %s", family.max_optical,
-                          family.models);
-        session_.warn(camera + " gives no zoom table (" + why + "): its zoom X-factor is a guess, " +
-                      formatText("%gX optical as is usual for %s, linear from VAPIX zoom 1 to 9999; ",
-                                 family.max_optical, family.models) +
-                      "set axis/zoom_max_factor to its optical zoom (data sheet) or axis/zoom_table");
-      }
-      else
-      {
-        zoom_source_ = AxisZoomSource::UNKNOWN;
-        const char* reason = !settings_.zoom_guess  ? "zoom_guess is off" :
-                             product.number.empty() ? "its model could not be read" :
-                                                      "its model family has no default";
-        text = std::string("UNKNOWN: no zoom table, ") + reason + "; zoom goals are refused";
-        session_.warn(camera + " gives no zoom table (" + why + ") and " + reason +
-                      ": zoom goals are not supported (velocity goals are); set axis/zoom_table or "
-                      "axis/zoom_max_factor (its optical zoom)");
-      }
-    }
-  }
-  std::lock_guard<std::mutex> lock(facts_mutex_);
-  shared_zoom_source_ = zoom_source_;
-  zoom_text_ = text;
-  if (!model.empty())
-  {
-    model_text_ = model;
-  }
-  return true;
-}
-
 void AxisProtocol::onConnected()
 {
   std::string problem;
@@ -373,6 +162,15 @@ void AxisProtocol::onConnected()
   {
     return;
   }
+  findControlQueue();
+  if (control_queue_ && !requestControl())
+  {
+    if (!session_.connected())
+    {
+      return;
+    }
+    session_.warn(withoutControl() + ": goals fail until control is ours");
+  }
   if (!request("query=position", reply_, problem))
   {
     setupFailed(problem);
@@ -392,11 +190,13 @@ void AxisProtocol::onConnected()
   }
   zoom_feedback_ = !zoom_table_.empty() && position.has_zoom;
   zoom_velocity_ = limits.has_zoom && (commands.empty() || commands.has("continuouszoommove"));
+  widest_view_ = limits.has_zoom && !zoom_feedback_ && (commands.empty() || commands.has("zoom"));
+  widest_zoom_value_ = limits.min_zoom;
   Capabilities capabilities = cameraCapabilities(limits, commands);
   if (zoom_source_ != AxisZoomSource::NO_ZOOM && !zoom_table_.empty() && !position.has_zoom)
   {
-    session_.warn("this Axis camera reports no zoom position (query=position has no zoom=): zoom goals are not "
-                  "supported");
+    session_.warn("this Axis camera reports no zoom position (query=position has no zoom=): zoom goals other than 1 "
+                  "(the widest view) are refused");
   }
   session_.setCapabilities(capabilities);
   session_.ready();
@@ -430,11 +230,22 @@ void AxisProtocol::poll()
   }
   ++counters_.positions;
   session_.reportState({ toRadians(position.pan), toRadians(position.tilt), zoomFactor(position) });
+  if (control_queue_ && secondsBetween(control_asked_at_, session_.now()) >= renew_after_)
+  {
+    requestControl();  // keeps control (or our place in the queue) before the camera's timer runs out
+  }
 }
 
 void AxisProtocol::command(const std::string& arguments)
 {
   const std::uint64_t serial = session_.currentCommand();
+  if (!haveControl())
+  {
+    // The camera would take the command and not move: say why instead.
+    ++counters_.without_control;
+    session_.reportFault(withoutControl(), serial);
+    return;
+  }
   std::string problem;
   vapix::Reply reply;
   const bool done = request(arguments, reply, problem);
@@ -454,10 +265,19 @@ void AxisProtocol::command(const std::string& arguments)
 void AxisProtocol::goTo(const AxisValues& position)
 {
   arguments_.clear();
-  // A zoom it cannot map (no X-factor known) or reads back is never commanded: the goal leaves it alone.
-  const bool zoom = zoom_feedback_ && std::isfinite(position[ZOOM]);
-  vapix::appendAbsoluteMove(arguments_, toDegrees(position[PAN]), toDegrees(position[TILT]),
-                            zoom ? zoom_table_.toValue(position[ZOOM]) : 0.0, settings_.speed);
+  // A zoom it cannot map (no X-factor known) or read back is commanded only to its widest view, MinZoom (the goal
+  // validation lets nothing else through); NaN leaves it alone.
+  double zoom_value = 0.0;  // left out
+  if (zoom_feedback_ && std::isfinite(position[ZOOM]))
+  {
+    zoom_value = zoom_table_.toValue(position[ZOOM]);
+  }
+  else if (widest_view_ && position[ZOOM] == 1.0)
+  {
+    zoom_value = widest_zoom_value_;
+  }
+  vapix::appendAbsoluteMove(arguments_, toDegrees(position[PAN]), toDegrees(position[TILT]), zoom_value,
+                            settings_.speed);
   command(arguments_);
 }
 
@@ -482,6 +302,7 @@ void AxisProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
   {
     std::lock_guard<std::mutex> lock(facts_mutex_);
     values.emplace_back("zoom X-factor", zoom_text_.empty() ? "not asked yet" : zoom_text_);
+    values.emplace_back("PTZ control queue", queue_text_.empty() ? "not asked yet" : queue_text_);
     if (!model_text_.empty())
     {
       values.emplace_back("model", model_text_);
@@ -490,7 +311,9 @@ void AxisProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
   addCounts(values, { { "positions read", counters_.positions },
                       { "commands refused (Error:)", counters_.refusals },
                       { "HTTP error answers", counters_.error_answers },
-                      { "malformed answers", counters_.malformed } });
+                      { "malformed answers", counters_.malformed },
+                      { "PTZ control requests", counters_.control_requests },
+                      { "commands without PTZ control", counters_.without_control } });
 }
 
 void AxisProtocol::validate(const DeviceConfig<AxisProtocol>& config)

@@ -106,8 +106,14 @@ void DeviceSession::start()
     throw BackendError(formatText("only impossible states from %s within %.1f s: %s", device.c_str(),
                                   config_.startup_timeout, impossible.c_str()));
   }
-  throw BackendError(formatText("no answer from %s within %.1f s%s%s", device.c_str(), config_.startup_timeout,
-                                link_error.empty() ? "" : ": ", link_error.c_str()));
+  // What was noticed meanwhile may say why (answers too late for the reply deadline, a link without verification).
+  std::string noticed;
+  for (const std::string& warning : takeWarnings())
+  {
+    noticed += "; " + warning;
+  }
+  throw BackendError(formatText("no answer from %s within %.1f s%s%s%s", device.c_str(), config_.startup_timeout,
+                                link_error.empty() ? "" : ": ", link_error.c_str(), noticed.c_str()));
 }
 
 void DeviceSession::stop()
@@ -270,7 +276,20 @@ void DeviceSession::diagnostics(std::vector<DiagnosticValue>& values) const
                       { "faults of replaced commands (ignored)", counters_.stale_faults },
                       { "impossible states dropped", counters_.impossible_states },
                       { "received bytes dropped (unframed, too long)", counters_.dropped_bytes } });
+  values.emplace_back("state deadline (s)", formatText("%.3f", stateDeadline()));
   values.emplace_back("last link loss", lastLinkLoss());
+}
+
+double DeviceSession::stateDeadline() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return supervisor_.stateTimeout();
+}
+
+void DeviceSession::replyDeadlineChanged(double reply_deadline)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  supervisor_.setStateTimeout(std::max(config_.state_timeout, 2.0 * reply_deadline + config_.poll_period));
 }
 
 void DeviceSession::setCapabilities(const Capabilities& capabilities)

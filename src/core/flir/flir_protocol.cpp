@@ -21,8 +21,8 @@ FlirProtocol::FlirProtocol(const FlirSettings& settings, DeviceSession& session)
   , session_(session)
   , reply_timeout_(replyTimeout(session.linkConfig(), settings.reply_timeout, FLIR_EXCHANGE_BYTES))
   , channel_(
-        session.context(), session.clock(), [&session](const std::string& bytes) { session.write(bytes); },
-        reply_timeout_, [this](const TransactionChannel::Request& lost) { onTimeout(lost); })
+        session, [&session](const std::string& bytes) { session.write(bytes); }, reply_timeout_,
+        [this](const TransactionChannel::Request& lost) { onTimeout(lost); })
   , wait_timer_(session.context())
 {
 }
@@ -106,7 +106,7 @@ void FlirProtocol::armWaitTimer()
   TimePoint due = wait_deadline_;
   if (waiting_ == Wait::QUIET)
   {
-    due = std::min(due, addSeconds(last_bytes_at_, reply_timeout_));
+    due = std::min(due, addSeconds(last_bytes_at_, channel_.replyDeadline()));
   }
   wait_timer_.expires_after(toDuration(std::max(0.0, secondsBetween(session_.now(), due))));
   wait_timer_.async_wait([this](const boost::system::error_code& error) {
@@ -115,7 +115,7 @@ void FlirProtocol::armWaitTimer()
       return;
     }
     const TimePoint now = session_.now();
-    const bool quiet = waiting_ == Wait::QUIET && secondsBetween(last_bytes_at_, now) >= reply_timeout_;
+    const bool quiet = waiting_ == Wait::QUIET && secondsBetween(last_bytes_at_, now) >= channel_.replyDeadline();
     if (quiet || now >= wait_deadline_)
     {
       // Other firmware may send no banner, or never fall quiet: the set-up goes out anyway, and retries.

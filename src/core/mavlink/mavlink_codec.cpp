@@ -4,6 +4,7 @@
 
 #include "ptz_action_server/core/byte_order.h"
 #include "ptz_action_server/core/mavlink/mavlink_messages.h"
+#include "ptz_action_server/core/mavlink/mavlink_vehicle_messages.h"
 
 namespace ptz_action_server
 {
@@ -15,9 +16,12 @@ namespace
 // The messages no one here decodes are known for their CRC_EXTRA only; their length is the wire's.
 constexpr MessageSpec MESSAGES[] = {
   { message_id::HEARTBEAT, "HEARTBEAT", 50, 9 },
+  { message_id::ATTITUDE, "ATTITUDE", 39, 28 },
   { message_id::COMMAND_INT, "COMMAND_INT", 158, 0 },
   { message_id::COMMAND_LONG, "COMMAND_LONG", 152, 33 },
   { message_id::COMMAND_ACK, "COMMAND_ACK", 143, 10 },
+  { message_id::MOUNT_STATUS, "MOUNT_STATUS", 134, 15 },
+  { message_id::MOUNT_ORIENTATION, "MOUNT_ORIENTATION", 26, 20 },
   { message_id::GIMBAL_MANAGER_INFORMATION, "GIMBAL_MANAGER_INFORMATION", 70, 33 },
   { message_id::GIMBAL_MANAGER_STATUS, "GIMBAL_MANAGER_STATUS", 48, 13 },
   { message_id::GIMBAL_MANAGER_SET_ATTITUDE, "GIMBAL_MANAGER_SET_ATTITUDE", 123, 35 },

@@ -386,6 +386,12 @@ void MavlinkGimbalProtocol::diagnostics(std::vector<DiagnosticValue>& values) co
   }
   values.emplace_back("primary control", in_control_ ? "ours" : "not ours");
   values.emplace_back("yaw frame", settings_.yaw_lock ? "North (YAW_LOCK)" : "vehicle");
+  static const char* const FRAMES[] = { "auto", "flags", "vehicle", "North" };
+  const int seen = attitude_frame_;
+  values.emplace_back("attitude yaw frame", std::string(FRAMES[static_cast<int>(settings_.attitude_yaw_frame)]) + ": " +
+                                                (seen < 0  ? "no attitude yet" :
+                                                 seen == 1 ? "read as North" :
+                                                             "read as the vehicle's"));
   addCounts(values, { { "frames", counters_.frames },
                       { "attitudes", counters_.attitudes },
                       { "attitudes of other gimbals", counters_.other_attitudes },

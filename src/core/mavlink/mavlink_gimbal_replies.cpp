@@ -1,12 +1,15 @@
 /**
  * \file
- * \brief MavlinkGimbalProtocol: what the gimbal manager sends (discovery, information, status, acknowledgements,
- * attitude). What goes out is in mavlink_gimbal_protocol.cpp.
+ * \brief MavlinkGimbalProtocol: what the gimbal manager sends (information, status, acknowledgements). Discovery is in
+ * mavlink_gimbal_discovery.cpp, the attitude in mavlink_gimbal_attitude.cpp, what goes out in
+ * mavlink_gimbal_protocol.cpp.
  */
 #include <algorithm>
 #include <cmath>
 
+#include "mavlink_gimbal_internal.h"
 #include "ptz_action_server/core/mavlink/mavlink_gimbal_protocol.h"
+#include "ptz_action_server/core/mavlink/mavlink_vehicle_messages.h"
 #include "ptz_action_server/core/text.h"
 
 namespace ptz_action_server
@@ -14,15 +17,11 @@ namespace ptz_action_server
 namespace
 {
 using namespace mavlink;
+using namespace mavlink_gimbal_detail;
 
 bool finite(float value)
 {
   return std::isfinite(value);
-}
-
-double wrapGimbalAngle(double angle)
-{
-  return std::remainder(angle, 2.0 * M_PI);
 }
 
 /// \p axis narrowed to [\p min, \p max] when the manager gave a usable range.
@@ -51,28 +50,6 @@ const char* commandName(std::uint16_t command)
   }
   return "a command";
 }
-
-/// An index of a component.
-std::uint16_t componentKey(std::uint8_t system_id, std::uint8_t component_id)
-{
-  return static_cast<std::uint16_t>(system_id << 8 | component_id);
-}
-
-std::uint32_t gimbalKey(const MavlinkGimbalAddress& address)
-{
-  return static_cast<std::uint32_t>(address.system_id) << 16 |
-         static_cast<std::uint32_t>(address.manager_component) << 8 | address.device_id;
-}
-
-/// A component whose heartbeat says it may host a gimbal manager: an autopilot (PX4 and ArduPilot manage the gimbals
-/// attached to them), or a gimbal (which may manage itself).
-bool mayManageGimbals(const Heartbeat& heartbeat, std::uint8_t component_id)
-{
-  const bool autopilot = heartbeat.autopilot != MAV_AUTOPILOT_INVALID && heartbeat.type != MAV_TYPE_GCS;
-  const bool gimbal_id = component_id == MAV_COMP_ID_GIMBAL ||
-                         (component_id >= MAV_COMP_ID_GIMBAL2 && component_id <= MAV_COMP_ID_GIMBAL6);
-  return autopilot || heartbeat.type == MAV_TYPE_GIMBAL || gimbal_id;
-}
 }  // namespace
 
 // ---------------------------------------------------------------- what arrives
@@ -98,171 +75,19 @@ void MavlinkGimbalProtocol::handle(const Frame& frame)
       handleAck(frame, decode<CommandAck>(frame));
       return;
     case message_id::GIMBAL_DEVICE_ATTITUDE_STATUS:
+      noteHeard(frame);
       handleAttitude(frame, decode<GimbalDeviceAttitudeStatus>(frame));
+      return;
+    case message_id::ATTITUDE:
+      handleVehicleAttitude(frame);
+      return;
+    case message_id::MOUNT_ORIENTATION:
+    case message_id::MOUNT_STATUS:
+      noteHeard(frame);  // gimbal protocol v1: said at start-up when no manager answers
       return;
     default:
       return;  // known, but nothing the client side needs
   }
-}
-
-void MavlinkGimbalProtocol::handleHeartbeat(const Frame& frame)
-{
-  if (!chosen_ && mayManageGimbals(decode<Heartbeat>(frame), frame.header.component_id))
-  {
-    askCandidate(frame.header.system_id, frame.header.component_id);
-  }
-}
-
-// ---------------------------------------------------------------- discovery
-
-bool MavlinkGimbalProtocol::managerAllowed(std::uint8_t system_id, std::uint8_t component_id) const
-{
-  return (settings_.target_system == 0 || settings_.target_system == system_id) &&
-         (settings_.target_component == 0 || settings_.target_component == component_id);
-}
-
-bool MavlinkGimbalProtocol::gimbalAllowed(const MavlinkGimbalAddress& address) const
-{
-  return managerAllowed(address.system_id, address.manager_component) &&
-         (settings_.gimbal_device_id == 0 || settings_.gimbal_device_id == address.device_id);
-}
-
-void MavlinkGimbalProtocol::askCandidate(std::uint8_t system_id, std::uint8_t component_id)
-{
-  if (!managerAllowed(system_id, component_id))
-  {
-    return;
-  }
-  Asked& asked = asked_[componentKey(system_id, component_id)];
-  if (asked.answered || asked.times >= 3 || (asked.times > 0 && !due(asked.last_at, settings_.resend_period)))
-  {
-    return;
-  }
-  const TimePoint now = session_.now();
-  if (asked.times == 0)
-  {
-    asked.first_at = now;
-  }
-  asked.last_at = now;
-  ++asked.times;
-  requestInformation(system_id, component_id);
-}
-
-void MavlinkGimbalProtocol::discover()
-{
-  if (discovery_failed_)
-  {
-    return;
-  }
-  // Ask again whoever has not answered (a lost datagram).
-  for (auto& entry : asked_)
-  {
-    if (!entry.second.answered)
-    {
-      askCandidate(static_cast<std::uint8_t>(entry.first >> 8), static_cast<std::uint8_t>(entry.first & 0xFF));
-    }
-  }
-  std::vector<const FoundGimbal*> matching;
-  for (const FoundGimbal& found : found_)
-  {
-    if (gimbalAllowed(found.address))
-    {
-      matching.push_back(&found);
-    }
-  }
-  const bool named_in_full =
-      settings_.target_system != 0 && settings_.target_component != 0 && settings_.gimbal_device_id != 0;
-  if (named_in_full && matching.size() == 1)
-  {
-    choose(*matching.front());
-    return;
-  }
-  if (!due(listening_since_, settings_.discovery_time))
-  {
-    return;
-  }
-  for (const auto& entry : asked_)
-  {
-    if (!entry.second.answered && !due(entry.second.first_at, settings_.resend_period))
-    {
-      return;  // a possible manager asked a moment ago: its gimbals may be on their way
-    }
-  }
-  if (matching.size() == 1)
-  {
-    choose(*matching.front());
-    return;
-  }
-  if (matching.empty() && found_.empty())
-  {
-    return;  // nothing yet: the start-up timeout says so
-  }
-  std::vector<const FoundGimbal*> all;
-  for (const FoundGimbal& found : found_)
-  {
-    all.push_back(&found);
-  }
-  discovery_failed_ = true;
-  if (matching.empty())
-  {
-    session_.failStartup(formatText("no gimbal found matches target_system %u, target_component %u, "
-                                    "gimbal_device_id %u (0: any); found: %s",
-                                    settings_.target_system, settings_.target_component, settings_.gimbal_device_id,
-                                    foundList(all).c_str()));
-    return;
-  }
-  // Several: say which setting tells them apart.
-  bool same_manager = true;
-  for (const FoundGimbal* found : matching)
-  {
-    same_manager = same_manager && found->address.system_id == matching.front()->address.system_id &&
-                   found->address.manager_component == matching.front()->address.manager_component;
-  }
-  session_.failStartup(formatText("several gimbals found and none chosen: %s; choose one with %s",
-                                  foundList(matching).c_str(),
-                                  same_manager ? "gimbal_device_id (its id in the list)" :
-                                                 "target_system and target_component (its manager) and, if that "
-                                                 "manager has several, "
-                                                 "gimbal_device_id"));
-}
-
-std::string MavlinkGimbalProtocol::foundList(const std::vector<const FoundGimbal*>& gimbals) const
-{
-  std::string list;
-  for (const FoundGimbal* found : gimbals)
-  {
-    list += (list.empty() ? "" : ", ") + found->address.describe();
-  }
-  return list;
-}
-
-void MavlinkGimbalProtocol::choose(const FoundGimbal& found)
-{
-  {
-    std::lock_guard<std::mutex> lock(names_mutex_);
-    chosen_ = true;
-    gimbal_ = found.address;
-  }
-  chosen_at_ = session_.now();
-  manager_gimbals_.clear();
-  for (const FoundGimbal& other : found_)
-  {
-    if (other.address.system_id == gimbal_.system_id && other.address.manager_component == gimbal_.manager_component)
-    {
-      manager_gimbals_.insert(other.address.device_id);
-    }
-  }
-  const auto status = statuses_.find(gimbalKey(gimbal_));
-  if (status != statuses_.end())
-  {
-    status_seen_ = true;
-    holder_system_ = status->second.primary_control_sysid;
-    holder_component_ = status->second.primary_control_compid;
-  }
-  statuses_.clear();
-  asked_.clear();
-  applyInformation(found.information);
-  requestAttitude();
 }
 
 // ---------------------------------------------------------------- manager messages
@@ -465,55 +290,6 @@ void MavlinkGimbalProtocol::handleAck(const Frame& frame, const CommandAck& ack)
   {
     session_.reportFault(text, goal_command);
   }
-}
-
-// ---------------------------------------------------------------- the attitude
-
-bool MavlinkGimbalProtocol::isOurAttitude(const Frame& frame, const GimbalDeviceAttitudeStatus& attitude) const
-{
-  if (!chosen_ || frame.header.system_id != gimbal_.system_id)
-  {
-    return false;
-  }
-  const std::uint8_t sender = frame.header.component_id;
-  const std::uint8_t id = attitude.gimbal_device_id;
-  if (gimbal_.device_id == 0 || isInternalGimbalId(gimbal_.device_id))
-  {
-    // A gimbal inside its manager: the manager's component sends its attitude with its id.
-    return sender == gimbal_.manager_component && namesOurGimbal(id);
-  }
-  // A MAVLink gimbal device sends its own, with 0 (the protocol's value; its own id is taken too); a manager that
-  // relays it names it.
-  return (sender == gimbal_.device_id && (id == 0 || id == gimbal_.device_id)) ||
-         (sender == gimbal_.manager_component && id == gimbal_.device_id);
-}
-
-void MavlinkGimbalProtocol::handleAttitude(const Frame& frame, const GimbalDeviceAttitudeStatus& attitude)
-{
-  if (!chosen_)
-  {
-    return;  // no gimbal of ours yet
-  }
-  if (!isOurAttitude(frame, attitude))
-  {
-    ++counters_.other_attitudes;
-    return;
-  }
-  const PanTilt angles = panTiltFromQuaternion(attitude.q);
-  // The frame the device reports its yaw in: the flags say, or (before those flags existed) YAW_LOCK means North.
-  const bool earth = yawInEarthFrame(attitude.flags);
-  double pan = angles.pan;
-  if (earth != settings_.yaw_lock)
-  {
-    if (!finite(attitude.delta_yaw))
-    {
-      ++counters_.unusable_attitudes;  // no delta_yaw to relate the frames: the state stays the last one
-      return;
-    }
-    pan += earth ? -attitude.delta_yaw : attitude.delta_yaw;
-  }
-  ++counters_.attitudes;
-  session_.reportState(AxisValues{ { wrapGimbalAngle(pan), angles.tilt, 1.0 } });
 }
 
 }  // namespace ptz_action_server

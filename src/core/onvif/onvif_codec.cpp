@@ -1,10 +1,9 @@
 #include "ptz_action_server/core/onvif/onvif_codec.h"
 
-#include <cmath>
-#include <limits>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
-#include <ctime>
+#include <limits>
 
 #include "ptz_action_server/core/http/crypto.h"
 #include "ptz_action_server/core/parse_number.h"
@@ -152,62 +151,6 @@ const Space* findSpace(const std::vector<Space>& spaces, const std::string& uri)
   return nullptr;
 }
 
-UsernameToken newUsernameToken(const std::string& username, const std::string& created)
-{
-  UsernameToken token;
-  token.username = username;
-  token.nonce = randomBytes(16);
-  token.created = created;
-  return token;
-}
-
-std::string passwordDigest(const std::string& nonce, const std::string& created, const std::string& password)
-{
-  return base64Encode(sha1(nonce + created + password));
-}
-
-std::string isoTime(double utc_seconds)
-{
-  const std::time_t whole = static_cast<std::time_t>(std::floor(utc_seconds));
-  const int millis = std::min(999, static_cast<int>((utc_seconds - static_cast<double>(whole)) * 1000.0));
-  std::tm parts{};
-  gmtime_r(&whole, &parts);
-  return formatText("%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", parts.tm_year + 1900, parts.tm_mon + 1, parts.tm_mday,
-                    parts.tm_hour, parts.tm_min, parts.tm_sec, millis);
-}
-
-bool parseIsoTime(const std::string& text, double& utc_seconds)
-{
-  std::tm parts{};
-  int consumed = 0;
-  if (std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d:%2d%n", &parts.tm_year, &parts.tm_mon, &parts.tm_mday,
-                  &parts.tm_hour, &parts.tm_min, &parts.tm_sec, &consumed) != 6 ||
-      consumed != 19)
-  {
-    return false;
-  }
-  double fraction = 0.0;
-  std::string rest = text.substr(19);
-  if (!rest.empty() && rest[0] == '.')
-  {
-    const std::size_t end = rest.find_first_not_of("0123456789", 1);
-    if (end == 1 || end == std::string::npos || !number("0" + rest.substr(0, end), fraction))
-    {
-      return false;
-    }
-    rest = rest.substr(end);
-  }
-  if (rest != "Z" || parts.tm_mon < 1 || parts.tm_mon > 12 || parts.tm_mday < 1 || parts.tm_mday > 31 ||
-      parts.tm_hour > 23 || parts.tm_min > 59 || parts.tm_sec > 60)
-  {
-    return false;
-  }
-  parts.tm_year -= 1900;
-  parts.tm_mon -= 1;
-  utc_seconds = static_cast<double>(timegm(&parts)) + fraction;
-  return true;
-}
-
 std::string envelope(const std::string& body, const UsernameToken* token, const std::string& password)
 {
   std::string xml = std::string("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<s:Envelope xmlns:s=\"") + ns::SOAP +
@@ -299,13 +242,13 @@ std::string relativeMove(const std::string& profile, const Vector& translation)
 }
 
 std::string continuousMove(const std::string& profile, double x, double y, bool with_zoom, double zoom,
-                           int timeout_seconds, bool with_pan_tilt)
+                           double timeout_seconds, bool with_pan_tilt)
 {
   const Vector velocity =
       Vector::of(with_pan_tilt, x, y, GENERIC_PAN_TILT_VELOCITY, with_zoom, zoom, GENERIC_ZOOM_VELOCITY);
   return "<tptz:ContinuousMove><tptz:ProfileToken>" + escaped(profile) + "</tptz:ProfileToken><tptz:Velocity>" +
          vectorElements(velocity) +
-         formatText("</tptz:Velocity><tptz:Timeout>PT%dS</tptz:Timeout></tptz:ContinuousMove>", timeout_seconds);
+         formatText("</tptz:Velocity><tptz:Timeout>PT%gS</tptz:Timeout></tptz:ContinuousMove>", timeout_seconds);
 }
 
 std::string stop(const std::string& profile)

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <tuple>
 
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
@@ -12,40 +11,6 @@ namespace ptz_action_server
 {
 namespace
 {
-double systemUtc()
-{
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
-}
-
-/// A status position this close outside a listed range (a share of the range's span) is no contradiction: rounding,
-/// overshoot.
-constexpr double RANGE_TOLERANCE = 0.005;
-
-bool convertible(const std::string& space)
-{
-  return space == onvif::DEGREE_SPACE || space == onvif::GENERIC_PAN_TILT_SPACE;
-}
-
-std::string joined(const std::vector<std::string>& parts, const char* separator)
-{
-  std::string text;
-  for (const std::string& part : parts)
-  {
-    text += (text.empty() ? "" : separator) + part;
-  }
-  return text;
-}
-
-std::string spaceNames(const std::vector<onvif::Space>& spaces)
-{
-  std::vector<std::string> names;
-  for (const onvif::Space& space : spaces)
-  {
-    names.push_back(onvif::spaceName(space.uri));
-  }
-  return joined(names, ", ");
-}
-
 /// \p range in degrees as radians within +-pi (an unbounded degree range is the whole turn).
 AxisRange radians(const onvif::Range& range)
 {
@@ -62,8 +27,25 @@ LinkConfig OnvifProtocol::defaultLink()
   return link;
 }
 
+namespace
+{
+onvif::MotionCheckConfig motionCheckOf(const OnvifSettings& settings, const DeviceSession& session)
+{
+  onvif::MotionCheckConfig config;
+  config.deceleration = settings.acceleration > 0.0 ? settings.acceleration : 1.0;
+  config.max_speed = std::max(settings.pan_max_speed, settings.tilt_max_speed);
+  config.poll_period = session.config().poll_period;
+  config.start_timeout = settings.move_start_timeout;
+  return config;
+}
+}  // namespace
+
 OnvifProtocol::OnvifProtocol(const OnvifSettings& settings, DeviceSession& session)
-  : settings_(settings), session_(session), http_(session.http())
+  : settings_(settings)
+  , session_(session)
+  , http_(session.http())
+  , motion_check_(motionCheckOf(settings, session))
+  , velocity_timeout_(settings.velocity_timeout)
 {
   request_.content_type = onvif::SOAP_CONTENT_TYPE;
 }
@@ -122,8 +104,10 @@ Capabilities OnvifProtocol::cameraCapabilities() const
   zoom.absolute = zoom_.absolute;
   zoom.velocity = zoom_.velocity;
   zoom.feedback = zoom_.feedback;
+  zoom.widest_view = zoom_.present && zoom_.absolute;  // generic zoom 0, whether or not its status reports the zoom
   zoom.limitation = zoom_.limitation;
-  zoom.range = { 1.0, zoom_.present ? settings_.zoom_max : 1.0 };
+  // The listed range, unless the camera showed it does not reach its end.
+  zoom.range = { 1.0, !zoom_.present ? 1.0 : honoured_zoom_max_ > 0.0 ? honoured_zoom_max_ : settings_.zoom_max };
   zoom.max_speed = settings_.zoom_max_rate;
   capabilities.relative_moves = !node_.relative_pan_tilt.empty() || !node_.relative_zoom.empty();
   capabilities.device_presets = device_presets_;
@@ -159,14 +143,10 @@ std::string OnvifProtocol::zoomStatusSpace(const onvif::Status& status) const
   return profile_.default_zoom_space.empty() ? onvif::GENERIC_ZOOM_SPACE : profile_.default_zoom_space;
 }
 
-double OnvifProtocol::cameraTime() const
-{
-  return systemUtc() + clock_offset_;
-}
-
 bool OnvifProtocol::call(const std::string& path, const std::string& body, bool secure, std::string& problem)
 {
   problem.clear();
+  unauthorized_ = false;
   request_.path = path;
   if (secure && !settings_.username.empty())
   {
@@ -188,11 +168,13 @@ bool OnvifProtocol::call(const std::string& path, const std::string& body, bool 
   if (malformed.empty() && message_.fault)
   {
     ++counters_.faults;
+    unauthorized_ = onvif::faultHas(message_, "NotAuthorized");
     problem = "the ONVIF camera refused " + operation + ": " + message_.fault_text;
     return false;
   }
   if (reply.status == 401)
   {
+    unauthorized_ = true;
     problem = "HTTP 401 Unauthorized: the camera refused the credentials of user '" +
               session_.linkConfig().http.username + "' for " + operation;
   }
@@ -213,211 +195,6 @@ bool OnvifProtocol::call(const std::string& path, const std::string& body, bool 
   return true;
 }
 
-void OnvifProtocol::setupFailed(const std::string& problem)
-{
-  if (problem.empty())
-  {
-    return;
-  }
-  session_.failStartup(problem);
-  session_.disconnect(problem);
-}
-
-bool OnvifProtocol::bringUp(std::string& problem, onvif::Status& status)
-{
-  using namespace onvif;
-  double camera_utc = 0.0;
-  if (!call(settings_.device_path, getSystemDateAndTime(), false, problem))
-  {
-    return false;
-  }
-  const double our_utc = systemUtc();
-  problem = readSystemTime(message_.content, camera_utc);
-  if (!problem.empty())
-  {
-    problem = "GetSystemDateAndTime answered " + problem;
-    return false;
-  }
-  clock_offset_ = camera_utc - our_utc;
-  if (!call(settings_.device_path, getCapabilities(), true, problem))
-  {
-    return false;
-  }
-  if (!(problem = readCapabilities(message_.content, paths_)).empty())
-  {
-    problem = "GetCapabilities answered " + problem;
-    return false;
-  }
-  if (!call(paths_.media, getProfiles(), true, problem))
-  {
-    return false;
-  }
-  if (!(problem = readProfiles(message_.content, settings_.profile, profile_)).empty())
-  {
-    problem = "GetProfiles answered " + problem;
-    return false;
-  }
-  if (!call(paths_.ptz, getNodes(), true, problem))
-  {
-    return false;
-  }
-  if (!(problem = readNode(message_.content, profile_.node, node_)).empty())
-  {
-    problem = "GetNodes answered " + problem;
-    return false;
-  }
-  if (!call(paths_.ptz, getConfigurationOptions(profile_.ptz_configuration), true, problem))
-  {
-    return false;
-  }
-  double timeout_min = 0.0;
-  double timeout_max = 0.0;
-  if (!(problem = readTimeoutRange(message_.content, timeout_min, timeout_max)).empty())
-  {
-    problem = "GetConfigurationOptions answered " + problem;
-    return false;
-  }
-  if (timeout_max > 0.0 && (settings_.velocity_timeout < timeout_min || settings_.velocity_timeout > timeout_max))
-  {
-    problem = formatText("velocity_timeout %d s is outside the camera's PTZTimeout range [%g, %g] s",
-                         settings_.velocity_timeout, timeout_min, timeout_max);
-    return false;
-  }
-  // Presets only say what the camera has: a camera that refuses GetPresets (ter:ActionNotSupported, as some do
-  // although their node lists presets) has none, and starts all the same.
-  device_presets_ = false;
-  std::string presets = "none (the node lists MaximumNumberOfPresets 0)";
-  if (node_.max_presets > 0)
-  {
-    std::vector<Preset> stored;
-    if (call(paths_.ptz, getPresets(profile_.token), true, problem))
-    {
-      const std::string unread = readPresets(message_.content, stored);
-      device_presets_ = unread.empty();
-      presets = unread.empty() ? formatText("%zu stored, at most %d", stored.size(), node_.max_presets) :
-                                 "none: GetPresets answered " + unread;
-    }
-    else if (problem.empty())
-    {
-      return false;  // the link went: nothing was answered
-    }
-    else
-    {
-      presets = "none: " + problem;
-      problem.clear();
-    }
-  }
-  if (!call(paths_.ptz, getStatus(profile_.token), true, problem))
-  {
-    return false;
-  }
-  if (!(problem = readStatus(message_.content, status)).empty())
-  {
-    problem = "GetStatus answered " + problem;
-    return false;
-  }
-  plan(status);
-  if (!pan_tilt_.absolute && !pan_tilt_.velocity && !zoom_.present)
-  {
-    problem = "PTZ node '" + node_.token +
-              "' lists no space this backend can move (absolute pan-tilt: " + spaceNames(node_.absolute_pan_tilt) +
-              "; continuous pan-tilt: " + spaceNames(node_.continuous_pan_tilt) + ")";
-    return false;
-  }
-  std::lock_guard<std::mutex> lock(report_mutex_);
-  report_.presets = presets;
-  report_.pan_tilt =
-      (pan_tilt_.absolute ? "AbsoluteMove in " + spaceName(pan_tilt_.move_space) : "no AbsoluteMove") +
-      std::string(pan_tilt_.velocity ? ", ContinuousMove" : ", no ContinuousMove") +
-      (pan_tilt_.feedback ? ", status in " + spaceName(pan_tilt_.status_space) : ", no position in the status");
-  return true;
-}
-
-void OnvifProtocol::plan(const onvif::Status& status)
-{
-  using namespace onvif;
-  PanTiltPlan pan_tilt;
-  const Space* degrees = findSpace(node_.absolute_pan_tilt, DEGREE_SPACE);
-  const Space* generic = findSpace(node_.absolute_pan_tilt, GENERIC_PAN_TILT_SPACE);
-  pan_tilt.status_space = status.has_pan_tilt ? statusSpace(status) : "";
-  pan_tilt.feedback = status.has_pan_tilt && convertible(pan_tilt.status_space);
-  const Space* chosen = degrees != nullptr ? degrees : generic;
-  if (degrees != nullptr && generic != nullptr &&
-      (!settings_.prefer_degrees || (pan_tilt.feedback && pan_tilt.status_space == GENERIC_PAN_TILT_SPACE)))
-  {
-    chosen = generic;  // asked for, or the status comes in it: a goal and what confirms it in one space
-  }
-  pan_tilt.absolute = chosen != nullptr && absolute_refused_.empty();
-  if (chosen != nullptr)
-  {
-    const Space* corrected = findSpace(corrected_, chosen->uri);
-    pan_tilt.move_space = chosen->uri;
-    pan_tilt.x = corrected != nullptr ? corrected->x : chosen->x;
-    pan_tilt.y = corrected != nullptr ? corrected->y : chosen->y;
-  }
-  pan_tilt.velocity = findSpace(node_.continuous_pan_tilt, GENERIC_PAN_TILT_VELOCITY) != nullptr;
-  std::vector<std::string> lacks;
-  if (!pan_tilt.absolute && !absolute_refused_.empty())
-  {
-    lacks.push_back("this camera answers AbsoluteMove with " + absolute_refused_);
-  }
-  else if (!pan_tilt.absolute)
-  {
-    lacks.push_back(node_.absolute_pan_tilt.empty() ? "this camera lists no absolute pan-tilt space (no AbsoluteMove)" :
-                                                      "this camera lists only absolute pan-tilt spaces this backend "
-                                                      "cannot use (" +
-                                                          spaceNames(node_.absolute_pan_tilt) + ")");
-  }
-  if (!pan_tilt.velocity)
-  {
-    lacks.push_back("this camera lists no generic pan-tilt velocity space (no ContinuousMove)");
-  }
-  if (!status.has_pan_tilt)
-  {
-    lacks.push_back("its GetStatus answers no pan-tilt position");
-  }
-  else if (!pan_tilt.feedback)
-  {
-    lacks.push_back("its GetStatus answers the pan-tilt position in '" + pan_tilt.status_space +
-                    "', a space this backend cannot convert");
-  }
-  pan_tilt.limitation = joined(lacks, " and ");
-  if (!pan_tilt.limitation.empty() && pan_tilt.limitation.compare(0, 4, "its ") == 0)
-  {
-    pan_tilt.limitation = "this camera's" + pan_tilt.limitation.substr(3);
-  }
-  pan_tilt_ = pan_tilt;
-
-  ZoomPlan zoom;
-  zoom.present = findSpace(node_.absolute_zoom, GENERIC_ZOOM_SPACE) != nullptr;
-  zoom.absolute = zoom.present && absolute_refused_.empty();
-  zoom.velocity = zoom.present && findSpace(node_.continuous_zoom, GENERIC_ZOOM_VELOCITY) != nullptr;
-  const std::string zoom_space = zoomStatusSpace(status);
-  zoom.feedback = zoom.present && status.has_zoom && zoom_space == GENERIC_ZOOM_SPACE;
-  if (!zoom.present && !node_.absolute_zoom.empty())
-  {
-    zoom.limitation = "this camera lists no generic zoom position space (only " + spaceNames(node_.absolute_zoom) + ")";
-  }
-  else if (!zoom.present && !node_.continuous_zoom.empty())
-  {
-    zoom.limitation = "this camera lists no zoom position space (it only zooms at a speed)";
-  }
-  else if (zoom.present && !zoom.absolute)
-  {
-    zoom.limitation = "this camera answers AbsoluteMove with " + absolute_refused_;
-  }
-  else if (zoom.present && !status.has_zoom)
-  {
-    zoom.limitation = "this camera's GetStatus answers no zoom position";
-  }
-  else if (zoom.present && !zoom.feedback)
-  {
-    zoom.limitation = "this camera's GetStatus answers the zoom position in '" + zoom_space +
-                      "', a space this backend cannot convert";
-  }
-  zoom_ = zoom;
-}
-
 void OnvifProtocol::warnOnce(const std::string& key, const std::string& text)
 {
   if (std::find(warned_.begin(), warned_.end(), key) != warned_.end())
@@ -430,72 +207,6 @@ void OnvifProtocol::warnOnce(const std::string& key, const std::string& text)
     report_.warnings.push_back(text);
   }
   session_.warn(text);
-}
-
-void OnvifProtocol::checkRanges(const onvif::Status& status, const std::string& space)
-{
-  const onvif::Space* listed = onvif::findSpace(node_.absolute_pan_tilt, space);
-  if (listed == nullptr)
-  {
-    return;  // not listed at all: nothing to contradict
-  }
-  onvif::Space in_use = *listed;
-  if (const onvif::Space* corrected = onvif::findSpace(corrected_, space))
-  {
-    in_use = *corrected;
-  }
-  const bool generic = space == onvif::GENERIC_PAN_TILT_SPACE;
-  bool changed = false;
-  for (const auto& axis :
-       { std::make_tuple("pan", "x", status.x, &in_use.x), std::make_tuple("tilt", "y", status.y, &in_use.y) })
-  {
-    onvif::Range& range = *std::get<3>(axis);
-    const double value = std::get<2>(axis);
-    const double span = range.max - range.min;
-    if (!std::isfinite(span) || range.contains(value, RANGE_TOLERANCE * std::max(span, 1e-9)))
-    {
-      continue;
-    }
-    // The camera is where its status says: a listed range without that position is wrong. The generic space's range
-    // is by definition the whole travel, [-1, 1]; a degree range only grows to what the camera showed.
-    const onvif::Range listed_range = range;
-    if (generic)
-    {
-      range = onvif::Range{ -1.0, 1.0 };
-    }
-    range.min = std::min(range.min, value);
-    range.max = std::max(range.max, value);
-    changed = true;
-    warnOnce(space + std::get<1>(axis),
-             formatText("the camera's GetNodes lists the %s %s range [%g, %g], but its GetStatus answered %s = %g: "
-                        "the listed range is wrong; the backend trusts the status and uses [%g, %g]%s",
-                        onvif::spaceName(space).c_str(), std::get<0>(axis), listed_range.min, listed_range.max,
-                        std::get<1>(axis), value, range.min, range.max,
-                        generic ? " (the generic space's whole range by the specification)" : ""));
-  }
-  if (!changed)
-  {
-    return;
-  }
-  auto stored = std::find_if(corrected_.begin(), corrected_.end(),
-                             [&space](const onvif::Space& item) { return item.uri == space; });
-  if (stored == corrected_.end())
-  {
-    corrected_.push_back(in_use);
-  }
-  else
-  {
-    *stored = in_use;
-  }
-  if (pan_tilt_.absolute && pan_tilt_.move_space == space)
-  {
-    pan_tilt_.x = in_use.x;
-    pan_tilt_.y = in_use.y;
-    if (session_.connected())
-    {
-      session_.setCapabilities(cameraCapabilities());
-    }
-  }
 }
 
 std::string OnvifProtocol::readState(const onvif::Status& status, AxisValues& position)
@@ -544,6 +255,7 @@ std::string OnvifProtocol::readState(const onvif::Status& status, AxisValues& po
 void OnvifProtocol::onConnected()
 {
   velocity_body_.clear();
+  motion_check_.clear();
   std::string problem;
   onvif::Status status;
   if (!bringUp(problem, status))
@@ -574,7 +286,7 @@ void OnvifProtocol::onConnected()
 void OnvifProtocol::poll()
 {
   std::string problem;
-  if (!velocity_body_.empty() && secondsBetween(velocity_sent_at_, session_.now()) >= 0.5 * settings_.velocity_timeout)
+  if (!velocity_body_.empty() && secondsBetween(velocity_sent_at_, session_.now()) >= 0.5 * velocity_timeout_)
   {
     ++counters_.velocity_refreshes;
     command(paths_.ptz, velocity_body_, "ContinuousMove");
@@ -605,6 +317,13 @@ void OnvifProtocol::poll()
     return;
   }
   ++counters_.statuses;
+  onvif::Observation observed;
+  observed.at = session_.now();
+  observed.position = position;
+  observed.reported = { pan_tilt_.feedback, pan_tilt_.feedback, zoom_.feedback };
+  observed.pan_tilt_status = status.move_status;
+  observed.zoom_status = status.zoom_move_status;
+  onFinding(motion_check_.observe(observed));
   if (pan_tilt_.feedback || zoom_.feedback)
   {
     session_.reportState(position);
@@ -613,130 +332,6 @@ void OnvifProtocol::poll()
   {
     session_.reportAlive();
   }
-}
-
-void OnvifProtocol::command(const std::string& path, const std::string& body, const char* operation)
-{
-  const std::uint64_t serial = session_.currentCommand();
-  std::string problem;
-  const bool done = call(path, body, true, problem);
-  if (!done && !problem.empty())
-  {
-    session_.reportFault(problem, serial);
-    if (std::string(operation) == "AbsoluteMove" && onvif::faultHas(message_, "ActionNotSupported"))
-    {
-      absoluteMoveRefused(message_.fault_text);
-    }
-  }
-  if (done || !problem.empty())
-  {
-    // An answer, even a fault: the camera is alive (a slow camera's command and the next GetStatus may leave more
-    // than state_timeout between two positions; each answer within it keeps the link up).
-    session_.reportAlive();
-  }
-  if (std::string(operation) == "ContinuousMove")
-  {
-    velocity_sent_at_ = session_.now();
-  }
-}
-
-void OnvifProtocol::absoluteMoveRefused(const std::string& answer)
-{
-  if (!absolute_refused_.empty())
-  {
-    return;
-  }
-  // Some continuous-only cameras list position spaces all the same: their answer is the truth.
-  std::string codes;
-  for (const std::string& subcode : message_.subcodes)
-  {
-    codes += (codes.empty() ? "" : "/") + subcode;
-  }
-  absolute_refused_ = codes.empty() ? message_.fault_code : codes;  // "ter:ActionNotSupported"
-  pan_tilt_.absolute = false;
-  zoom_.absolute = false;
-  pan_tilt_.limitation = "this camera answers AbsoluteMove with " + absolute_refused_ +
-                         (pan_tilt_.limitation.empty() ? "" : " and " + pan_tilt_.limitation);
-  zoom_.limitation = zoom_.present ? "this camera answers AbsoluteMove with " + absolute_refused_ : zoom_.limitation;
-  session_.setCapabilities(cameraCapabilities());
-  warnOnce("AbsoluteMove", "the camera lists position spaces but answered AbsoluteMove with " + answer +
-                               ": it is taken as a camera that only moves at a speed (ContinuousMove) from now on");
-}
-
-void OnvifProtocol::goTo(const AxisValues& position)
-{
-  velocity_body_.clear();
-  const bool pan_tilt = !(std::isnan(position[PAN]) && std::isnan(position[TILT]));
-  const bool zoom = zoom_.present && !std::isnan(position[ZOOM]);
-  if ((pan_tilt && !pan_tilt_.absolute) || (zoom && !zoom_.absolute))
-  {
-    ++counters_.refused_locally;
-    const bool pan_tilt_lacks = pan_tilt && !pan_tilt_.absolute;
-    session_.reportFault(std::string("not sent: the ONVIF camera cannot go to a ") +
-                             (pan_tilt_lacks ? "pan-tilt" : "zoom") + " position (" +
-                             (pan_tilt_lacks ? pan_tilt_.limitation : zoom_.limitation) + ")",
-                         session_.currentCommand());
-    return;
-  }
-  onvif::Vector target;
-  if (pan_tilt)
-  {
-    // Pan and tilt travel together (a PanTilt has x and y): an axis left alone keeps where it is.
-    const AxisValues now = session_.estimate().position;
-    const double pan = std::isnan(position[PAN]) ? now[PAN] : position[PAN];
-    const double tilt = std::isnan(position[TILT]) ? now[TILT] : position[TILT];
-    const bool degrees = pan_tilt_.move_space == onvif::DEGREE_SPACE;
-    target.pan_tilt = true;
-    target.pan_tilt_space = pan_tilt_.move_space;
-    target.x = std::clamp(degrees ? toDegrees(pan) : genericOf(settings_.pan, pan), pan_tilt_.x.min, pan_tilt_.x.max);
-    target.y =
-        std::clamp(degrees ? toDegrees(tilt) : genericOf(settings_.tilt, tilt), pan_tilt_.y.min, pan_tilt_.y.max);
-  }
-  if (zoom)
-  {
-    target.zoom = true;
-    target.zoom_space = onvif::GENERIC_ZOOM_SPACE;
-    target.z = std::clamp(std::log(std::max(1.0, position[ZOOM])) / std::log(settings_.zoom_max), 0.0, 1.0);
-  }
-  if (target.pan_tilt || target.zoom)
-  {
-    command(paths_.ptz, onvif::absoluteMove(profile_.token, target), "AbsoluteMove");
-  }
-}
-
-void OnvifProtocol::moveAtVelocity(const AxisValues& velocity)
-{
-  const bool pan_tilt_moves = velocity[PAN] != 0.0 || velocity[TILT] != 0.0;
-  if ((pan_tilt_moves && !pan_tilt_.velocity) || (velocity[ZOOM] != 0.0 && !zoom_.velocity))
-  {
-    ++counters_.refused_locally;
-    velocity_body_.clear();
-    const bool zoom_lacks = velocity[ZOOM] != 0.0 && !zoom_.velocity;
-    session_.reportFault(std::string("not sent: the ONVIF camera cannot move its ") +
-                             (zoom_lacks ? "zoom" : "pan-tilt") + " at a speed (" +
-                             (zoom_lacks ?
-                                  (zoom_.limitation.empty() ? "it lists no zoom velocity space" : zoom_.limitation) :
-                                  pan_tilt_.limitation) +
-                             ")",
-                         session_.currentCommand());
-    return;
-  }
-  if (!pan_tilt_.velocity && !zoom_.velocity)
-  {
-    return;
-  }
-  const double x = std::clamp(settings_.velocity_sign_pan * velocity[PAN] / settings_.pan_max_speed, -1.0, 1.0);
-  const double y = std::clamp(settings_.velocity_sign_tilt * velocity[TILT] / settings_.tilt_max_speed, -1.0, 1.0);
-  const double zoom = std::clamp(velocity[ZOOM] / settings_.zoom_max_rate, -1.0, 1.0);
-  velocity_body_ =
-      onvif::continuousMove(profile_.token, x, y, zoom_.velocity, zoom, settings_.velocity_timeout, pan_tilt_.velocity);
-  command(paths_.ptz, velocity_body_, "ContinuousMove");
-}
-
-void OnvifProtocol::stop()
-{
-  velocity_body_.clear();
-  command(paths_.ptz, onvif::stop(profile_.token), "Stop");
 }
 
 void OnvifProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
@@ -753,7 +348,8 @@ void OnvifProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
                       { "HTTP error answers", counters_.error_answers },
                       { "malformed answers", counters_.malformed },
                       { "ContinuousMoves re-sent before their timeout", counters_.velocity_refreshes },
-                      { "commands the camera cannot do (not sent)", counters_.refused_locally } });
+                      { "commands the camera cannot do (not sent)", counters_.refused_locally },
+                      { "zero-velocity ContinuousMoves after Stop", counters_.zero_velocity_stops } });
 }
 
 void OnvifProtocol::validate(const DeviceConfig<OnvifProtocol>& config)

@@ -70,7 +70,7 @@ PelcoProtocol::PelcoProtocol(const PelcoSettings& settings, DeviceSession& sessi
   : settings_(settings)
   , session_(session)
   , channel_(
-        session.context(), session.clock(), [&session](const std::string& bytes) { session.write(bytes); },
+        session, [&session](const std::string& bytes) { session.write(bytes); },
         replyTimeout(session.linkConfig(), settings.reply_timeout, PELCO_EXCHANGE_BYTES),
         [this](const TransactionChannel::Request&) {
           parser_.reset();

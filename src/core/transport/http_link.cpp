@@ -168,6 +168,9 @@ void HttpLink::configureHandle()
   curl_easy_setopt(curl_, CURLOPT_TCP_NODELAY, 1L);
   curl_easy_setopt(curl_, CURLOPT_TCP_KEEPALIVE, 1L);
   curl_easy_setopt(curl_, CURLOPT_MAXCONNECTS, 1L);  // one camera, one connection
+  // Keep the cookies the camera sets and send them back: an Axis camera with its PTZ control queue on tells its
+  // clients apart by a cookie (VAPIX Queuing API), and control is the cookie's.
+  curl_easy_setopt(curl_, CURLOPT_COOKIEFILE, "");
   configureTls();
   if (http.auth != HttpAuth::NONE)
   {

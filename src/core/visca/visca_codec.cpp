@@ -79,6 +79,13 @@ std::uint32_t getNibbles(const std::uint8_t* in, std::size_t count)
   return value;
 }
 
+std::int32_t getSignedNibbles(const std::uint8_t* in, std::size_t count)
+{
+  const std::uint32_t value = getNibbles(in, count);
+  const std::uint32_t sign = std::uint32_t(1) << (4 * count - 1);
+  return static_cast<std::int32_t>(value & (sign - 1)) - static_cast<std::int32_t>(value & sign);
+}
+
 Packet addressSet()
 {
   return { BROADCAST, 0x30, 0x01, TERMINATOR };
@@ -95,13 +102,14 @@ Packet panTiltDrive(std::uint8_t address, std::uint8_t pan_speed, std::uint8_t t
            tilt_speed,      panDirection(pan), tiltDirection(tilt), TERMINATOR };
 }
 
-Packet panTiltPosition(std::uint8_t address, std::uint8_t pan_speed, std::uint8_t tilt_speed, std::int16_t pan,
-                       std::int16_t tilt, bool relative)
+Packet panTiltPosition(std::uint8_t address, std::uint8_t pan_speed, std::uint8_t tilt_speed, std::int32_t pan,
+                       std::int32_t tilt, const PositionLayout& layout, bool relative)
 {
-  Packet packet{ header(address), COMMAND,   PAN_TILTER, static_cast<std::uint8_t>(relative ? 0x03 : 0x02),
-                 pan_speed,       tilt_speed };
-  putNibbles(packet, static_cast<std::uint16_t>(pan), 4);
-  putNibbles(packet, static_cast<std::uint16_t>(tilt), 4);
+  Packet packet{ header(address), COMMAND,
+                 PAN_TILTER,      static_cast<std::uint8_t>(relative ? 0x03 : 0x02),
+                 pan_speed,       static_cast<std::uint8_t>(layout.shared_speed ? 0x00 : tilt_speed) };
+  putNibbles(packet, static_cast<std::uint32_t>(pan), layout.pan_nibbles);
+  putNibbles(packet, static_cast<std::uint32_t>(tilt), layout.tilt_nibbles);
   packet.push_back(TERMINATOR);
   return packet;
 }
@@ -133,6 +141,21 @@ Packet zoomDrive(std::uint8_t address, int speed)
            TERMINATOR };
 }
 
+Packet zoomDriveStandard(std::uint8_t address, int direction)
+{
+  if (direction == 0)
+  {
+    return zoomStop(address);
+  }
+  return { header(address), COMMAND, CAMERA, 0x07, static_cast<std::uint8_t>(direction > 0 ? 0x02 : 0x03), TERMINATOR };
+}
+
+bool isVariableZoomDrive(const Packet& packet)
+{
+  return packet.size() == 6 && (packet[0] & 0xF0) == 0x80 && packet[1] == COMMAND && packet[2] == CAMERA &&
+         packet[3] == 0x07 && ((packet[4] & 0xF0) == 0x20 || (packet[4] & 0xF0) == 0x30);
+}
+
 Packet zoomDirect(std::uint8_t address, std::uint16_t position)
 {
   Packet packet{ header(address), COMMAND, CAMERA, 0x47 };
@@ -149,6 +172,21 @@ Packet zoomInquiry(std::uint8_t address)
 Packet cancel(std::uint8_t address, std::uint8_t socket)
 {
   return { header(address), static_cast<std::uint8_t>(0x20 | (socket & 0x0F)), TERMINATOR };
+}
+
+Packet ifClearAddressed(std::uint8_t address)
+{
+  return { header(address), COMMAND, 0x00, 0x01, TERMINATOR };
+}
+
+Packet versionInquiry(std::uint8_t address)
+{
+  return { header(address), INQUIRY, 0x00, 0x02, TERMINATOR };
+}
+
+Packet powerInquiry(std::uint8_t address)
+{
+  return { header(address), INQUIRY, CAMERA, 0x00, TERMINATOR };
 }
 
 Reply classify(const Packet& packet)
@@ -212,14 +250,14 @@ Reply classify(const Packet& packet)
   return reply;
 }
 
-bool decodePanTiltAnswer(const Reply& reply, std::int16_t& pan, std::int16_t& tilt)
+bool decodePanTiltAnswer(const Reply& reply, const PositionLayout& layout, std::int32_t& pan, std::int32_t& tilt)
 {
-  if (reply.kind != Reply::Kind::ANSWER || reply.data.size() != 8)
+  if (reply.kind != Reply::Kind::ANSWER || reply.data.size() != layout.answerSize())
   {
     return false;
   }
-  pan = static_cast<std::int16_t>(static_cast<std::uint16_t>(getNibbles(reply.data.data(), 4)));
-  tilt = static_cast<std::int16_t>(static_cast<std::uint16_t>(getNibbles(reply.data.data() + 4, 4)));
+  pan = getSignedNibbles(reply.data.data(), layout.pan_nibbles);
+  tilt = getSignedNibbles(reply.data.data() + layout.pan_nibbles, layout.tilt_nibbles);
   return true;
 }
 
@@ -326,6 +364,10 @@ const char* toString(IpError error)
 IpError decodeIp(const std::uint8_t* data, std::size_t size, IpMessage& message)
 {
   message = IpMessage{};
+  if (size >= IP_HEADER_SIZE)
+  {
+    message.sequence = getBigEndian<std::uint32_t>(data + 4);
+  }
   if (size < IP_HEADER_SIZE + 1)
   {
     return IpError::TOO_SHORT;
@@ -335,12 +377,12 @@ IpError decodeIp(const std::uint8_t* data, std::size_t size, IpMessage& message)
   {
     return IpError::LENGTH_MISMATCH;
   }
-  if (type != IP_COMMAND && type != IP_INQUIRY && type != IP_REPLY && type != IP_CONTROL && type != IP_CONTROL_REPLY)
+  if (type != IP_COMMAND && type != IP_INQUIRY && type != IP_REPLY && type != IP_DEVICE_SETTING && type != IP_CONTROL &&
+      type != IP_CONTROL_REPLY)
   {
     return IpError::UNKNOWN_TYPE;
   }
   message.type = type;
-  message.sequence = getBigEndian<std::uint32_t>(data + 4);
   message.payload.assign(data + IP_HEADER_SIZE, data + size);
   return IpError::NONE;
 }

@@ -16,47 +16,18 @@ namespace
 constexpr int ZOOM_SPEEDS = 8;
 }  // namespace
 
-bool ViscaModel::preset(const std::string& name, ViscaModel& model)
+std::int32_t ViscaModel::toSteps(Axis axis, double radians) const
 {
-  ViscaModel chosen;
-  chosen.name = name;
-  if (name == "evi_d70")
-  {
-    // EVI-D70 technical manual: pan F725h..08DBh = -170..+170 degrees, tilt FE70h..04B0h = -30..+90 (0.075 degrees a
-    // step); pan speed bytes 01..18h up to 100 deg/s, tilt 01..17h up to 90 deg/s; optical zoom 0000h..4000h, 18x.
-    chosen.axes = { { { 13.3333, -170.0, 170.0, 0x18, 100.0 }, { 13.3333, -30.0, 90.0, 0x17, 90.0 } } };
-    chosen.zoom_table = { { 0x0000, 1.0 }, { 0x4000, 18.0 } };
-  }
-  else if (name == "evi_d30")
-  {
-    // EVI-D30/D31: pan FC90h..0370h = -100..+100 degrees, tilt FED4h..012Ch = -25..+25; pan bytes 01..18h at 3.3
-    // deg/s each (80), tilt 01..14h at 2.5 each (50); zoom 0000h..03FFh, 12x.
-    chosen.axes = { { { 8.8, -100.0, 100.0, 0x18, 80.0 }, { 12.0, -25.0, 25.0, 0x14, 50.0 } } };
-    chosen.zoom_table = { { 0x0000, 1.0 }, { 0x03FF, 12.0 } };
-  }
-  else if (name != "ptzoptics")
-  {
-    return false;
-  }
-  model = chosen;
-  return true;
+  const ViscaAxis& visca_axis = axes[axis];
+  const double steps = std::round(toDegrees(radians) * visca_axis.steps_per_degree) * (visca_axis.reversed ? -1 : 1);
+  const double limit = PositionLayout::limit(axis == PAN ? layout.pan_nibbles : layout.tilt_nibbles);
+  return static_cast<std::int32_t>(std::clamp(steps, -limit - 1, limit));
 }
 
-const char* ViscaModel::presetNames()
+double ViscaModel::fromSteps(Axis axis, std::int32_t steps) const
 {
-  return "evi_d70, evi_d30, ptzoptics";
-}
-
-std::int16_t ViscaModel::toSteps(Axis axis, double radians) const
-{
-  const double steps = std::round(toDegrees(radians) * axes[axis].steps_per_degree);
-  return static_cast<std::int16_t>(std::clamp(steps, double(std::numeric_limits<std::int16_t>::min()),
-                                              double(std::numeric_limits<std::int16_t>::max())));
-}
-
-double ViscaModel::fromSteps(Axis axis, std::int16_t steps) const
-{
-  return toRadians(steps / axes[axis].steps_per_degree);
+  const ViscaAxis& visca_axis = axes[axis];
+  return toRadians(steps / visca_axis.steps_per_degree) * (visca_axis.reversed ? -1 : 1);
 }
 
 std::uint8_t ViscaModel::speedByte(Axis axis, double speed) const
@@ -66,7 +37,22 @@ std::uint8_t ViscaModel::speedByte(Axis axis, double speed) const
   {
     return 0;
   }
-  const double share = std::abs(toDegrees(speed)) / visca_axis.max_speed;
+  const double degrees = std::abs(toDegrees(speed));
+  if (!visca_axis.speed_table.empty())
+  {
+    // The byte whose speed in the maker's table is nearest (the tables rise unevenly).
+    const std::vector<double>& table = visca_axis.speed_table;
+    std::size_t best = 0;
+    for (std::size_t index = 1; index < table.size(); ++index)
+    {
+      if (std::abs(table[index] - degrees) < std::abs(table[best] - degrees))
+      {
+        best = index;
+      }
+    }
+    return static_cast<std::uint8_t>(best + 1);
+  }
+  const double share = degrees / visca_axis.max_speed;
   return static_cast<std::uint8_t>(
       std::clamp(static_cast<int>(std::lround(share * visca_axis.max_speed_byte)), 1, int(visca_axis.max_speed_byte)));
 }
@@ -75,6 +61,14 @@ double ViscaModel::speedOfByte(Axis axis, std::uint8_t byte) const
 {
   const ViscaAxis& visca_axis = axes[axis];
   const int clamped = std::min<int>(byte, visca_axis.max_speed_byte);
+  if (clamped <= 0)
+  {
+    return 0.0;
+  }
+  if (!visca_axis.speed_table.empty())
+  {
+    return toRadians(visca_axis.speed_table[std::min<std::size_t>(clamped, visca_axis.speed_table.size()) - 1]);
+  }
   return toRadians(visca_axis.max_speed * clamped / visca_axis.max_speed_byte);
 }
 
@@ -141,8 +135,22 @@ std::array<AxisCapability, AXIS_COUNT> ViscaModel::capabilities() const
     result[axis] = fullAxis({ toRadians(visca_axis.min_degrees), toRadians(visca_axis.max_degrees) },
                             toRadians(visca_axis.max_speed), acceleration);
   }
-  result[ZOOM] = has_zoom ? fullAxis({ zoom_table.front().zoom, zoom_table.back().zoom }, zoom_rate, 0.0) :
-                            absentAxis("this VISCA model has no zoom");
+  if (!has_zoom)
+  {
+    result[ZOOM] = absentAxis("this VISCA model has no zoom");
+    return result;
+  }
+  result[ZOOM] = fullAxis({ zoom_table.front().zoom, zoom_table.back().zoom }, zoom_rate, 0.0);
+  if (!zoom_table_known)
+  {
+    // The camera reports zoom positions, but what X-factor each gives depends on its lens: never judged in X.
+    AxisCapability& zoom = result[ZOOM];
+    zoom.absolute = false;
+    zoom.feedback = false;
+    zoom.widest_view = true;  // position 0000 is the wide end whatever the lens
+    zoom.limitation = "the X-factor of this VISCA camera's zoom positions depends on its lens (" + name + ")";
+    zoom.remedy = "set visca/zoom/table to the lens's 'position:X' rows";
+  }
   return result;
 }
 
@@ -156,6 +164,20 @@ std::string ViscaModel::check() const
     {
       return std::string("the ") + axisName(axis) +
              " axis needs steps_per_degree > 0, min < max, a speed byte >= 1 and a speed > 0";
+    }
+    const std::vector<double>& table = visca_axis.speed_table;
+    if (!table.empty() && (table.size() != visca_axis.max_speed_byte || table.back() != visca_axis.max_speed ||
+                           !std::is_sorted(table.begin(), table.end()) || !(table.front() > 0.0)))
+    {
+      return std::string("the ") + axisName(axis) +
+             " axis' speed table needs one rising speed > 0 per byte up to max_speed_byte, the last max_speed";
+    }
+  }
+  for (std::uint8_t nibbles : { layout.pan_nibbles, layout.tilt_nibbles })
+  {
+    if (nibbles != 4 && nibbles != 5)
+    {
+      return "positions are 4 or 5 nibbles, not " + std::to_string(nibbles);
     }
   }
   if (zoom_table.size() < 2)

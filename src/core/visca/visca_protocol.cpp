@@ -1,20 +1,23 @@
 #include "ptz_action_server/core/visca/visca_protocol.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "visca_protocol_internal.h"
+
 namespace ptz_action_server
 {
 namespace
 {
-/// The longest exchange: an absolute pan-tilt command (15 bytes) and its ACK (3).
-constexpr std::size_t VISCA_EXCHANGE_BYTES = 18;
-
-std::string bytesOf(const visca::Packet& packet)
-{
-  return std::string(packet.begin(), packet.end());
-}
-visca::Packet packetOf(const std::string& bytes)
-{
-  return visca::Packet(bytes.begin(), bytes.end());
-}
+/// The longest exchange: an absolute pan-tilt command in 5 + 5 nibbles (17 bytes) and its ACK (3).
+constexpr std::size_t VISCA_EXCHANGE_BYTES = 20;
+/// Inquiries without any answer, after which a command tells whether the camera answers at all.
+constexpr std::uint32_t INQUIRIES_BEFORE_PROBE = 3;
+/// Sequence resets without answer after which the set-up goes on without one.
+constexpr std::uint32_t RESETS_BEFORE_GOING_ON = 2;
+/// Requests numbered above the highest answered, unanswered in a row, after which the numbers are cut. One: only a
+/// camera that does not echo the numbers is cut, and such a camera does not check them (cutting them costs nothing).
+constexpr std::uint32_t TIMEOUTS_BEFORE_CYCLE = 1;
 }  // namespace
 
 bool parseViscaFraming(const std::string& text, ViscaFraming& framing)
@@ -32,21 +35,44 @@ const char* toString(ViscaFraming framing)
   return framing == ViscaFraming::RAW ? "raw" : "sony_ip";
 }
 
+bool parseViscaZoomDrive(const std::string& text, ViscaZoomDrive& drive)
+{
+  for (ViscaZoomDrive candidate : { ViscaZoomDrive::AUTO, ViscaZoomDrive::VARIABLE, ViscaZoomDrive::STANDARD })
+  {
+    if (text == toString(candidate))
+    {
+      drive = candidate;
+      return true;
+    }
+  }
+  return false;
+}
+
+const char* toString(ViscaZoomDrive drive)
+{
+  switch (drive)
+  {
+    case ViscaZoomDrive::VARIABLE:
+      return "variable";
+    case ViscaZoomDrive::STANDARD:
+      return "standard";
+    default:
+      return "auto";
+  }
+}
+
 ViscaProtocol::ViscaProtocol(const ViscaSettings& settings, DeviceSession& session)
   : settings_(settings)
   , serial_(session.linkConfig().kind == LinkKind::SERIAL)
+  , any_reply_address_(settings.any_reply_address.value_or(!serial_))
   , session_(session)
   , channel_(
-        session.context(), session.clock(), [this](const std::string& bytes) { write(bytes); },
+        session, [this](const std::string& bytes) { write(bytes); },
         replyTimeout(session.linkConfig(), settings.reply_timeout, VISCA_EXCHANGE_BYTES),
-        [this](const TransactionChannel::Request& lost) {
-          splitter_.reset();
-          round_.broken();
-          if (lost.tag == ADDRESS_SET || lost.tag == IF_CLEAR || lost.tag == SEQUENCE_RESET)
-          {
-            channel_.retry(lost);  // the set-up goes on until the camera answers
-          }
-        })
+        [this](const TransactionChannel::Request& lost) { onReplyTimeout(lost); })
+  , feedback_(settings.inquiries)
+  , variable_zoom_(settings.zoom_drive != ViscaZoomDrive::STANDARD)
+  , sequence_cycle_(settings.sequence_cycle)
   , round_(settings.model.has_zoom ? 2 : 1)
 {
 }
@@ -60,6 +86,20 @@ Capabilities ViscaProtocol::capabilities() const
 {
   Capabilities capabilities;
   capabilities.axes = settings_.model.capabilities();
+  if (!feedback_)
+  {
+    for (AxisCapability& axis : capabilities.axes)
+    {
+      if (axis.present)
+      {
+        axis.absolute = false;
+        axis.feedback = false;
+        axis.limitation = "this VISCA camera answers no inquiries: it reports no position";
+        axis.remedy.clear();
+      }
+    }
+    capabilities.axes[ZOOM].widest_view = capabilities.axes[ZOOM].present;  // zoom direct 0000 is the wide end
+  }
   capabilities.relative_moves = true;  // 8x 01 06 03
   capabilities.device_presets = true;  // memory set / recall (8x 01 04 3F)
   capabilities.device_home = true;     // 8x 01 06 04
@@ -73,12 +113,24 @@ void ViscaProtocol::onConnected()
   sockets_.fill(std::nullopt);
   round_.broken();
   sequence_ = 0;
+  wire_sequences_.clear();
+  inquiry_timeouts_ = 0;  // inquiry_answers_ stays: a camera that once answered an inquiry answers them
+  probe_answered_ = false;
+  reset_timeouts_ = 0;
+  highest_answered_ = 0;
+  timeouts_beyond_ = 0;
+  replies_echo_sequence_ = true;
+  const visca::ViscaModel& model = settings_.model;
+  keep_alive_ =
+      visca::panTiltDrive(settings_.address, model.axes[PAN].max_speed_byte, model.axes[TILT].max_speed_byte, 0, 0);
+  kept_alive_at_ = TimePoint{};
   queueSetup();
 }
 
 void ViscaProtocol::onDisconnected()
 {
   channel_.reset();
+  wire_sequences_.clear();
   round_.broken();
   set_up_ = false;
 }
@@ -98,35 +150,41 @@ void ViscaProtocol::queueSetup()
   }
   else
   {
-    set_up_ = true;  // raw VISCA over a network: the inquiries are the handshake
+    setUpDone();  // raw VISCA over a network: the inquiries are the handshake
   }
 }
 
 void ViscaProtocol::setUpDone()
 {
   set_up_ = true;
+  if (!feedback_)
+  {
+    session_.ready();  // a camera without inquiries: its answers to the keep-alive bring the link up
+  }
   poll();
 }
 
 void ViscaProtocol::write(const std::string& bytes)
 {
+  visca::IpMessage message;
+  if (settings_.framing == ViscaFraming::SONY_IP && !bytes.empty() && static_cast<std::uint8_t>(bytes[0]) < 0x80)
+  {
+    message.type = visca::IP_CONTROL;
+    sequence_ = 0;  // the reset carries 0; the camera then expects 1, 2, ...
+  }
+  else if (settings_.framing == ViscaFraming::SONY_IP)
+  {
+    message.type = bytes.size() > 1 && bytes[1] == 0x09 ? visca::IP_INQUIRY : visca::IP_COMMAND;
+    const std::uint32_t cycle = sequence_cycle_;
+    sequence_ = cycle > 0 && sequence_ >= cycle ? 1 : sequence_ + 1;
+  }
+  wire_sequences_.push_back(sequence_);  // every request of this protocol expects a reply
   if (settings_.framing == ViscaFraming::RAW)
   {
     session_.write(bytes);
     return;
   }
-  visca::IpMessage message;
   message.payload = packetOf(bytes);
-  if (!bytes.empty() && static_cast<std::uint8_t>(bytes[0]) < 0x80)
-  {
-    message.type = visca::IP_CONTROL;
-    sequence_ = 0;  // the reset carries 0; the camera then expects 1, 2, ...
-  }
-  else
-  {
-    message.type = bytes.size() > 1 && bytes[1] == 0x09 ? visca::IP_INQUIRY : visca::IP_COMMAND;
-    ++sequence_;
-  }
   message.sequence = sequence_;
   session_.write(bytesOf(visca::encodeIp(message)));
 }
@@ -137,11 +195,31 @@ void ViscaProtocol::poll()
   {
     return;  // goal commands first; the position when the line is free
   }
+  if (!feedback_)
+  {
+    keepAlive();
+    return;
+  }
   queuePacket(visca::panTiltInquiry(settings_.address), PAN_TILT_INQUIRY, true);
   if (settings_.model.has_zoom)
   {
     queuePacket(visca::zoomInquiry(settings_.address), ZOOM_INQUIRY, true);
   }
+}
+
+void ViscaProtocol::keepAlive()
+{
+  // Often enough that an answer comes well within the state timeout, seldom enough to leave the line to the goals.
+  const DeviceSessionConfig& config = session_.config();
+  const double period = std::max(config.poll_period, config.state_timeout / 4.0);
+  const TimePoint now = session_.now();
+  if (kept_alive_at_ != TimePoint{} && secondsBetween(kept_alive_at_, now) < period)
+  {
+    return;
+  }
+  kept_alive_at_ = now;
+  // Not tagged with the current command: a refusal of a repeated drive is no fault of the goal that sent it.
+  channel_.queue(TransactionChannel::Request{ bytesOf(keep_alive_), PROBE, true, 0, true });
 }
 
 void ViscaProtocol::goTo(const AxisValues& position)
@@ -152,10 +230,14 @@ void ViscaProtocol::goTo(const AxisValues& position)
   }
   channel_.clearQueue();  // what the previous command had not sent yet
   const visca::ViscaModel& model = settings_.model;
-  queuePacket(visca::panTiltPosition(settings_.address, model.axes[PAN].max_speed_byte, model.axes[TILT].max_speed_byte,
-                                     model.toSteps(PAN, position[PAN]), model.toSteps(TILT, position[TILT])),
-              COMMAND);
-  if (model.has_zoom)
+  if (!std::isnan(position[PAN]) && !std::isnan(position[TILT]))
+  {
+    queuePacket(visca::panTiltPosition(settings_.address, model.axes[PAN].max_speed_byte,
+                                       model.axes[TILT].max_speed_byte, model.toSteps(PAN, position[PAN]),
+                                       model.toSteps(TILT, position[TILT]), model.layout),
+                COMMAND);
+  }
+  if (model.has_zoom && !std::isnan(position[ZOOM]))
   {
     queuePacket(visca::zoomDirect(settings_.address, model.zoomToPosition(position[ZOOM])), COMMAND);
   }
@@ -173,11 +255,12 @@ void ViscaProtocol::moveAtVelocity(const AxisValues& velocity)
   const std::uint8_t pan_speed = std::max<std::uint8_t>(1, model.speedByte(PAN, velocity[PAN]));
   const std::uint8_t tilt_speed = std::max<std::uint8_t>(1, model.speedByte(TILT, velocity[TILT]));
   const auto sign = [](double value) { return value > 0.0 ? 1 : (value < 0.0 ? -1 : 0); };
-  queuePacket(visca::panTiltDrive(settings_.address, pan_speed, tilt_speed, sign(velocity[PAN]), sign(velocity[TILT])),
-              COMMAND);
+  keep_alive_ =
+      visca::panTiltDrive(settings_.address, pan_speed, tilt_speed, sign(velocity[PAN]), sign(velocity[TILT]));
+  queuePacket(keep_alive_, COMMAND);
   if (model.has_zoom)
   {
-    queuePacket(visca::zoomDrive(settings_.address, model.zoomSpeed(velocity[ZOOM])), COMMAND);
+    queuePacket(zoomDrivePacket(model.zoomSpeed(velocity[ZOOM])), COMMAND);
   }
 }
 
@@ -189,13 +272,19 @@ void ViscaProtocol::stop()
   }
   channel_.clearQueue();
   const visca::ViscaModel& model = settings_.model;
-  const visca::Packet halt =
+  keep_alive_ =
       visca::panTiltDrive(settings_.address, model.axes[PAN].max_speed_byte, model.axes[TILT].max_speed_byte, 0, 0);
-  channel_.sendUrgent(TransactionChannel::Request{ bytesOf(halt), COMMAND, true, session_.currentCommand() });
+  channel_.sendUrgent(TransactionChannel::Request{ bytesOf(keep_alive_), COMMAND, true, session_.currentCommand() });
   if (model.has_zoom)
   {
     queuePacket(visca::zoomStop(settings_.address), COMMAND);
   }
+}
+
+visca::Packet ViscaProtocol::zoomDrivePacket(int speed) const
+{
+  return variable_zoom_ ? visca::zoomDrive(settings_.address, speed) :
+                          visca::zoomDriveStandard(settings_.address, speed);
 }
 
 void ViscaProtocol::queuePacket(const visca::Packet& packet, Tag tag, bool poll)
@@ -203,219 +292,114 @@ void ViscaProtocol::queuePacket(const visca::Packet& packet, Tag tag, bool poll)
   channel_.queue(TransactionChannel::Request{ bytesOf(packet), tag, true, session_.currentCommand(), poll });
 }
 
-void ViscaProtocol::onReceived(const std::uint8_t* data, std::size_t size)
+void ViscaProtocol::onReplyTimeout(const TransactionChannel::Request& lost)
 {
-  if (settings_.framing == ViscaFraming::SONY_IP)
+  // The channel dropped every request on the wire; the oldest is the one that was not answered.
+  const std::uint32_t lost_sequence = wire_sequences_.empty() ? 0 : wire_sequences_.front();
+  wire_sequences_.clear();
+  splitter_.reset();
+  round_.broken();
+  switch (lost.tag)
   {
-    visca::IpMessage message;
-    if (visca::decodeIp(data, size, message) != visca::IpError::NONE)
-    {
-      ++counters_.bad_datagrams;
-      session_.reportDropped(size);
+    case ADDRESS_SET:
+    case IF_CLEAR:
+      channel_.retry(lost);  // the set-up goes on until the camera answers
       return;
-    }
-    if (message.type == visca::IP_CONTROL_REPLY)
-    {
-      handleControl(message.payload);
-    }
-    else if (message.type == visca::IP_REPLY)
-    {
-      readPackets(message.payload.data(), message.payload.size());
-    }
-    else
-    {
-      ++counters_.unexpected_replies;
-    }
-    return;
-  }
-  readPackets(data, size);
-}
-
-void ViscaProtocol::readPackets(const std::uint8_t* data, std::size_t size)
-{
-  packets_.clear();
-  splitter_.feed(data, size, packets_);
-  if (session_.carriesDatagrams())
-  {
-    splitter_.reset();  // a datagram holds whole packets: its tail ends with it
-  }
-  for (const visca::Packet& packet : packets_)
-  {
-    handle(packet);
-  }
-  updateSplitterCounters();
-}
-
-void ViscaProtocol::updateSplitterCounters()
-{
-  const visca::SplitterCounters& split = splitter_.counters();
-  counters_.packets.set(split.packets);
-  counters_.skipped_bytes.set(split.skipped_bytes);
-  counters_.broken_packets.set(split.broken_packets);
-  const std::uint64_t dropped = split.skipped_bytes + split.broken_bytes;
-  session_.reportDropped(dropped - dropped_reported_);
-  dropped_reported_ = dropped;
-}
-
-void ViscaProtocol::handle(const visca::Packet& packet)
-{
-  using Kind = visca::Reply::Kind;
-  const visca::Reply reply = visca::classify(packet);
-  const bool broadcast = reply.kind == Kind::ADDRESS_SET || reply.kind == Kind::IF_CLEAR;
-  if (!broadcast && reply.kind != Kind::OTHER && reply.address != settings_.address)
-  {
-    ++counters_.other_address;
-    return;
-  }
-  switch (reply.kind)
-  {
-    case Kind::COMPLETION:
-      sockets_[reply.socket].reset();
-      ++counters_.completions;
-      session_.reportAlive();
-      return;
-    case Kind::ERROR:
-      handleError(reply);
-      return;
-    case Kind::NETWORK_CHANGE:
-      ++counters_.network_changes;
-      if (serial_)
+    case SEQUENCE_RESET:
+      if (++reset_timeouts_ < RESETS_BEFORE_GOING_ON)
       {
-        queueSetup();  // the camera may have a new address: set it again
+        channel_.retry(lost);
+        return;
       }
+      // NewTek's NDI PTZ1 reads only sequence numbers 1..3: it never answers the reset (sequence 0).
+      session_.warn(deviceName() + " does not answer the VISCA over IP sequence reset: going on without it");
+      setUpDone();
       return;
-    case Kind::OTHER:
-      ++counters_.unexpected_replies;
-      return;
+    case PAN_TILT_INQUIRY:
+    case ZOOM_INQUIRY:
+      if (feedback_ && settings_.inquiries && inquiry_answers_ == 0)
+      {
+        if (probe_answered_)
+        {
+          runWithoutFeedback();  // it answered a command, and still no inquiry after it
+          return;
+        }
+        if (++inquiry_timeouts_ % INQUIRIES_BEFORE_PROBE == 0)
+        {
+          // Does it answer at all? A halt is what the node would send a camera it just found anyway.
+          channel_.retry(TransactionChannel::Request{ bytesOf(keep_alive_), PROBE, true, 0 });
+        }
+      }
+      break;
     default:
       break;
   }
-  // ACK, ANSWER, ADDRESS_SET, IF_CLEAR: the reply to the one request on the wire, if it can be its reply (an ACK to a
-  // command, an answer of its inquiry's size); otherwise the late reply of one before it.
-  const auto can_answer = [&reply](const TransactionChannel::Request& on_wire) {
-    std::int16_t pan = 0;
-    std::int16_t tilt = 0;
-    std::uint16_t zoom = 0;
-    switch (reply.kind)
-    {
-      case Kind::ACK:
-        return on_wire.tag == COMMAND;
-      case Kind::ANSWER:
-        return on_wire.tag == PAN_TILT_INQUIRY ? visca::decodePanTiltAnswer(reply, pan, tilt) :
-                                                 on_wire.tag == ZOOM_INQUIRY && visca::decodeZoomAnswer(reply, zoom);
-      case Kind::ADDRESS_SET:
-        return on_wire.tag == ADDRESS_SET;
-      default:
-        return on_wire.tag == IF_CLEAR;
-    }
-  };
-  const std::optional<TransactionChannel::Request> answered = channel_.complete(can_answer);
-  if (!answered)
+  if (settings_.framing == ViscaFraming::SONY_IP && settings_.sequence_cycle == 0 && sequence_cycle_ == 0 &&
+      !replies_echo_sequence_ && highest_answered_ > 0 && lost_sequence > highest_answered_ &&
+      ++timeouts_beyond_ >= TIMEOUTS_BEFORE_CYCLE)
   {
-    return;  // late: the channel counts it
-  }
-  // can_answer matched the reply's kind to the request's tag.
-  switch (reply.kind)
-  {
-    case Kind::ACK:
-      sockets_[reply.socket] = SocketUse{ answered->command, answered->bytes };
-      session_.reportAlive();
-      return;
-    case Kind::ANSWER:
-      handleAnswer(reply, static_cast<Tag>(answered->tag));
-      return;
-    case Kind::ADDRESS_SET: {
-      const int cameras = reply.data[0] - 1;  // w is the next free address
-      if (settings_.address > cameras)
-      {
-        session_.failStartup("the VISCA chain has " + std::to_string(cameras) + " camera(s), none at address " +
-                             std::to_string(settings_.address));
-      }
-      return;
-    }
-    default:  // IF_CLEAR
-      setUpDone();
-      return;
+    // A camera that answers every request numbered up to N, none above, and does not echo the numbers it reads:
+    // NewTek's NDI PTZ1 (1..3, always answering 1). Count 1..N from now on.
+    sequence_cycle_ = highest_answered_;
+    sequence_ = 0;
+    session_.warn(deviceName() + " answers VISCA over IP sequence numbers 1.." + std::to_string(highest_answered_) +
+                  " only: counting 1.." + std::to_string(highest_answered_) +
+                  " from now on (set visca/sequence_cycle to skip the request lost to learn it)");
   }
 }
 
-void ViscaProtocol::handleAnswer(const visca::Reply& reply, Tag tag)
+void ViscaProtocol::runWithoutFeedback()
 {
-  // The answer of the inquiry on the wire, whose size can_answer checked.
-  std::int16_t pan = 0;
-  std::int16_t tilt = 0;
-  std::uint16_t zoom = 0;
-  const bool pan_tilt = tag == PAN_TILT_INQUIRY;
+  feedback_ = false;
+  round_.broken();
+  session_.warn(deviceName() + " answers commands but no inquiry: it runs without position feedback (position goals "
+                               "are refused, "
+                               "velocity goals run until stopped); set visca/inquiries: false to skip the inquiries at "
+                               "start");
+  session_.setCapabilities(capabilities());
+  if (set_up_)
+  {
+    session_.ready();
+  }
   session_.reportAlive();
-  if (pan_tilt)
-  {
-    visca::decodePanTiltAnswer(reply, pan, tilt);
-    polled_[PAN] = settings_.model.fromSteps(PAN, pan);
-    polled_[TILT] = settings_.model.fromSteps(TILT, tilt);
-  }
-  else
-  {
-    visca::decodeZoomAnswer(reply, zoom);
-    polled_[ZOOM] = settings_.model.positionToZoom(zoom);
-  }
-  // Never a pan and tilt from before a lost answer (a silence) with a zoom from after it.
-  if (!round_.answered(pan_tilt ? 0 : 1) || !set_up_)
-  {
-    return;
-  }
-  session_.ready();
-  session_.reportState(polled_);
 }
 
-void ViscaProtocol::handleError(const visca::Reply& reply)
+bool ViscaProtocol::fallBackToStandardZoom(const TransactionChannel::Request& refused)
 {
-  ++counters_.device_errors;
-  session_.reportAlive();  // the camera speaks, even if it refuses
-  std::optional<SocketUse>& socket = sockets_[reply.socket];
-  if (reply.socket != 0 && socket)
+  const visca::Packet packet = packetOf(refused.bytes);
+  if (settings_.zoom_drive != ViscaZoomDrive::AUTO || !visca::isVariableZoomDrive(packet))
   {
-    // A command that had its socket: refused or cancelled while it ran.
-    session_.reportFault(refusal(socket->bytes, reply.error), socket->command);
-    socket.reset();
-    return;
+    return false;
   }
-  // No socket (yet): the reply to the request on the wire.
-  const std::optional<TransactionChannel::Request> answered = channel_.complete();
-  if (answered && answered->tag == COMMAND)
-  {
-    session_.reportFault(refusal(answered->bytes, reply.error), answered->command);
-  }
+  variable_zoom_ = false;
+  session_.warn(deviceName() + " refuses the variable zoom drive ('" + visca::toHex(packet) +
+                "': syntax error): zoom velocity goals use the standard drive, at one speed, from now on (set "
+                "visca/zoom/drive: standard to say so)");
+  TransactionChannel::Request standard = refused;
+  standard.bytes = bytesOf(visca::zoomDriveStandard(settings_.address, (packet[4] & 0xF0) == 0x20 ? 1 : -1));
+  channel_.retry(standard);
+  return true;
 }
 
-void ViscaProtocol::handleControl(const visca::Packet& payload)
+bool ViscaProtocol::fromCamera(std::uint8_t address)
 {
-  const std::optional<TransactionChannel::Request> answered = channel_.complete();
-  if (!answered)
+  if (address == settings_.address)
   {
-    return;
+    return true;
   }
-  if (payload == visca::Packet{ visca::CONTROL_RESET } && answered->tag == SEQUENCE_RESET)
+  if (!any_reply_address_)
   {
-    session_.reportAlive();
-    setUpDone();
-    return;
+    ++counters_.other_address;
+    return false;
   }
-  if (payload == visca::Packet{ visca::CONTROL_ERROR, visca::CONTROL_SEQUENCE_ERROR })
+  ++counters_.foreign_address;
+  if (reply_address_.exchange(address) != address)
   {
-    // The camera lost count (it restarted, or another controller used it): reset, then ask again.
-    ++counters_.sequence_resets;
-    if (!answered->poll && answered->tag != SEQUENCE_RESET)
-    {
-      channel_.retry(*answered);
-    }
-    channel_.retry(TransactionChannel::Request{ std::string(1, char(visca::CONTROL_RESET)), SEQUENCE_RESET });
-    return;
+    session_.warn(deviceName() + " answers from address " + std::to_string(address) + " (" +
+                  visca::toHex({ static_cast<std::uint8_t>((address + 8) << 4) }) +
+                  "), not its own: taken for its replies (a network link reaches one camera)");
   }
-  ++counters_.unexpected_replies;
-  if (answered->tag == COMMAND)
-  {
-    session_.reportFault(refusal(answered->bytes, 0) + " (VISCA over IP message error)", answered->command);
-  }
+  return true;
 }
 
 std::string ViscaProtocol::refusal(const std::string& bytes, std::uint8_t error) const
@@ -429,6 +413,16 @@ void ViscaProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   values.push_back(DiagnosticValue{ "model", settings_.model.name });
   values.push_back(DiagnosticValue{ "framing", toString(settings_.framing) });
+  values.push_back(DiagnosticValue{ "position feedback", feedback_ ? "inquiries" : "none (no inquiry answered)" });
+  values.push_back(DiagnosticValue{ "zoom drive", variable_zoom_ ? "variable" : "standard" });
+  const int reply_address = reply_address_;
+  values.push_back(
+      DiagnosticValue{ "replies from address", std::to_string(reply_address < 0 ? settings_.address : reply_address) });
+  if (settings_.framing == ViscaFraming::SONY_IP)
+  {
+    const std::uint32_t cycle = sequence_cycle_;
+    values.push_back(DiagnosticValue{ "sequence numbers", cycle == 0 ? "counting" : "1.." + std::to_string(cycle) });
+  }
   addCounts(values, { { "address", settings_.address },
                       { "packets", counters_.packets },
                       { "completions", counters_.completions },
@@ -437,6 +431,7 @@ void ViscaProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
                       { "dropped: broken packets", counters_.broken_packets },
                       { "dropped: bad VISCA over IP datagrams", counters_.bad_datagrams },
                       { "dropped: other address", counters_.other_address },
+                      { "replies from another address taken", counters_.foreign_address },
                       { "unexpected replies", counters_.unexpected_replies },
                       { "sequence resets", counters_.sequence_resets },
                       { "network changes", counters_.network_changes } });

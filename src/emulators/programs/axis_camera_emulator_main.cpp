@@ -35,6 +35,10 @@ Camera options:
   --model PRODNBR        root.Brand.ProdNbr of param.cgi (default P5534-E), e.g. Q6155-E (a Q61, whose family the
                          backend takes for 30X when the camera gives no zoom table) or Q8665-E (no family default)
   --refuse               answer every move with "Error: PTZ control is locked by another user"
+  --control-queue        PTZ control queueing on (root.PTZ.Various.V1.CtlQueueing=true, VAPIX Queuing API): a
+                         cookie per client, /axis-cgi/com/ptzqueue.cgi?control=request|query|drop, and moves from
+                         a client without control answered 204 and not carried out; control lasts 60 s after the
+                         holder's last move or request
 
 The field camera of issue 21 (no zoom attributes, a 30X lens, a model the backend guesses from):
   axis_camera_emulator --no-attributes --optical-zoom 30 --model Q6155-E
@@ -77,6 +81,10 @@ int main(int argc, char** argv)
         else if (arg == "--refuse")
         {
           refuse = true;
+        }
+        else if (arg == "--control-queue")
+        {
+          config.control_queue = true;
         }
         else
         {

@@ -44,6 +44,14 @@ Options:
                            several devices (an autopilot-hosted manager: --component-id 1 --device-component 154)
   --vehicle-yaw RAD        the vehicle's heading, sent as delta_yaw (default 0)
   --earth-frame            report the yaw relative to North (YAW_IN_EARTH_FRAME) instead of the vehicle
+Field behaviours:
+  --gimbal-v1              an autopilot that speaks only gimbal protocol v1: no gimbal manager (REQUEST_MESSAGE of
+                           GIMBAL_MANAGER_INFORMATION answered UNSUPPORTED), the mount's orientation as
+                           MOUNT_ORIENTATION
+  --gimbal-v1-mount-status the same with ArduPilot's MOUNT_STATUS (and ArduPilot in the autopilot's HEARTBEAT)
+  --px4-gimbal-output      PX4's gimbal module on AUX outputs: every attitude says YAW_LOCK (no frame flag) while its
+                           yaw is the vehicle's, delta_yaw 0; the vehicle's heading goes out in ATTITUDE
+  --drop-earth-frame-flag  setpoints' YAW_IN_EARTH_FRAME is lost, as in PX4 (issue 26569): only YAW_LOCK means North
   --rate-timeout S         a rate setpoint lasts this long unless repeated (default 0.5)
 Faults:
   --silent                 start silent: ignore everything, send nothing
@@ -152,6 +160,23 @@ int main(int argc, char** argv)
         else if (arg == "--earth-frame")
         {
           config.report_earth_frame = true;
+        }
+        else if (arg == "--gimbal-v1")
+        {
+          config.gimbal_v1 = true;
+        }
+        else if (arg == "--gimbal-v1-mount-status")
+        {
+          config.gimbal_v1 = true;
+          config.v1_mount_status = true;
+        }
+        else if (arg == "--px4-gimbal-output")
+        {
+          config.px4_gimbal_output = true;
+        }
+        else if (arg == "--drop-earth-frame-flag")
+        {
+          config.earth_frame_flag_dropped = true;
         }
         else if (arg == "--rate-timeout")
         {

@@ -22,15 +22,16 @@ Answers as an ONVIF PTZ camera does (protocols.md section 7), SOAP 1.2 over HTTP
 use as well as for this package's backend:
   /onvif/device_service  GetSystemDateAndTime (without authentication), GetCapabilities, GetServices,
                          GetDeviceInformation
-  /onvif/media_service   GetProfiles, GetProfile (profile_0 without PTZ, profile_1 with PTZ), GetVideoSources
+  /onvif/media_service   GetProfiles, GetProfile (profile_1 with PTZ, profile_0 without), GetVideoSources
   /onvif/ptz_service     GetServiceCapabilities, GetNodes, GetNode, GetConfigurations, GetConfiguration,
                          GetConfigurationOptions, AbsoluteMove, RelativeMove, ContinuousMove (with its Timeout),
                          Stop, GetStatus, GetPresets, SetPreset, GotoPreset, RemovePreset, GotoHomePosition,
                          SetHomePosition
 Every request but GetSystemDateAndTime needs a WS-Security UsernameToken (PasswordDigest, Created within 5 s of the
-camera's clock); a wrong one is refused with ter:NotAuthorized. Pan -180..180, tilt -90..90 degrees, zoom 1..18X
-(generic zoom z is 18^z X). GetStatus reports in the PTZ configuration's default space, and moves that name no space
-go in it.
+camera's clock, any xsd:dateTime: ...Z, ...+00:00); a wrong one is refused with ter:NotAuthorized. Pan -180..180,
+tilt -90..90 degrees, zoom 1..18X (generic zoom z is 18^z X). GetStatus reports in the PTZ configuration's default
+space, and moves that name no space go in it. Its XAddrs name the address and port it listens on; GetProfiles lists
+profile_1 (with PTZ) first.
 
 Options:
   --host HOST            address to listen on (default 127.0.0.1)
@@ -58,6 +59,24 @@ Camera options:
                                                  (starts at pan -0.864666)
                            no-relative           lists no translation spaces; RelativeMove is not supported
                            generic-only          lists only the generic spaces (no SphericalPositionSpaceDegrees)
+                           wrong-address         its XAddrs name 127.0.0.2 (a wrong address, as some firmware
+                                                 advertises; still this machine), not the address it listens on
+                           ptz-profile-second    GetProfiles lists profile_0 (no PTZ) first
+                           timeout-range         PTZTimeout 1..10 s: a ContinuousMove whose Timeout is outside is
+                                                 refused (ter:TimeoutNotSupported)
+                           axis-401              Axis: GetSystemDateAndTime without a valid WS-Security
+                                                 UsernameToken is answered HTTP 401 (with a Digest challenge)
+                           stop-keeps-moving     Stop is answered, but a ContinuousMove's motion goes on, past its
+                                                 Timeout too, until a ContinuousMove with zero velocity (or its
+                                                 end stop)
+                           absolute-never-moves  AbsoluteMove is answered, and nothing moves (ContinuousMove works)
+                           speed-ignores-magnitude  any non-zero ContinuousMove velocity moves at one speed, half
+                                                 the axis' max speed (pan 0.75, tilt 0.5 rad/s, zoom 4 X/s)
+                           zoom-only-moves-pantilt  every AbsoluteMove with a PanTilt moves pan and tilt, even to
+                                                 where they are: it approaches each position from 2 degrees below
+                                                 (backlash), so only a zoom-only AbsoluteMove leaves them still
+                           zoom-range-not-honoured  GetNodes lists the generic zoom 0..1, the lens stops at 0.5
+                                                 (4.24X): a move beyond is answered, and the zoom stops there
   --generic-only         the same as --mode generic-only
   --clock-offset S       the camera's clock runs S seconds ahead (tokens must be stamped in its time)
   --refuse               refuse every move with ter:InvalidArgVal "PTZ is locked by another user"
@@ -72,7 +91,7 @@ int main(int argc, char** argv)
   options.http.port = DEFAULT_PORT;
   bool refuse = false;
   std::string modes;
-  char usage_text[8192];
+  char usage_text[16384];
   std::snprintf(usage_text, sizeof(usage_text), USAGE_FORMAT, DEFAULT_PORT);
   const std::string usage = std::string(usage_text) + emulator_main::HTTP_FAULTS_HELP;
   emulator_main::parseArguments(

@@ -85,8 +85,9 @@ public:
     (void)endless;
     return false;
   }
-  /// How long the device may take to answer a request before the backend gives up on it (its reply deadline, wire
-  /// time aside), for SimFaults::reply_delay; 0 for devices that push their state unasked (the case skips).
+  /// How long the device may take to answer a request before the backend gives up on it (the most its reply deadline
+  /// learns, wire time aside), for SimFaults::reply_delay; 0 for devices that push their state unasked (the case
+  /// skips).
   virtual double replyDeadline() const
   {
     return 0.0;

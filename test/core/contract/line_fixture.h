@@ -51,7 +51,8 @@ protected:
   }
   double replyDeadline() const override
   {
-    return 0.1;  // the reply timeout's allowance beyond the exchange's wire time (reply_timeout 0)
+    // The most the reply deadline learns beyond the exchange's wire time: twice its floor of 100 ms (reply_timeout 0).
+    return 0.2;
   }
   bool setEndlessReplies(bool endless) override
   {

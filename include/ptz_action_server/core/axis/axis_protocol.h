@@ -12,10 +12,19 @@
 #include <string>
 
 #include "ptz_action_server/core/axis/vapix_codec.h"
+#include "ptz_action_server/core/axis/vapix_queue.h"
 #include "ptz_action_server/core/device/device_backend.h"
 
 namespace ptz_action_server
 {
+/// Whether the backend asks for PTZ control before it moves the camera (VAPIX PTZ control queue).
+enum class AxisControlQueue
+{
+  AUTO,  ///< as the camera's `root.PTZ.Various.V<camera>.CtlQueueing` says, read at every set-up
+  ON,    ///< always (a camera whose parameters this user may not read)
+  OFF,   ///< never
+};
+
 /// What only the Axis protocol needs to know.
 struct AxisSettings
 {
@@ -33,15 +42,18 @@ struct AxisSettings
   /// A camera that gives no table: assume its model family's optical zoom (modelFamilyZoom()), with a warning; false:
   /// its zoom X stays unknown (zoom goals are refused, velocity goals work).
   bool zoom_guess = true;
+  AxisControlQueue control_queue = AxisControlQueue::AUTO;
 };
 
 /// Counters for diagnostics.
 struct AxisCounters
 {
-  Counter positions;      ///< position replies read
-  Counter refusals;       ///< `Error:` answers to commands
-  Counter error_answers;  ///< HTTP statuses >= 400 to commands or polls
-  Counter malformed;      ///< bodies that were neither `key=value` lines nor `Error:`
+  Counter positions;         ///< position replies read
+  Counter refusals;          ///< `Error:` answers to commands
+  Counter error_answers;     ///< HTTP statuses >= 400 to commands or polls
+  Counter malformed;         ///< bodies that were neither `key=value` lines nor `Error:`
+  Counter control_requests;  ///< ptzqueue.cgi control=request sent (the queue's renewals included)
+  Counter without_control;   ///< commands not sent: another client held PTZ control
 };
 
 /// Where the zoom X-factor comes from, best first.
@@ -64,8 +76,14 @@ enum class AxisZoomSource
  * report its zoom), then, when the limits give a zoom, its X-factor from the first that has one: zoom_table,
  * zoom_max_factor, the camera's `query=attributes&group=zoom` (zoomSteps, or maxOpticalZoomMag: firmware without
  * them answers `Error:`), the model family's usual optical zoom (param.cgi `root.Brand.ProdNbr`; a guess, warned
- * about). Without any, zoom is declared present without `absolute` and `feedback` (velocity goals only), never
- * reported as a silent 1X.
+ * about). Without any, zoom is declared present without `absolute` and `feedback` (velocity goals, and zoom 1 goals:
+ * `widest_view`, sent as `zoom=` the limits' MinZoom), never reported as a silent 1X.
+ *
+ * PTZ control queue (VAPIX Queuing API): a channel with `CtlQueueing=true` moves only for the client that holds
+ * control (told apart by the cookie the camera sets; the HTTP link keeps it). The backend then asks for control at
+ * set-up (`ptzqueue.cgi?control=request`), renews it before the camera's timer runs out (every answer's period, at
+ * most half the time left and half CtlQueuePollTime), asks again before a command when it does not hold it, drops it
+ * at shutdown, and fails a command another client holds control for, naming its queue position and wait.
  *
  * 401, 403, 404, `Error:` bodies and malformed replies to limits or position, and an unreadable zoom table, fail the
  * start with the reason (later: the connection is dropped and set up again after the backoff); `info=1`, the
@@ -105,12 +123,15 @@ public:
   }
   /// `query=position`.
   void poll() override;
-  /// `pan tilt zoom speed`, fractional degrees, the zoom through the table (left out without one, or as NaN).
+  /// `pan tilt zoom speed`, fractional degrees, the zoom through the table (left out as NaN); without a table or zoom
+  /// feedback a zoom of 1 is `zoom=` MinZoom (the widest view), any other left out.
   void goTo(const AxisValues& position) override;
   /// `continuouspantiltmove` and `continuouszoommove`, scaled by the max speeds.
   void moveAtVelocity(const AxisValues& velocity) override;
   /// `move=stop` (the camera decelerates).
   void stop() override;
+  /// Drops PTZ control when it held it (control queue).
+  void shutdown() override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 
   const AxisCounters& counters() const
@@ -135,6 +156,15 @@ private:
   /// Finds the zoom X-factor (zoom_table_, zoom_source_); false when the set-up cannot go on (it said why).
   bool findZoomTable(const vapix::Limits& limits);
   Capabilities cameraCapabilities(const vapix::Limits& limits, const vapix::CommandList& commands) const;
+  // PTZ control queue (axis_control_queue.cpp).
+  /// Whether the channel queues PTZ control (control_queue_, queue_poll_time_), as the settings or the camera say.
+  void findControlQueue();
+  /// control=request: true when control is ours (for its holder the camera's timer starts again).
+  bool requestControl();
+  /// True when commands may go: no queue, or control is ours (asked for or renewed first when due).
+  bool haveControl();
+  /// Why a command cannot go: who holds control, our place and wait.
+  std::string withoutControl() const;
   /// The X-factor of a position reply (1 when it cannot be known: the zoom's feedback is false then).
   double zoomFactor(const vapix::Position& position) const;
 
@@ -149,7 +179,17 @@ private:
   AxisZoomSource zoom_source_ = AxisZoomSource::NO_ZOOM;
   bool zoom_feedback_ = false;  ///< the position reply carries zoom= and zoom_table_ maps it
   bool zoom_velocity_ = false;  ///< the camera has a zoom it moves with continuouszoommove
-  HttpRequest request_;         ///< reused: the 10 Hz poll allocates nothing once warm
+  /// Without zoom feedback: `zoom=` at widest_zoom_value_ (the limits' MinZoom) still goes to the widest view.
+  bool widest_view_ = false;
+  double widest_zoom_value_ = vapix::ZOOM_VALUE_MIN;
+  bool control_queue_ = false;  ///< the channel queues PTZ control: commands need it
+  bool control_held_ = false;
+  double queue_poll_time_ = 0.0;  ///< CtlQueuePollTime, s (0: not known)
+  double renew_after_ = 5.0;      ///< s after a request before control is asked for again
+  TimePoint control_asked_at_{};
+  vapix::QueueStatus queue_status_;
+  std::string queue_problem_;  ///< why the last request gave no status ("" when it did)
+  HttpRequest request_;        ///< reused: the 10 Hz poll allocates nothing once warm
   vapix::Reply reply_;
   std::string arguments_;
   std::string arguments_path_;
@@ -160,6 +200,7 @@ private:
   AxisZoomSource shared_zoom_source_ = AxisZoomSource::NO_ZOOM;
   std::string zoom_text_;   ///< where the X-factor came from, for diagnostics
   std::string model_text_;  ///< the product, when it was read
+  std::string queue_text_;  ///< the control queue, for diagnostics
 };
 
 /// "camera table", "model guess", ... for messages and diagnostics.

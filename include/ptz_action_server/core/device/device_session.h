@@ -31,7 +31,9 @@ class DeviceProtocol;
 /// How a session supervises its device. Every backend fills one from its parameters.
 struct DeviceSessionConfig
 {
-  double state_timeout = 0.5;     ///< s without a valid state report before the link counts as lost
+  /// s without a valid state report before the link counts as lost: the least state deadline (a device that answers
+  /// requests slowly gets longer, see DeviceSession::replyDeadlineChanged())
+  double state_timeout = 0.5;
   double poll_period = 0.05;      ///< s between the protocol's poll() calls and the link checks
   double startup_timeout = 10.0;  ///< s start() waits for the device
   double settle_window = 0.1;     ///< s a still position must last to count as settled
@@ -126,6 +128,8 @@ public:
   {
     return config_;
   }
+  /// The state deadline in force (s): config().state_timeout, or longer where the device's replies take long.
+  double stateDeadline() const;
   const LinkCounters& linkCounters() const
   {
     return link_->counters();
@@ -190,6 +194,16 @@ public:
   void reportState(const AxisValues& position);
   /// A valid answer that carries no state: keeps the link alive.
   void reportAlive();
+  /**
+   * \brief The protocol's reply deadline is now \p reply_deadline s (TransactionChannel learns it from the device's
+   * answers): the state deadline becomes max(state_timeout, 2 * reply_deadline + poll_period).
+   *
+   * A request may take its reply deadline and, when it is overdue, the drain after it (as long again) before the next
+   * request goes out, and the next poll may wait a poll period: a device that answers within its reply deadline never
+   * loses its link. The shipped state_timeout of 0.25 s is exactly that for the 0.1 s reply deadline and 0.05 s poll
+   * period they ship with. Any thread (the channel's constructor, then the I/O thread).
+   */
+  void replyDeadlineChanged(double reply_deadline);
   /// The protocol's framing threw \p bytes received bytes away (too long, unframed, incomplete): counted.
   void reportDropped(std::uint64_t bytes)
   {

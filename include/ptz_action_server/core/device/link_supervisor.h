@@ -60,6 +60,12 @@ public:
   {
     return state_timeout_;
   }
+  /// The state deadline is \p state_timeout s from now on (a device whose replies take longer gets longer), for the
+  /// report under way too.
+  void setStateTimeout(double state_timeout)
+  {
+    state_timeout_ = state_timeout;
+  }
 
   // ---------------------------------------------------------------- the connection
 
@@ -131,7 +137,7 @@ private:
   bool upAt(TimePoint now) const;
   void lose(const std::string& reason);
 
-  const double state_timeout_;
+  double state_timeout_;
   const std::shared_ptr<const Clock> clock_;
   std::string silent_ = "state";
   std::string impossible_subject_ = "states";

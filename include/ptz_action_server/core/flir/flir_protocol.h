@@ -16,10 +16,11 @@ namespace ptz_action_server
 /// What only the FLIR protocol needs to know.
 struct FlirSettings
 {
-  double pan_speed = 1.5;      ///< rad/s of position goals (PS); capped by the unit's upper speed (PU)
-  double tilt_speed = 1.0;     ///< rad/s (TS)
-  double acceleration = 3.0;   ///< rad/s^2, for goal timeouts
-  double reply_timeout = 0.0;  ///< s for one reply; 0: the exchange's wire time plus 100 ms
+  double pan_speed = 1.5;     ///< rad/s of position goals (PS); capped by the unit's upper speed (PU)
+  double tilt_speed = 1.0;    ///< rad/s (TS)
+  double acceleration = 3.0;  ///< rad/s^2, for goal timeouts
+  double reply_timeout =
+      0.0;  ///< s: the reply deadline's floor (0: the exchange's wire time plus 100 ms); it learns up to twice that
   /// s the set-up waits at most for a banner to end (tcp: the per-connection banner) or for the line to fall quiet
   double banner_timeout = 3.0;
 };

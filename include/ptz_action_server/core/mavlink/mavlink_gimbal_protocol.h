@@ -50,6 +50,19 @@ struct MavlinkGimbalAddress
   std::string describe() const;
 };
 
+/// The frame the yaw of a gimbal's GIMBAL_DEVICE_ATTITUDE_STATUS is read in.
+enum class MavlinkYawFrame
+{
+  /// As its flags say (FLAGS), except where an autopilot is known to say otherwise than it does: PX4's own gimbal
+  /// output (a gimbal_device_id 1..6 of a PX4 autopilot) sets YAW_LOCK on every attitude, with no frame flag, while
+  /// its quaternion is relative to the vehicle (PX4 src/modules/gimbal/output_rc.cpp): read as the vehicle's.
+  AUTO,
+  /// YAW_IN_EARTH_FRAME or YAW_IN_VEHICLE_FRAME; without either, YAW_LOCK means North (the MAVLink definition).
+  FLAGS,
+  VEHICLE,  ///< always relative to the vehicle, whatever the flags
+  EARTH,    ///< always relative to North, whatever the flags
+};
+
 /// What only the MAVLink gimbal protocol needs to know.
 struct MavlinkGimbalSettings
 {
@@ -60,8 +73,9 @@ struct MavlinkGimbalSettings
   /// The gimbal: 1..6 for a gimbal inside its manager's component, or the component id of a MAVLink gimbal device
   /// (154, ...); 0: the only gimbal found (several found and none chosen fails the start, naming them).
   std::uint8_t gimbal_device_id = 0;
-  bool yaw_lock = false;          ///< false: yaw relative to the vehicle (ptz_base_link); true: to North (YAW_LOCK)
-  double heartbeat_period = 1.0;  ///< s
+  bool yaw_lock = false;  ///< false: yaw relative to the vehicle (ptz_base_link); true: to North (YAW_LOCK)
+  MavlinkYawFrame attitude_yaw_frame = MavlinkYawFrame::AUTO;  ///< how the reported yaw is read
+  double heartbeat_period = 1.0;                               ///< s
   /// s to listen for gimbal managers after the link opens before choosing among their gimbals (longer than the
   /// components' 1 s heartbeat period); not waited when target_system, target_component and gimbal_device_id name the
   /// gimbal in full.
@@ -82,7 +96,7 @@ struct MavlinkGimbalCounters
   Counter acks_refused;        ///< COMMAND_ACK results other than ACCEPTED / IN_PROGRESS
   Counter control_lost;        ///< another controller took primary control from us
   Counter foreign_frames;      ///< manager messages of other managers or other gimbals, and acks of others' commands
-  Counter unusable_attitudes;  ///< attitudes in the other yaw frame without a delta_yaw to convert them
+  Counter unusable_attitudes;  ///< attitudes in the other yaw frame with nothing (delta_yaw, ATTITUDE) to convert them
   std::array<Counter, mavlink::FRAME_ERROR_COUNT> bad;  ///< dropped by the parser, by FrameError
 };
 
@@ -109,6 +123,15 @@ struct MavlinkGimbalCounters
  * it; the quaternion turned into pan and tilt (in the vehicle frame, or North with yaw_lock, using delta_yaw when the
  * gimbal reports the other frame). Other gimbals' attitudes are counted and dropped. A COMMAND_ACK other than
  * ACCEPTED, or another controller taking control, is a device fault that aborts the goal with its name.
+ *
+ * The yaw frame of an attitude is read as attitude_yaw_frame says; converting it to the other frame takes the
+ * attitude's delta_yaw, or (where it is missing, or 0 from PX4, which never fills it) the heading of the vehicle's
+ * ATTITUDE.
+ *
+ * An autopilot that never answers with a GIMBAL_MANAGER_INFORMATION (it refuses the request, or is asked three
+ * times) fails the start once discovery is over, saying what it speaks as far as it was heard: gimbal protocol v1
+ * (MOUNT_ORIENTATION, MOUNT_STATUS), a gimbal device's attitude with no manager, or HEARTBEATs only; and what to set
+ * (PX4's MNT_MODE_IN / MNT_MODE_OUT, ArduPilot's MNT1_TYPE and firmware 4.3 or later).
  */
 class MavlinkGimbalProtocol : public DeviceProtocol
 {
@@ -197,6 +220,14 @@ private:
   void handleStatus(const mavlink::Frame& frame, const mavlink::GimbalManagerStatus& status);
   void handleAck(const mavlink::Frame& frame, const mavlink::CommandAck& ack);
   void handleAttitude(const mavlink::Frame& frame, const mavlink::GimbalDeviceAttitudeStatus& attitude);
+  /// ATTITUDE of the gimbal's vehicle: its heading, to turn a yaw from one frame into the other.
+  void handleVehicleAttitude(const mavlink::Frame& frame);
+  /// Keeps what a component says of itself during discovery, for failWithoutManager().
+  void noteHeard(const mavlink::Frame& frame);
+  /// The attitude's yaw is relative to North (else to the vehicle), as attitude_yaw_frame reads it.
+  bool attitudeInEarthFrame(const mavlink::GimbalDeviceAttitudeStatus& attitude) const;
+  /// Its manager is PX4's own gimbal module (a gimbal 1..6 inside a PX4 autopilot).
+  bool px4GimbalOutput(const mavlink::GimbalDeviceAttitudeStatus& attitude) const;
 
   // Discovery.
   /// The settings allow a manager at \p system_id / \p component_id.
@@ -207,6 +238,9 @@ private:
   /// Chooses the gimbal once discovery allows it, or fails the start when it cannot.
   void discover();
   void choose(const FoundGimbal& found);
+  /// No manager answered and none is left to ask: fails the start saying what the vehicle speaks; false while
+  /// discovery still waits for an answer.
+  bool failWithoutManager();
   /// The names of the gimbals found, for messages.
   std::string foundList(const std::vector<const FoundGimbal*>& gimbals) const;
 
@@ -261,6 +295,21 @@ private:
   std::map<std::uint16_t, Asked> asked_;  ///< by system_id << 8 | component_id
   std::vector<FoundGimbal> found_;
   std::map<std::uint32_t, mavlink::GimbalManagerStatus> statuses_;  ///< before the choice, by address
+  /// What a component said of itself before the choice (and its autopilot type always), by system_id << 8 |
+  /// component_id.
+  struct Heard
+  {
+    std::uint8_t autopilot = mavlink::MAV_AUTOPILOT_INVALID;  ///< its HEARTBEAT's
+    std::uint8_t type = 0;                                    ///< MAV_TYPE
+    bool mount_orientation = false;                           ///< gimbal protocol v1
+    bool mount_status = false;                                ///< gimbal protocol v1 (ArduPilot)
+    bool device_attitude = false;                             ///< GIMBAL_DEVICE_ATTITUDE_STATUS
+  };
+  std::map<std::uint16_t, Heard> heard_;
+  double vehicle_yaw_ = 0.0;  ///< rad, the last ATTITUDE's heading of the gimbal's vehicle
+  TimePoint vehicle_yaw_at_{};
+  bool vehicle_yaw_known_ = false;
+  std::atomic<int> attitude_frame_{ -1 };  ///< the last attitude's yaw frame: 0 vehicle, 1 North, -1 none yet
   TimePoint listening_since_{};
   bool discovery_failed_ = false;
   std::set<std::uint8_t> manager_gimbals_;  ///< the gimbal ids the chosen manager component announced

@@ -48,7 +48,8 @@ UsernameToken newUsernameToken(const std::string& username, const std::string& c
 std::string passwordDigest(const std::string& nonce, const std::string& created, const std::string& password);
 /// "YYYY-MM-DDTHH:MM:SS.mmmZ" of \p utc_seconds since the epoch.
 std::string isoTime(double utc_seconds);
-/// Reads "YYYY-MM-DDTHH:MM:SS[.fff]Z" into seconds since the epoch; false for anything else.
+/// Reads any xsd:dateTime ("2010-09-16T07:50:45.25Z", "...+00:00" as python-onvif-zeep stamps it, "...-05:30", a
+/// time without a zone as UTC, 24:00:00) into seconds since the epoch (UTC); false for anything else.
 bool parseIsoTime(const std::string& text, double& utc_seconds);
 
 /// The whole envelope of \p body (an element with the tds/trt/tptz/tt prefixes this codec declares); with a
@@ -95,10 +96,11 @@ std::string absoluteMove(const std::string& profile, double x, double y, const c
                          double zoom);
 /// RelativeMove{ProfileToken, Translation}.
 std::string relativeMove(const std::string& profile, const Vector& translation);
-/// Generic velocities in [-1, 1]; \p timeout_seconds whole seconds (some cameras take no fractions). \p with_pan_tilt
-/// false leaves the pan-tilt out (it goes on as it was), \p with_zoom false the zoom.
+/// Generic velocities in [-1, 1]; \p timeout_seconds as given ("PT2S", "PT0.5S": whole seconds where the camera's
+/// range allows, as some cameras take no fractions). \p with_pan_tilt false leaves the pan-tilt out (it goes on as it
+/// was), \p with_zoom false the zoom.
 std::string continuousMove(const std::string& profile, double x, double y, bool with_zoom, double zoom,
-                           int timeout_seconds, bool with_pan_tilt = true);
+                           double timeout_seconds, bool with_pan_tilt = true);
 std::string stop(const std::string& profile);
 std::string getPresets(const std::string& profile);
 /// SetPreset: a new preset when \p preset_token is "", else that one overwritten; \p name "" leaves it out.

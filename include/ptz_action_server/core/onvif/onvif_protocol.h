@@ -13,6 +13,7 @@
 
 #include "ptz_action_server/core/device/device_backend.h"
 #include "ptz_action_server/core/onvif/onvif_codec.h"
+#include "ptz_action_server/core/onvif/onvif_motion_check.h"
 
 namespace ptz_action_server
 {
@@ -42,8 +43,14 @@ struct OnvifSettings
   double pan_max_speed = 1.5;   ///< rad/s at generic velocity 1
   double tilt_max_speed = 1.0;  ///< rad/s
   double zoom_max_rate = 8.0;   ///< X/s at generic zoom velocity 1
-  double acceleration = 3.0;    ///< rad/s^2, for goal timeouts
-  int velocity_timeout = 2;     ///< s of a ContinuousMove's Timeout (whole seconds); re-sent at half of it
+  double acceleration = 3.0;    ///< rad/s^2, for goal timeouts and how fast the camera brakes after Stop
+  /// s of a ContinuousMove's Timeout (whole seconds), re-sent at half of it; brought into the camera's PTZTimeout
+  /// range when outside it
+  int velocity_timeout = 2;
+  /// s an AbsoluteMove's axes have to begin moving (their position unchanged, their MoveStatus never MOVING): past
+  /// it, the camera is taken as one that answers AbsoluteMove and never moves. 0: never judged. Keep it under the
+  /// node's stall_timeout.
+  double move_start_timeout = 0.5;
 };
 
 struct OnvifCounters
@@ -52,8 +59,9 @@ struct OnvifCounters
   Counter faults;    ///< SOAP faults to commands
   Counter error_answers;
   Counter malformed;
-  Counter velocity_refreshes;  ///< ContinuousMoves re-sent before their timeout
-  Counter refused_locally;     ///< commands for an axis the camera cannot do, refused without sending them
+  Counter velocity_refreshes;   ///< ContinuousMoves re-sent before their timeout
+  Counter refused_locally;      ///< commands for an axis the camera cannot do, refused without sending them
+  Counter zero_velocity_stops;  ///< ContinuousMoves with zero velocity sent after a Stop the camera did not obey
 };
 
 /**
@@ -72,9 +80,15 @@ struct OnvifCounters
  *   range. A listed range the camera's own status contradicts is wrong: the status wins, told once (warn +
  * diagnostics).
  *
- * Goals are AbsoluteMove; velocity goals ContinuousMove (re-sent before its timeout), cancel Stop, state GetStatus at
- * the poll period (a camera without a position in it is kept alive by its answers). A SOAP fault to a command is a
- * device fault with the camera's words; during the bring-up it fails the start with what the camera answered.
+ * Goals are AbsoluteMove (without the PanTilt when pan and tilt rest where the goal puts them: a zoom-only move);
+ * velocity goals ContinuousMove (re-sent before its timeout, which lies in the camera's PTZTimeout range), cancel Stop,
+ * state GetStatus at the poll period (a camera without a position in it is kept alive by its answers). A SOAP fault to
+ * a command is a device fault with the camera's words; during the bring-up it fails the start with what the camera
+ * answered. What the camera does after a command is checked (onvif::MotionCheck): a camera still moving after Stop
+ * gets a ContinuousMove with zero velocity (and every Stop from then on is followed by one); a camera that answers
+ * AbsoluteMove and does not move faults the goal and is declared without `absolute` (the node's ClosedLoopBackend
+ * then steers it); a zoom that stops short of the range the node lists faults the goal and is not sent beyond again.
+ * Each is told once (warnings()).
  */
 class OnvifProtocol : public DeviceProtocol
 {
@@ -118,6 +132,9 @@ public:
   std::vector<std::string> warnings() const;
 
 private:
+  /// What a camera that answers AbsoluteMove and does not move lacks.
+  static constexpr const char* IGNORES_ABSOLUTE_MOVE = "this camera answers AbsoluteMove and does not move";
+
   /// How one axis pair (pan-tilt) or the zoom is driven, as the bring-up found it.
   struct PanTiltPlan
   {
@@ -148,9 +165,19 @@ private:
   /// POSTs \p body (an operation) to \p path; true with message_.content the response, else \p problem ("" when
   /// the link was lost).
   bool call(const std::string& path, const std::string& body, bool secure, std::string& problem);
-  void command(const std::string& path, const std::string& body, const char* operation);
+  /// Sends a command; true if the camera took it. A fault is the current command's.
+  bool command(const std::string& path, const std::string& body, const char* operation);
   /// The camera refused AbsoluteMove as an operation it does not have: no more AbsoluteMoves, capabilities told.
   void absoluteMoveRefused(const std::string& answer);
+  /// Acts on what the motion check found in a status.
+  void onFinding(const onvif::MotionFinding& finding);
+  /// Sends the ContinuousMove with zero velocity that stops the cameras that ignore Stop.
+  void sendZeroVelocity();
+  /// Reads the clock (GetSystemDateAndTime): unauthenticated, else (Axis answers 401) with WS-Security in our clock,
+  /// else goes on in our clock. False with \p problem when the link went.
+  bool readClock(std::string& problem);
+  /// The ContinuousMove Timeout within the camera's PTZTimeout range [\p min, \p max] (s; max 0 = no range).
+  void chooseVelocityTimeout(double min, double max);
   void setupFailed(const std::string& problem);
   /// Everything a (re)connection asks, up to the first GetStatus (\p status).
   bool bringUp(std::string& problem, onvif::Status& status);
@@ -187,11 +214,24 @@ private:
   /// The camera answered AbsoluteMove with ter:ActionNotSupported although it lists position spaces: taken as
   /// continuous-only from then on (kept across reconnections).
   std::string absolute_refused_;
+  /// The camera answered AbsoluteMove and did not move its pan-tilt / its zoom (kept across reconnections).
+  bool pan_tilt_ignores_absolute_ = false;
+  bool zoom_ignores_absolute_ = false;
+  /// The highest zoom (X) the camera was seen to reach when sent beyond it (its listed range is not honoured); 0
+  /// while none was seen. Kept across reconnections.
+  double honoured_zoom_max_ = 0.0;
+  /// The camera went on moving after a Stop: every Stop is followed by a ContinuousMove with zero velocity.
+  bool stop_needs_zero_velocity_ = false;
+  onvif::MotionCheck motion_check_;
+  std::uint64_t watched_command_ =
+      0;                             ///< the command whose effect the motion check watches (its faults are that one's)
+  double velocity_timeout_ = 2.0;    ///< s: the Timeout ContinuousMoves carry (velocity_timeout within the range)
   std::vector<std::string> warned_;  ///< keys of the warnings told (once per backend, across reconnections)
   /// Listed ranges the status contradicted, by space URI: kept across reconnections (the camera lists them again).
   std::vector<onvif::Space> corrected_;
   HttpRequest request_;
   onvif::SoapMessage message_;
+  bool unauthorized_ = false;  ///< the last call() was refused for its authentication (HTTP 401, ter:NotAuthorized)
   std::string velocity_body_;  ///< the ContinuousMove in force ("" when none)
   TimePoint velocity_sent_at_{};
 };

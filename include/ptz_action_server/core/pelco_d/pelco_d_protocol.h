@@ -38,7 +38,8 @@ struct PelcoSettings
   std::uint16_t zoom_position_max = 0xFFFF;  ///< the zoom position value at the longest focal length
   std::uint8_t turbo_byte = 0;               ///< the device's pan turbo speed byte (0x40, 0xFF, ...); 0: no turbo
   double turbo_speed = 0.0;                  ///< rad/s the pan turns at with turbo (above axes[PAN].max_speed)
-  double reply_timeout = 0.0;                ///< s for one reply; 0: the exchange's wire time plus 100 ms
+  double reply_timeout =
+      0.0;  ///< s: the reply deadline's floor (0: the exchange's wire time plus 100 ms); it learns up to twice that
   PelcoSetPosition set_position = PelcoSetPosition::AUTO;
   /// s a set-position has to move the device before a speed command checks it (AUTO), and that check after it
   double set_position_wait = 0.5;

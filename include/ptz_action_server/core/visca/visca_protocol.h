@@ -6,6 +6,8 @@
 #pragma once
 
 #include <array>
+#include <atomic>
+#include <deque>
 #include <memory>
 #include <optional>
 
@@ -27,14 +29,38 @@ enum class ViscaFraming
 bool parseViscaFraming(const std::string& text, ViscaFraming& framing);
 const char* toString(ViscaFraming framing);
 
+/// How zoom velocity goals drive the zoom.
+enum class ViscaZoomDrive
+{
+  AUTO,      ///< variable speed (`2p`, `3p`); the standard `02`, `03` from the first syntax error the camera answers
+  VARIABLE,  ///< always variable speed
+  STANDARD,  ///< always the standard speed: cameras that refuse the variable drive
+};
+/// "auto" / "variable" / "standard" -> \p drive; false for anything else.
+bool parseViscaZoomDrive(const std::string& text, ViscaZoomDrive& drive);
+const char* toString(ViscaZoomDrive drive);
+
 /// What only the VISCA protocol needs to know.
 struct ViscaSettings
 {
   std::string backend_name = "serial/visca";  ///< "serial/visca" or "visca_ip", for messages and diagnostics
   std::uint8_t address = 1;                   ///< the camera's address, 1..7
   ViscaFraming framing = ViscaFraming::RAW;
-  visca::ViscaModel model;     ///< steps a degree, ranges, speed bytes, zoom table
-  double reply_timeout = 0.0;  ///< s for an ACK or an answer; 0: the exchange's wire time plus 100 ms
+  visca::ViscaModel model;  ///< steps a degree, ranges, speed bytes, zoom table
+  double reply_timeout =
+      0.0;  ///< s: the reply deadline's floor (0: the exchange's wire time plus 100 ms); it learns up to twice that
+  /// Replies from another address than the camera's are taken for its own. A network link reaches one camera, and
+  /// some answer from another address (PTZOptics G3 firmware: `A0 41 FF` for camera 1); on a serial daisy chain the
+  /// address tells the cameras apart. Unset: true on TCP and UDP, false on a serial line.
+  std::optional<bool> any_reply_address;
+  /// False: the camera is never asked its position (it answers commands, not inquiries) and has no feedback. True: it
+  /// is, and a camera that answers a command but none of the first inquiries is taken for one without inquiries.
+  bool inquiries = true;
+  ViscaZoomDrive zoom_drive = ViscaZoomDrive::AUTO;
+  /// VISCA over IP: the sequence numbers count 1, 2, ..., N, then 1 again (NewTek's NDI PTZ1 takes 1..3 only); 0:
+  /// Sony's count, which goes on up (and is cut to the numbers a camera answers once it answers no more, see the
+  /// backend's page).
+  std::uint32_t sequence_cycle = 0;
 };
 
 /// Counters for diagnostics (reply timeouts and late replies are the channel's).
@@ -50,6 +76,7 @@ struct ViscaCounters
   Counter device_errors;       ///< error replies (each a fault of the command it answers, if still current)
   Counter sequence_resets;     ///< VISCA over IP: sequence errors answered by a reset
   Counter network_changes;     ///< `z0 38 FF`: the chain changed; the set-up runs again
+  Counter foreign_address;     ///< replies from another address taken for the camera's (any_reply_address)
 };
 
 /**
@@ -62,6 +89,12 @@ struct ViscaCounters
  * goals are the absolute pan-tilt command at the model's top speeds and zoom direct; velocity goals the pan-tilt drive
  * and zoom drive; cancel the drive stop (the camera decelerates). Error replies are faults of the command they
  * answer, named ("syntax error", "command not executable", ...).
+ *
+ * Dialects (doc/backends/visca.md): positions in 4 or 5 nibbles and one or two speed bytes as the model writes them;
+ * replies from another address on a network link; the standard zoom drive where the camera refuses the variable one;
+ * a camera that answers no inquiries, run without feedback (the last drive command is repeated to keep the link
+ * alive); VISCA over IP sequence numbers cut to the numbers a camera answers, and no sequence reset where it answers
+ * none.
  */
 class ViscaProtocol : public DeviceProtocol
 {
@@ -116,6 +149,7 @@ private:
     PAN_TILT_INQUIRY,
     ZOOM_INQUIRY,
     COMMAND,
+    PROBE,  ///< a command sent to learn whether a camera that answers no inquiry answers commands
   };
   /// The command a socket runs: the node command it serves, and its bytes (for messages).
   struct SocketUse
@@ -136,9 +170,27 @@ private:
   void setUpDone();
   void updateSplitterCounters();
   std::string refusal(const std::string& bytes, std::uint8_t error) const;
+  /// A request had no reply in time (the channel's on_timeout): what a dialect learns from it.
+  void onReplyTimeout(const TransactionChannel::Request& lost);
+  /// A reply from \p address: true if it is the camera's (counted and warned once when another address is taken).
+  bool fromCamera(std::uint8_t address);
+  /// The camera refused the variable zoom drive \p refused: drive it with the standard one from now on. False where
+  /// the settings keep the variable drive.
+  bool fallBackToStandardZoom(const TransactionChannel::Request& refused);
+  /// The camera answers commands but no inquiries: run it without feedback.
+  void runWithoutFeedback();
+  /// The packet of a zoom drive at \p speed (1..8, signed) as this camera takes it.
+  visca::Packet zoomDrivePacket(int speed) const;
+  /// Without feedback: repeats the last pan-tilt drive (a stop at first) now and then, the ACK keeping the link alive.
+  void keepAlive();
+  /// Completes the request on the wire (see TransactionChannel::complete()) and forgets its sequence number; notes
+  /// what a VISCA over IP reply says of the camera's sequence numbers.
+  std::optional<TransactionChannel::Request>
+  completeRequest(const std::function<bool(const TransactionChannel::Request&)>& answers);
 
   const ViscaSettings settings_;
   const bool serial_;
+  const bool any_reply_address_;  ///< settings_.any_reply_address, or the link's default
   DeviceSession& session_;
   TransactionChannel channel_;
   visca::PacketSplitter splitter_;
@@ -148,6 +200,25 @@ private:
   // I/O thread only.
   bool set_up_ = false;
   std::uint32_t sequence_ = 0;
+  /// VISCA over IP: the sequence numbers of the requests on the wire, oldest first (as the channel's).
+  std::deque<std::uint32_t> wire_sequences_;
+  std::uint32_t reply_sequence_ = 0;  ///< VISCA over IP: the sequence number of the datagram being read
+  // What the camera's dialect turned out to be, kept across reconnections (the camera stays the same). Atomic: read
+  // by capabilities() and diagnostics() on other threads.
+  std::atomic<bool> feedback_;       ///< false: the camera answers no inquiries
+  std::atomic<bool> variable_zoom_;  ///< false: the standard zoom drive
+  std::atomic<std::uint32_t> sequence_cycle_;
+  std::atomic<int> reply_address_{ -1 };  ///< the other address the camera answers from; -1: its own
+  std::uint32_t inquiry_answers_ = 0;     ///< answers to inquiries (on any connection)
+  // Learning on this connection.
+  std::uint32_t inquiry_timeouts_ = 0;  ///< inquiries without answer since the last answer
+  bool probe_answered_ = false;         ///< a camera that answered no inquiry answered a command: one more inquiry
+  std::uint32_t reset_timeouts_ = 0;    ///< VISCA over IP: sequence resets without answer in a row
+  std::uint32_t highest_answered_ = 0;  ///< VISCA over IP: the highest sequence number answered
+  std::uint32_t timeouts_beyond_ = 0;   ///< VISCA over IP: requests unanswered in a row, numbered above it
+  bool replies_echo_sequence_ = true;   ///< false once a reply carried another sequence number than its request
+  visca::Packet keep_alive_;            ///< without feedback: the pan-tilt drive repeated to keep the link alive
+  TimePoint kept_alive_at_{};
   std::array<std::optional<SocketUse>, 16> sockets_;
   AxisValues polled_{ { 0.0, 0.0, 1.0 } };
   PollRound round_;                     ///< the pan-tilt answer, then the zoom answer (where the model has zoom)
