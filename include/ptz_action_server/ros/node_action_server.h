@@ -5,6 +5,7 @@
  */
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include <actionlib/server/action_server.h>
@@ -88,10 +89,20 @@ private:
       status_.advertise<actionlib_msgs::GoalStatusArray>(handle_, "status", 1, true, [this] { publishStatus(); });
     }
     status_array_.header.stamp = ros::Time::now();
-    status_array_.status_list.clear();
-    for (auto it = this->status_list_.begin(); it != this->status_list_.end();)
+    // Entries are assigned over the last list's, not cleared and copied anew: their strings keep their buffers (a
+    // storm's list of some hundred goals was a few hundred allocations and frees per list).
+    auto& list = status_array_.status_list;
+    std::size_t count = 0;
+    for (auto it = this->status_list_.begin(); it != this->status_list_.end(); ++count)
     {
-      status_array_.status_list.push_back(it->status_);
+      if (count < list.size())
+      {
+        list[count] = it->status_;
+      }
+      else
+      {
+        list.push_back(it->status_);
+      }
       if (it->handle_destruction_time_ != ros::Time() &&
           it->handle_destruction_time_ + this->status_list_timeout_ < status_array_.header.stamp)
       {
@@ -102,6 +113,7 @@ private:
         ++it;
       }
     }
+    list.resize(count);
     status_.publishAlways(status_array_);
   }
 
