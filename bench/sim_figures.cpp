@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <numeric>
 #include <string>
@@ -136,11 +137,18 @@ Row cancelFigure(PtzClient& client, SharedCounters* counters, int cancels)
     const std::uint64_t stops_before = counters->stops;
     const std::int64_t cancelled_ns = monotonicNanoseconds();
     client.cancelGoal();
-    if (waitForCount(counters->stops, stops_before, 2.0))
+    const bool stopped = waitForCount(counters->stops, stops_before, 2.0);
+    if (stopped)
     {
       stop_ms.push_back((counters->last_stop_ns - cancelled_ns) / 1e6);
     }
     client.waitForResult(ros::Duration(10.0));
+    if (!stopped)
+    {
+      const actionlib::SimpleClientGoalState state = client.getState();
+      std::fprintf(stderr, "ptz_bench: cancel %d saw no stop() within 2 s; the goal ended %s ('%s')\n", index,
+                   state.toString().c_str(), state.getText().c_str());
+    }
   }
   return { "cancel -> backend stop()",
            formatText("%s (%zu of %d cancels)", percentiles(stop_ms).c_str(), stop_ms.size(), cancels), "" };
