@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "ptz_action_server/ros/tick_costs.h"
+
 namespace ptz_bench
 {
 /// The command line, checked (see usage()).
@@ -36,6 +38,11 @@ struct SharedCounters
   std::atomic<bool> record_states{ false };
   std::atomic<std::uint32_t> state_count{ 0 };
   std::int64_t state_arrivals_ns[MAX_STATE_ARRIVALS];
+  /// Set: the observer also listens to joint_states, /tf, field_of_view and /diagnostics (and counts them).
+  std::atomic<bool> listen_all{ false };
+  std::atomic<bool> listening_all{ false };        ///< the observer's answer: every subscription is connected
+  std::atomic<std::uint64_t> other_messages{ 0 };  ///< what the observer received on those topics
+  ptz_action_server::TickCosts tick_costs;         ///< the node's state tick, measured while enabled
 };
 
 /// CLOCK_MONOTONIC (steady_clock) in ns: one clock for every process.

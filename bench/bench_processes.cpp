@@ -12,9 +12,15 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <ros/ros.h>
 
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <sensor_msgs/JointState.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include "ptz_action_server/FieldOfView.h"
 #include "ptz_action_server/PtzState.h"
 #include "ptz_action_server/core/forwarding_backend.h"
 #include "ptz_action_server/ros/ptz_node.h"
@@ -78,6 +84,7 @@ int runNode(SharedCounters* counters)
   const ros::NodeHandle node_handle;  // held: roscpp shuts down when the last node handle goes
   const ros::NodeHandle private_handle("~");
   PtzNode node;
+  node.setTickCosts(&counters->tick_costs);
   try
   {
     node.start(node_handle, private_handle, [counters](std::shared_ptr<PtzBackend> backend) {
@@ -89,11 +96,12 @@ int runNode(SharedCounters* counters)
     ROS_FATAL("%s", error.what());
     return 1;
   }
-  ros::spin();
+  spinUntilShutdown();  // as the ptz_action_server executable spins
   return 0;
 }
 
-/// The observer process: a ptz_state subscriber of its own, so the clients' load does not skew the arrivals.
+/// The observer process: a ptz_state subscriber of its own, so the clients' load does not skew the arrivals; while
+/// listen_all is set, also a subscriber of the camera's other topics, as rviz and a robot's nodes would be.
 int runObserver(SharedCounters* counters)
 {
   ros::init(ros::M_string(), "ptz_bench_observer", ros::init_options::AnonymousName);
@@ -109,7 +117,28 @@ int runObserver(SharedCounters* counters)
           }
         }
       });
-  ros::spin();
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  std::vector<ros::Subscriber> others;
+  const auto count = [counters](const auto&) { ++counters->other_messages; };
+  while (ros::ok())
+  {
+    if (counters->listen_all && others.empty())
+    {
+      others.push_back(node_handle.subscribe<sensor_msgs::JointState>("joint_states", 100, count));
+      others.push_back(node_handle.subscribe<tf2_msgs::TFMessage>("/tf", 100, count));
+      others.push_back(node_handle.subscribe<FieldOfView>("field_of_view", 100, count));
+      others.push_back(node_handle.subscribe<diagnostic_msgs::DiagnosticArray>("/diagnostics", 100, count));
+    }
+    else if (!counters->listen_all && !others.empty())
+    {
+      others.clear();
+    }
+    counters->listening_all =
+        !others.empty() && std::all_of(others.begin(), others.end(),
+                                       [](const ros::Subscriber& other) { return other.getNumPublishers() > 0; });
+    ros::WallDuration(0.05).sleep();
+  }
   return 0;
 }
 

@@ -85,6 +85,8 @@ const std::vector<DeviceRow>& deviceTable()
     DeviceRow sim;
     sim.name = "sim";
     sim.plugin = "sim";
+    // A field of view, so a tick publishes everything a camera can: ptz_state, joint_states, tf, field_of_view.
+    sim.params = { value("field_of_view/horizontal", 1.0), value("field_of_view/vertical", 0.6) };
     table.push_back(sim);
 
     DeviceRow pantilt;

@@ -5,6 +5,7 @@
  * Usage: bench_fleet_client CAMERAS SECONDS NODE... (the nodes whose processes make the fleet: the camera nodes, or
  * the nodelet manager then its loaders). Prints one line of figures, key=value, for bench/fleet to tabulate:
  *   idle_cpu    % of one core used by the processes over SECONDS with nobody listening or sending goals;
+ *   listened_cpu  the same while this client listens to every camera's ptz_state (and nothing else);
  *   load_cpu    the same while every camera gets one position goal per second (their sends spread over the second)
  *               and this client listens to every camera's ptz_state and goal status;
  *   worst_rate  the lowest ptz_state rate of any camera over the loaded spell (Hz);
@@ -139,10 +140,7 @@ int main(int argc, char** argv)
   ros::WallDuration(seconds).sleep();
   const double idle_cpu = 100.0 * (totalTicks(pids) - start) / hz / seconds;
 
-  // Loaded: every camera listened to and sent one goal a second.
-  std::mutex mutex;
-  std::map<std::string, ros::WallTime> sent;  ///< goal id -> when it was published
-  std::vector<double> latencies;              ///< ms
+  // Listened: every camera's ptz_state, nothing else.
   std::vector<std::unique_ptr<Camera>> cameras;
   for (int index = 0; index < count; ++index)
   {
@@ -153,6 +151,28 @@ int main(int argc, char** argv)
     camera->ns = name;
     camera->state = node_handle.subscribe<ptz_action_server::PtzState>(
         camera->ns + "/ptz_state", 10, [raw](const ptz_action_server::PtzState::ConstPtr&) { ++raw->states; });
+    cameras.push_back(std::move(camera));
+  }
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  const ros::WallTime listen_deadline = ros::WallTime::now() + ros::WallDuration(30.0);
+  while (ros::WallTime::now() < listen_deadline &&
+         !std::all_of(cameras.begin(), cameras.end(),
+                      [](const std::unique_ptr<Camera>& camera) { return camera->state.getNumPublishers() > 0; }))
+  {
+    ros::WallDuration(0.1).sleep();
+  }
+  ros::WallDuration(1.0).sleep();
+  start = totalTicks(pids);
+  ros::WallDuration(seconds).sleep();
+  const double listened_cpu = 100.0 * (totalTicks(pids) - start) / hz / seconds;
+
+  // Loaded: every camera listened to and sent one goal a second.
+  std::mutex mutex;
+  std::map<std::string, ros::WallTime> sent;  ///< goal id -> when it was published
+  std::vector<double> latencies;              ///< ms
+  for (auto& camera : cameras)
+  {
     camera->status = node_handle.subscribe<actionlib_msgs::GoalStatusArray>(
         camera->ns + "/move_ptz/position_abs/status", 10, [&](const actionlib_msgs::GoalStatusArray::ConstPtr& array) {
           const ros::WallTime now = ros::WallTime::now();
@@ -169,10 +189,7 @@ int main(int argc, char** argv)
         });
     camera->goal =
         node_handle.advertise<ptz_action_server::PtzActionGoal>(camera->ns + "/move_ptz/position_abs/goal", 10);
-    cameras.push_back(std::move(camera));
   }
-  ros::AsyncSpinner spinner(1);
-  spinner.start();
   const ros::WallTime connect_deadline = ros::WallTime::now() + ros::WallDuration(30.0);
   while (ros::WallTime::now() < connect_deadline &&
          !std::all_of(cameras.begin(), cameras.end(), [](const std::unique_ptr<Camera>& camera) {
@@ -238,9 +255,10 @@ int main(int argc, char** argv)
     threads += statusField(pid, "Threads");
   }
   spinner.stop();  // no status callback from here on
-  std::printf("idle_cpu=%.1f load_cpu=%.1f worst_rate=%.2f p50=%.2f p99=%.2f max=%.2f goals=%d accepted=%zu "
+  std::printf("idle_cpu=%.1f listened_cpu=%.1f load_cpu=%.1f worst_rate=%.2f p50=%.2f p99=%.2f max=%.2f goals=%d "
+              "accepted=%zu "
               "rss_mb=%.0f threads=%ld first_threads=%ld processes=%zu\n",
-              idle_cpu, load_cpu, worst_rate, percentile(latencies, 0.5), percentile(latencies, 0.99),
+              idle_cpu, listened_cpu, load_cpu, worst_rate, percentile(latencies, 0.5), percentile(latencies, 0.99),
               percentile(latencies, 1.0), sends, latencies.size(), rss_kb / 1024.0, threads,
               statusField(pids.front(), "Threads"), pids.size());
   return 0;

@@ -50,7 +50,10 @@ const char* const USAGE = "usage: ptz_bench --list\n"
                           "  --goals N          devices: goals for goal -> first command (default: the device's, 300 "
                           "or 1000)\n"
                           "  --cancels N        every device: cancelled goals for cancel -> stop (default 100)\n"
-                          "  --idle-seconds S   sim: the idle CPU window (default 10)\n"
+                          "  --idle-seconds S   sim: each of the four idle windows (default 10): CPU, CPU with every "
+                          "topic "
+                          "listened,\n"
+                          "                     the state tick part by part, CPU at rest after the goals\n"
                           "  --zero-goals N     sim: zero-length goals for goal -> result (default 1000)\n"
                           "  --storm-seconds S  sim: the goal storm (default 30, at most 400)\n";
 

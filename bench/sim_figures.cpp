@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <filesystem>
+#include <cstdio>
 #include <fstream>
 #include <numeric>
 #include <string>
@@ -26,34 +26,6 @@ namespace
 {
 using namespace ptz_action_server;
 using PtzClient = actionlib::SimpleActionClient<PtzAction>;
-
-struct CpuSample
-{
-  double cpu_seconds;
-  double wall_seconds;
-};
-
-/// CPU time of every thread of \p pid (from schedstat, in ns resolution) and the wall clock.
-CpuSample cpuOf(pid_t pid)
-{
-  double cpu_seconds = 0.0;
-  const std::string tasks = "/proc/" + std::to_string(pid) + "/task";
-  for (const auto& task : std::filesystem::directory_iterator(tasks))
-  {
-    std::ifstream file(task.path() / "schedstat");
-    double nanoseconds = 0.0;
-    if (file >> nanoseconds)
-    {
-      cpu_seconds += nanoseconds * 1e-9;
-    }
-  }
-  return { cpu_seconds, secondsBetween(TimePoint(), SteadyClock::now()) };
-}
-
-double cpuPercent(const CpuSample& from, const CpuSample& to)
-{
-  return 100.0 * (to.cpu_seconds - from.cpu_seconds) / (to.wall_seconds - from.wall_seconds);
-}
 
 long peakRssKilobytes(pid_t pid)
 {
@@ -165,11 +137,18 @@ Row cancelFigure(PtzClient& client, SharedCounters* counters, int cancels)
     const std::uint64_t stops_before = counters->stops;
     const std::int64_t cancelled_ns = monotonicNanoseconds();
     client.cancelGoal();
-    if (waitForCount(counters->stops, stops_before, 2.0))
+    const bool stopped = waitForCount(counters->stops, stops_before, 2.0);
+    if (stopped)
     {
       stop_ms.push_back((counters->last_stop_ns - cancelled_ns) / 1e6);
     }
     client.waitForResult(ros::Duration(10.0));
+    if (!stopped)
+    {
+      const actionlib::SimpleClientGoalState state = client.getState();
+      std::fprintf(stderr, "ptz_bench: cancel %d saw no stop() within 2 s; the goal ended %s ('%s')\n", index,
+                   state.toString().c_str(), state.getText().c_str());
+    }
   }
   return { "cancel -> backend stop()",
            formatText("%s (%zu of %d cancels)", percentiles(stop_ms).c_str(), stop_ms.size(), cancels), "" };
@@ -185,8 +164,8 @@ void stormFigures(ros::NodeHandle& node_handle, SharedCounters* counters, pid_t 
   std::vector<std::thread> threads;
   std::atomic<int> goals_sent{ 0 };
   std::atomic<int> goals_done{ 0 };
-  const CpuSample storm_start = cpuOf(node);
-  const CpuSample clients_start = cpuOf(getpid());
+  const ProcessSample storm_start = sampleProcess(node);
+  const ProcessSample clients_start = sampleProcess(getpid());
   for (int index = 0; index < 4; ++index)
   {
     threads.emplace_back([&, index]() {
@@ -214,8 +193,8 @@ void stormFigures(ros::NodeHandle& node_handle, SharedCounters* counters, pid_t 
     });
   }
   ros::WallDuration(seconds).sleep();
-  const CpuSample storm_end = cpuOf(node);
-  const CpuSample clients_end = cpuOf(getpid());
+  const ProcessSample storm_end = sampleProcess(node);
+  const ProcessSample clients_end = sampleProcess(getpid());
   counters->record_states = false;
   storming = false;
   for (std::thread& thread : threads)
@@ -260,12 +239,18 @@ int runSimFigures(const BenchOptions& options, SharedCounters* counters, BenchPr
   const pid_t node = processes.node();
   std::vector<Row> rows;
 
-  // Idle CPU: nothing but the 10 Hz state.
+  // Idle CPU: nothing but the 10 Hz state, listened to by the observer (ptz_state) and this process's client (the
+  // position_abs status list), then by a subscriber of every topic; then each part of the tick.
   ros::WallDuration(1.0).sleep();
-  const CpuSample idle_start = cpuOf(node);
+  const ProcessSample idle_start = sampleProcess(node);
   ros::WallDuration(options.idle_seconds).sleep();
   rows.push_back({ formatText("node CPU, idle (%g s)", options.idle_seconds),
-                   formatText("%.2f %%", cpuPercent(idle_start, cpuOf(node))), "<= 1 %" });
+                   formatText("%.2f %%", cpuPercent(idle_start, sampleProcess(node))), "<= 1 %" });
+  rows.push_back(restFigure(counters, node, options.idle_seconds, "before the goals"));
+  for (Row& row : tickCostFigures(counters, options.idle_seconds))
+  {
+    rows.push_back(std::move(row));
+  }
 
   reachFigures(client, counters, rows);
   zeroGoalFigures(client, counters, options.zero_goals, rows);
@@ -273,6 +258,9 @@ int runSimFigures(const BenchOptions& options, SharedCounters* counters, BenchPr
   rows.push_back(trackFigure(node_handle));
   rows.push_back(teleopFigure(counters));
   stormFigures(node_handle, counters, node, options.storm_seconds, rows);
+  // A camera at rest after it was used: what goals leave behind (threads, timers) costs here.
+  ros::WallDuration(1.0).sleep();
+  rows.push_back(restFigure(counters, node, options.idle_seconds, "after the goals"));
   rows.push_back({ "node peak RSS", formatText("%.1f MB", peakRssKilobytes(node) / 1024.0), "" });
   printTable("sim (sim backend)", rows);
   return 0;

@@ -28,6 +28,6 @@ int main(int argc, char** argv)
     ROS_FATAL("backend error: %s", error.what());
     return 2;
   }
-  ros::spin();
+  spinUntilShutdown();
   return 0;
 }

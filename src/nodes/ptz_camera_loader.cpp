@@ -91,6 +91,7 @@ int main(int argc, char** argv)
     }
   }
   ROS_INFO("%zu of %zu cameras loaded into %s", loaded.size(), names.size(), manager.c_str());
+  spinner.stop();  // nothing to spin for until the unloads (its thread would wake ten times a second meanwhile)
 
   int signal = 0;
   sigwait(&stop_signals, &signal);
@@ -104,7 +105,6 @@ int main(int argc, char** argv)
       break;  // the manager is gone already: nothing left to unload
     }
   }
-  spinner.stop();
   ros::shutdown();
   return 0;
 }

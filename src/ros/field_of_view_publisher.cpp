@@ -11,7 +11,7 @@ FieldOfViewPublisher::FieldOfViewPublisher(ros::NodeHandle node_handle, const Fi
   : settings_(settings), model_(settings_.model.value()), backend_(std::move(backend))
 {
   field_of_view_message_.header.frame_id = camera_frame;
-  field_of_view_publisher_ = node_handle.advertise<ptz_action_server::FieldOfView>("field_of_view", 10);
+  field_of_view_publisher_.advertise<ptz_action_server::FieldOfView>(node_handle, "field_of_view", 10);
   if (!settings_.camera_info_topic.empty())
   {
     camera_info_publisher_ =
@@ -21,14 +21,18 @@ FieldOfViewPublisher::FieldOfViewPublisher(ros::NodeHandle node_handle, const Fi
   }
 }
 
-void FieldOfViewPublisher::publish(const ros::Time& stamp, double zoom)
+bool FieldOfViewPublisher::publish(const ros::Time& stamp, double zoom)
 {
+  if (!field_of_view_publisher_.listened())
+  {
+    return false;
+  }
   const FieldOfViewAngles angles = model_.at(zoom);
   field_of_view_message_.header.stamp = stamp;
   field_of_view_message_.horizontal = angles.horizontal;
   field_of_view_message_.vertical = angles.vertical;
   field_of_view_message_.zoom = zoom;
-  field_of_view_publisher_.publish(field_of_view_message_);
+  return field_of_view_publisher_.publish(field_of_view_message_);
 }
 
 void FieldOfViewPublisher::onCameraInfo(const sensor_msgs::CameraInfo::ConstPtr& info)

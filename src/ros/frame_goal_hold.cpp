@@ -8,7 +8,10 @@ constexpr double CHECK_PERIOD = 0.02;  ///< s between checks of tf while a goal 
 }  // namespace
 
 FrameGoalHold::FrameGoalHold(const ros::NodeHandle& node_handle, FrameListener& frames, std::string base_frame)
-  : node_handle_(node_handle), frames_(frames), base_frame_(std::move(base_frame))
+  : node_handle_(node_handle)
+  , frames_(frames)
+  , base_frame_(std::move(base_frame))
+  , timer_(node_handle_.getCallbackQueue(), [this] { check(); })
 {
 }
 
@@ -21,8 +24,7 @@ bool FrameGoalHold::mustWait(const std::string& frame_id)
 void FrameGoalHold::hold(Goal goal)
 {
   goal_ = std::move(goal);
-  timer_ = node_handle_.createSteadyTimer(ros::WallDuration(CHECK_PERIOD),
-                                          [this](const ros::SteadyTimerEvent&) { check(); });
+  timer_.startPeriodic(CHECK_PERIOD);
 }
 
 void FrameGoalHold::supersede(ActionKind kind)

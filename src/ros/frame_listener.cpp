@@ -8,7 +8,10 @@ constexpr double FRAME_LOOKUP_CACHE_TIME = 10.0;  ///< s of tf history kept for 
 }  // namespace
 
 FrameListener::FrameListener(const ros::NodeHandle& node_handle, double listen_time, double warm_up)
-  : node_handle_(node_handle), listen_time_(listen_time), warm_up_(warm_up)
+  : node_handle_(node_handle)
+  , listen_time_(listen_time)
+  , warm_up_(warm_up)
+  , quiet_timer_(node_handle_.getCallbackQueue(), [this] { stopListening(); })
 {
 }
 
@@ -22,9 +25,8 @@ void FrameListener::listen()
     listening_since_ = ros::SteadyTime::now();
     ROS_DEBUG("listening to tf for frame goals");
   }
-  // A new one-shot timer replaces (and stops) the old one: the countdown starts again.
-  quiet_timer_ = node_handle_.createSteadyTimer(
-      ros::WallDuration(listen_time_), [this](const ros::SteadyTimerEvent&) { stopListening(); }, true);
+  // Starting the one-shot timer again replaces (and stops) the old countdown.
+  quiet_timer_.startOnce(listen_time_);
 }
 
 bool FrameListener::ready(const std::string& base_frame, const std::string& frame_id) const

@@ -21,6 +21,7 @@ FrameTracking::FrameTracking(const ros::NodeHandle& node_handle, const PtzKinema
   , supervisor_(supervisor)
   , frame_listener_(frame_listener)
   , backend_(backend)
+  , timer_(node_handle_.getCallbackQueue(), [this] { steer(); })
 {
 }
 
@@ -29,12 +30,7 @@ void FrameTracking::start(const std::string& action, const std::string& id, cons
   frame_listener_.listen();
   target_.emplace(Target{ action, id, frame_id, FrameTracker(kinematics_, limits_, config_, zoom),
                           ros::SteadyTime::now(), clock_.now() });
-  if (!timer_.isValid())
-  {
-    timer_ = node_handle_.createSteadyTimer(ros::WallDuration(1.0 / config_.rate),
-                                            [this](const ros::SteadyTimerEvent&) { steer(); });
-  }
-  timer_.start();
+  timer_.startPeriodic(1.0 / config_.rate);
   steer();
 }
 

@@ -45,13 +45,16 @@ PtzActionServer::PtzActionServer(const ros::NodeHandle& node_handle, const NodeC
   , kinematics_(kinematics)
   , backend_(std::move(backend))
   , status_hold_(config.status_hold)
+  , status_release_timer_(node_handle_.getCallbackQueue(), [this] { releaseHeldStatuses(); })
 {
 }
 
 PtzActionServer::~PtzActionServer()
 {
-  // Stop the state thread and the backend's reports first: both post callbacks that point at this object.
+  // Stop the state thread, the status release and the backend's reports first: they post callbacks that point at
+  // this object.
   state_publisher_.reset();
+  status_release_timer_.stop();
   if (listener_target_)
   {
     std::lock_guard<std::mutex> lock(listener_target_->mutex);
@@ -86,8 +89,9 @@ std::unique_ptr<NodeActionServer<Action>> PtzActionServer::makeServer(ActionKind
   }
   using Server = NodeActionServer<Action>;
   return std::make_unique<Server>(
-      node_handle_, name, [this, kind](typename Server::GoalHandle handle) { onGoal<Action>(handle, kind); },
-      [this, kind](typename Server::GoalHandle handle) { onCancel<Action>(handle, kind); }, false);
+      node_handle_, name,
+      [this, kind](typename Server::GoalHandle handle) { batchStatuses([&] { onGoal<Action>(handle, kind); }); },
+      [this, kind](typename Server::GoalHandle handle) { batchStatuses([&] { onCancel<Action>(handle, kind); }); });
 }
 
 void PtzActionServer::start()
@@ -107,7 +111,6 @@ void PtzActionServer::start()
              backend_->name().c_str());
   }
   backend_->start();
-
   // Goals are checked against the tighter of the device's and the URDF's limits.
   const LimitIntersection intersection = intersectLimits(backend_->capabilities(), urdfLimits(kinematics_));
   for (const std::string& warning : intersection.warnings)
@@ -132,7 +135,8 @@ void PtzActionServer::start()
   {
     state_publisher_->addFieldOfView(config_.field_of_view);
   }
-  state_publisher_->setTickHook([this] { publishStatuses(); });
+  state_publisher_->setTickHook([this] { return publishStatuses(); });
+  state_publisher_->setTickCosts(tick_costs_);
   state_publisher_->start();
 
   presets_ = std::make_unique<PresetServices>(node_handle_, config_.presets, limits_, backend_);
@@ -210,19 +214,47 @@ void PtzActionServer::startServers()
   servers_started_ = true;
 }
 
-void PtzActionServer::publishStatuses()
+template <class Call>
+void PtzActionServer::forEachServer(Call&& call)
+{
+  const auto each = [&call](auto& server) {
+    if (server)  // start() builds them one by one
+    {
+      call(*server);
+    }
+  };
+  each(position_abs_server_);
+  each(position_rel_server_);
+  each(velocity_server_);
+  each(position_abs_tf_server_);
+  each(frame_server_);
+  each(track_frame_server_);
+  each(preset_server_);
+}
+
+int PtzActionServer::publishStatuses()
 {
   if (!servers_started_ || status_period_ticks_ == 0 || ++status_ticks_ % status_period_ticks_ != 0)
   {
-    return;
+    return 0;
   }
-  position_abs_server_->publishStatus();
-  position_rel_server_->publishStatus();
-  velocity_server_->publishStatus();
-  position_abs_tf_server_->publishStatus();
-  frame_server_->publishStatus();
-  track_frame_server_->publishStatus();
-  preset_server_->publishStatus();
+  int published = 0;
+  forEachServer([&published](auto& server) { published += server.publishStatusIfListened(); });
+  return published;
+}
+
+void PtzActionServer::batchStatuses(const std::function<void()>& changes)
+{
+  forEachServer([](auto& server) { server.holdStatus(); });
+  struct Release
+  {
+    PtzActionServer& server;
+    ~Release()
+    {
+      server.forEachServer([](auto& action_server) { action_server.releaseStatus(); });
+    }
+  } release{ *this };
+  changes();
 }
 
 void PtzActionServer::postStatus(StatusHold::Change change)
@@ -243,12 +275,12 @@ StatusPoster PtzActionServer::statusPoster()
 void PtzActionServer::armStatusRelease(TimePoint due)
 {
   status_release_armed_ = due != TimePoint::max();
-  if (status_release_armed_)
-  {
-    status_release_timer_ = node_handle_.createSteadyTimer(
-        ros::WallDuration(std::max(0.0, secondsBetween(clock_.now(), due))),
-        [this](const ros::SteadyTimerEvent&) { armStatusRelease(status_hold_.release(clock_.now())); }, true);
-  }
+  status_release_timer_.startAt(due);
+}
+
+void PtzActionServer::releaseHeldStatuses()
+{
+  batchStatuses([this] { armStatusRelease(status_hold_.release(clock_.now())); });
 }
 
 void PtzActionServer::onBackendSample()

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include <ros/callback_queue.h>
+
 #include "ptz_action_server/core/closed_loop_backend.h"
 
 namespace ptz_action_server
@@ -34,7 +36,21 @@ void PtzNode::start(const ros::NodeHandle& node_handle, const ros::NodeHandle& p
     backend_ = wrap(backend_);
   }
   server_ = std::make_unique<PtzActionServer>(node_handle, config, kinematics, backend_);
+  server_->setTickCosts(tick_costs_);
   server_->start();
+}
+
+void spinUntilShutdown()
+{
+  // ros::spin() waits at most 0.1 s at a time to look at ros::ok(). The wait here is long: ros::shutdown() (from
+  // SIGINT through roscpp's poll thread, or from any thread) disables the queue, which wakes it at once; the timeout
+  // is only a backstop.
+  constexpr double WAIT = 5.0;  // s
+  ros::CallbackQueue& queue = *ros::getGlobalCallbackQueue();
+  while (ros::ok() && queue.isEnabled())  // a disabled queue returns at once: shutdown is under way
+  {
+    queue.callAvailable(ros::WallDuration(WAIT));
+  }
 }
 
 }  // namespace ptz_action_server

@@ -9,14 +9,25 @@ std::shared_ptr<SharedCallbackQueue> SharedCallbackQueue::shared()
   return processShared<SharedCallbackQueue>();
 }
 
-SharedCallbackQueue::SharedCallbackQueue() : spinner_(1, &queue_)
+SharedCallbackQueue::SharedCallbackQueue() : thread_([this] { run(); })
 {
-  spinner_.start();
 }
 
 SharedCallbackQueue::~SharedCallbackQueue()
 {
-  spinner_.stop();
+  stopping_ = true;
+  queue_.disable();  // wakes the wait
+  thread_.join();
+}
+
+void SharedCallbackQueue::run()
+{
+  // An AsyncSpinner waits at most 0.1 s at a time; this thread sleeps until a call comes or the queue is disabled.
+  constexpr double WAIT = 5.0;  // s, a backstop only
+  while (!stopping_)
+  {
+    queue_.callAvailable(ros::WallDuration(WAIT));
+  }
 }
 
 }  // namespace ptz_action_server

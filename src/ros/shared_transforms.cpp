@@ -18,15 +18,15 @@ SharedTransforms::SharedTransforms()
   publisher_.advertise<tf2_msgs::TFMessage>(node_handle_, "/tf", 100);
 }
 
-void SharedTransforms::send(const std::vector<geometry_msgs::TransformStamped>& transforms)
+bool SharedTransforms::send(const std::vector<geometry_msgs::TransformStamped>& transforms)
 {
   if (!publisher_.listened())
   {
-    return;
+    return false;
   }
   std::lock_guard<std::mutex> lock(send_mutex_);
   message_.transforms.assign(transforms.begin(), transforms.end());
-  publisher_.publish(message_);
+  return publisher_.publish(message_);
 }
 
 void SharedTransforms::setStatic(const void* owner, const std::vector<geometry_msgs::TransformStamped>& transforms)

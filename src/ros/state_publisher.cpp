@@ -1,5 +1,8 @@
 #include "ptz_action_server/ros/state_publisher.h"
 
+#include <sys/syscall.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <limits>
 
@@ -14,6 +17,15 @@ namespace
 constexpr double STATE_RATE = 10.0;  ///< Hz, fixed by the contract
 constexpr double STATE_RATE_TOLERANCE = 0.02;
 constexpr int STATE_RATE_WINDOW = 10;  ///< ticks the measured rate is averaged over
+
+/// When the first tick of a camera started now is due: on one grid of the period for every camera of the process, so
+/// a nodelet manager's cameras tick together, in one wake-up of the timer thread (and of roscpp's poll thread, which
+/// then writes all their messages in one pass over its publications) instead of one each, spread over the period.
+TimerThread::Clock::time_point firstTick(TimerThread::Clock::duration period)
+{
+  static const TimerThread::Clock::time_point grid = TimerThread::Clock::now();
+  return grid + ((TimerThread::Clock::now() - grid) / period + 1) * period;
+}
 
 static_assert(static_cast<int>(GoalMode::IDLE) == PtzState::MODE_IDLE &&
                   static_cast<int>(GoalMode::POSITION) == PtzState::MODE_POSITION &&
@@ -80,6 +92,13 @@ void StatePublisher::start()
     publishStaticTransforms();
   }
 
+  // What the device can do does not change: described once, not in every diagnostics message.
+  for (Axis axis : ALL_AXES)
+  {
+    capability_values_.emplace_back(std::string("can: ") + axisName(axis), describeAxis(limits_, axis));
+  }
+  capability_values_.emplace_back("can: device", describeExtras(limits_));
+
   takeWarnings();  // those of the start-up, before the first tick
   diagnostics_ = std::make_unique<diagnostic_updater::Updater>(node_handle_, ros::NodeHandle(node_name_), node_name_);
   diagnostics_->setHardwareID(backend_->name());
@@ -95,7 +114,7 @@ void StatePublisher::start()
   const auto period =
       std::chrono::duration_cast<TimerThread::Clock::duration>(std::chrono::duration<double>(1.0 / STATE_RATE));
   timer_ = TimerThread::shared();
-  tick_ = timer_->every(period, TimerThread::Clock::now() + period, [this] { onTick(); });
+  tick_ = timer_->every(period, firstTick(period), [this] { onTick(); });
 }
 
 void StatePublisher::addFieldOfView(const FieldOfViewSettings& settings)
@@ -105,30 +124,53 @@ void StatePublisher::addFieldOfView(const FieldOfViewSettings& settings)
 
 void StatePublisher::onTick()
 {
+  TickCostMeter meter(tick_costs_);
+  if (meter.active())
+  {
+    ++tick_costs_->ticks;
+    tick_costs_->tick_thread = static_cast<std::int64_t>(syscall(SYS_gettid));
+  }
   const GoalSample tagged = supervisor_.sample();
   const PtzSample& sample = tagged.sample;
   state_message_.mode = static_cast<int8_t>(supervisor_.mode());
   state_message_.pan = reported(PAN, sample);
   state_message_.tilt = reported(TILT, sample);
   state_message_.zoom = reported(ZOOM, sample);
-  state_publisher_.publish(state_message_);
-  state_rate_->tick();
-
   const ros::Time stamp = toRosTime(sample.stamp);
-  joint_state_message_.header.stamp = stamp;
-  for (std::size_t index = 0; index < reported_joints_.size(); ++index)
-  {
-    joint_state_message_.position[index] = sample.position[reported_joints_[index]];
-    joint_state_message_.velocity[index] = sample.velocity[reported_joints_[index]];
-  }
-  joint_state_publisher_.publish(joint_state_message_);
-  if (field_of_view_ && limits_.axes[ZOOM].feedback == limits_.axes[ZOOM].present)
-  {
-    field_of_view_->publish(stamp, sample.position[ZOOM]);
-  }
+  meter.lap(TickCosts::SAMPLE);
 
-  // A state the device has not renewed (its link is down) is not sent again: tf takes no repeated stamps.
-  if (transforms_ && !joint_transforms_.empty() && sample.stamp > last_transform_stamp_)
+  if (state_publisher_.publish(state_message_))
+  {
+    meter.sent(TickCosts::STATE);
+  }
+  state_rate_->tick();
+  meter.lap(TickCosts::STATE);
+
+  if (joint_state_publisher_.listened())
+  {
+    joint_state_message_.header.stamp = stamp;
+    for (std::size_t index = 0; index < reported_joints_.size(); ++index)
+    {
+      joint_state_message_.position[index] = sample.position[reported_joints_[index]];
+      joint_state_message_.velocity[index] = sample.velocity[reported_joints_[index]];
+    }
+    if (joint_state_publisher_.publish(joint_state_message_))
+    {
+      meter.sent(TickCosts::JOINT_STATES);
+    }
+  }
+  meter.lap(TickCosts::JOINT_STATES);
+
+  if (field_of_view_ && limits_.axes[ZOOM].feedback == limits_.axes[ZOOM].present &&
+      field_of_view_->publish(stamp, sample.position[ZOOM]))
+  {
+    meter.sent(TickCosts::FIELD_OF_VIEW);
+  }
+  meter.lap(TickCosts::FIELD_OF_VIEW);
+
+  // A state the device has not renewed (its link is down) is not sent again: tf takes no repeated stamps (the last
+  // one sent is kept, so a listener that comes later gets the next new state).
+  if (transforms_ && !joint_transforms_.empty() && sample.stamp > last_transform_stamp_ && transforms_->listened())
   {
     last_transform_stamp_ = sample.stamp;
     for (std::size_t index = 0; index < reported_joints_.size(); ++index)
@@ -138,18 +180,27 @@ void StatePublisher::onTick()
       joint_transforms_[index].transform =
           tf2::eigenToTransform(joint(axis).transform(sample.position[axis])).transform;
     }
-    transforms_->send(joint_transforms_);
+    if (transforms_->send(joint_transforms_))
+    {
+      meter.sent(TickCosts::TF);
+    }
   }
+  meter.lap(TickCosts::TF);
+
   diagnostics_->update();
+  meter.lap(TickCosts::DIAGNOSTICS);
 
   if (supervisor_.goalActive())
   {
     hand_over_(tagged);
   }
+  meter.lap(TickCosts::HAND_OVER);
+
   if (tick_hook_)
   {
-    tick_hook_();
+    meter.sent(TickCosts::STATUS_LISTS, static_cast<std::uint64_t>(tick_hook_()));
   }
+  meter.lap(TickCosts::STATUS_LISTS);
 }
 
 const JointModel& StatePublisher::joint(Axis axis) const
@@ -194,6 +245,10 @@ void StatePublisher::takeWarnings()
 
 void StatePublisher::diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper& status)
 {
+  if (tick_costs_ && tick_costs_->enabled)
+  {
+    ++tick_costs_->messages[TickCosts::DIAGNOSTICS];  // once per diagnostics message
+  }
   takeWarnings();
   const PtzSample sample = backend_->sample();
   if (sample.link_up)
@@ -209,11 +264,10 @@ void StatePublisher::diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper
   status.add("state age (s)", secondsBetween(sample.stamp, clock_.now()));
   status.add("mode", static_cast<int>(supervisor_.mode()));
   status.add("device faults", sample.fault_count);
-  for (Axis axis : ALL_AXES)
+  for (const auto& [key, value] : capability_values_)
   {
-    status.add(std::string("can: ") + axisName(axis), describeAxis(limits_, axis));
+    status.add(key, value);
   }
-  status.add("can: device", describeExtras(limits_));
   for (std::size_t index = 0; index < warnings_.size(); ++index)
   {
     status.add("warning " + std::to_string(index + 1), warnings_[index]);

@@ -12,6 +12,7 @@
 
 #include "ptz_action_server/FieldOfView.h"
 #include "ptz_action_server/core/backend.h"
+#include "ptz_action_server/ros/listened_publisher.h"
 #include "ptz_action_server/ros/view_config.h"
 
 namespace ptz_action_server
@@ -31,8 +32,9 @@ public:
   FieldOfViewPublisher(ros::NodeHandle node_handle, const FieldOfViewSettings& settings,
                        std::shared_ptr<PtzBackend> backend, const std::string& camera_frame);
 
-  /// One state tick: the field of view at \p zoom, stamped \p stamp (joint_states' stamp).
-  void publish(const ros::Time& stamp, double zoom);
+  /// One state tick: the field of view at \p zoom, stamped \p stamp (joint_states' stamp), if someone listens;
+  /// returns whether it was sent.
+  bool publish(const ros::Time& stamp, double zoom);
 
   /// Rescales \p info in place from \p scale: fx, fy (and skew, Tx, Ty) in K and P; principal point unchanged.
   static void rescale(sensor_msgs::CameraInfo& info, const FocalScale& scale);
@@ -43,7 +45,7 @@ private:
   const FieldOfViewSettings settings_;
   const FieldOfViewModel& model_;  ///< settings_.model's value
   const std::shared_ptr<PtzBackend> backend_;
-  ros::Publisher field_of_view_publisher_;
+  ListenedPublisher field_of_view_publisher_;
   ptz_action_server::FieldOfView field_of_view_message_;
   ros::Subscriber camera_info_subscriber_;
   ros::Publisher camera_info_publisher_;

@@ -13,6 +13,7 @@
 
 #include "ptz_action_server/ros/action_kind.h"
 #include "ptz_action_server/ros/frame_listener.h"
+#include "ptz_action_server/ros/queue_timer.h"
 
 namespace ptz_action_server
 {
@@ -56,7 +57,7 @@ private:
   FrameListener& frames_;
   const std::string base_frame_;
   std::optional<Goal> goal_;
-  ros::SteadyTimer timer_;  ///< checks the held goal's frame while one waits
+  QueueTimer timer_;  ///< checks the held goal's frame while one waits
 };
 
 }  // namespace ptz_action_server

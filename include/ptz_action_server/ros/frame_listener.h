@@ -11,6 +11,8 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "ptz_action_server/ros/queue_timer.h"
+
 namespace ptz_action_server
 {
 /**
@@ -53,7 +55,7 @@ private:
   std::unique_ptr<tf2_ros::Buffer> buffer_;
   std::unique_ptr<tf2_ros::TransformListener> listener_;
   ros::SteadyTime listening_since_;
-  ros::SteadyTimer quiet_timer_;  ///< one-shot: stops listening listen_time after the last frame goal
+  QueueTimer quiet_timer_;  ///< one-shot: stops listening listen_time after the last frame goal
 };
 
 }  // namespace ptz_action_server

@@ -15,6 +15,7 @@
 #include "ptz_action_server/core/goal/goal_supervisor.h"
 #include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/ros/frame_listener.h"
+#include "ptz_action_server/ros/queue_timer.h"
 
 namespace ptz_action_server
 {
@@ -65,7 +66,7 @@ private:
   const PtzBackend& backend_;
   SystemClock clock_;
   std::optional<Target> target_;
-  ros::SteadyTimer timer_;
+  QueueTimer timer_;  ///< steers at track/rate while a goal tracks
 };
 
 }  // namespace ptz_action_server

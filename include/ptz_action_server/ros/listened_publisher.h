@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include <ros/ros.h>
@@ -23,12 +24,23 @@ namespace ptz_action_server
 class ListenedPublisher
 {
 public:
+  /// Advertises \p topic; \p on_connect, if set, runs after each new subscriber is counted (on the handle's queue).
+  /// A topic the process already advertises keeps its publication's queue and latching, and is counted all the same.
   template <class Message>
-  void advertise(ros::NodeHandle& node_handle, const std::string& topic, std::uint32_t queue_size)
+  void advertise(ros::NodeHandle& node_handle, const std::string& topic, std::uint32_t queue_size, bool latch = false,
+                 std::function<void()> on_connect = {})
   {
+    on_connect_ = std::move(on_connect);
     publisher_ = node_handle.advertise<Message>(
-        topic, queue_size, [this](const ros::SingleSubscriberPublisher&) { ++listeners_; },
-        [this](const ros::SingleSubscriberPublisher&) { --listeners_; });
+        topic, queue_size,
+        [this](const ros::SingleSubscriberPublisher&) {
+          ++listeners_;
+          if (on_connect_)
+          {
+            on_connect_();
+          }
+        },
+        [this](const ros::SingleSubscriberPublisher&) { --listeners_; }, ros::VoidConstPtr(), latch);
   }
 
   /// True while the topic has a subscriber.
@@ -37,17 +49,28 @@ public:
     return listeners_ > 0;
   }
 
+  /// Publishes \p message if the topic has a subscriber; returns whether it did.
   template <class Message>
-  void publish(const Message& message) const
+  bool publish(const Message& message) const
   {
-    if (listened())
+    if (!listened())
     {
-      publisher_.publish(message);
+      return false;
     }
+    publisher_.publish(message);
+    return true;
+  }
+
+  /// Publishes \p message whether or not anyone listens (a latched topic's message for later subscribers).
+  template <class Message>
+  void publishAlways(const Message& message) const
+  {
+    publisher_.publish(message);
   }
 
 private:
   std::atomic<int> listeners_{ 0 };
+  std::function<void()> on_connect_;
   ros::Publisher publisher_;  ///< last: its callbacks (which roscpp removes as it goes) count listeners_
 };
 

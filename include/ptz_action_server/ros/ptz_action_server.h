@@ -11,7 +11,6 @@
 #include <optional>
 #include <string>
 
-#include <actionlib/server/action_server.h>
 #include <ros/ros.h>
 
 #include "ptz_action_server/PtzAction.h"
@@ -29,8 +28,11 @@
 #include "ptz_action_server/ros/frame_tracking.h"
 #include "ptz_action_server/ros/goal_translator.h"
 #include "ptz_action_server/ros/look_at_clicked_point.h"
+#include "ptz_action_server/ros/node_action_server.h"
 #include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/preset_services.h"
+#include "ptz_action_server/ros/queue_timer.h"
+#include "ptz_action_server/ros/tick_costs.h"
 #include "ptz_action_server/ros/view_config.h"
 
 namespace ptz_action_server
@@ -75,18 +77,6 @@ struct StatusPoster
 class StatePublisher;
 
 /**
- * \brief An actionlib server whose status list the node publishes (PtzActionServer::publishStatuses()) instead of a
- * ros::Timer of its own: actionlib's publishStatus(), protected in its base, made callable.
- */
-template <class Action>
-class NodeActionServer : public actionlib::ActionServer<Action>
-{
-public:
-  using actionlib::ActionServer<Action>::ActionServer;
-  using actionlib::ActionServerBase<Action>::publishStatus;
-};
-
-/**
  * \brief The ptz_action_server node around one backend.
  *
  * It wires ROS to the core: a goal goes from its action callback (through the FrameGoalHold if it must wait for tf)
@@ -111,6 +101,12 @@ public:
   /// Throws BackendError or ConfigError.
   void start();
 
+  /// Lets the benchmark measure the state tick's parts into \p costs (see TickCosts); before start().
+  void setTickCosts(TickCosts* costs)
+  {
+    tick_costs_ = costs;
+  }
+
   /// Limits goals are checked against: the backend's capabilities narrowed by the URDF joint limits.
   const Capabilities& limits() const
   {
@@ -134,8 +130,15 @@ private:
   std::unique_ptr<NodeActionServer<Action>> makeServer(ActionKind kind);
   /// Starts the action servers without a status timer each: publishStatuses() publishes their status lists.
   void startServers();
-  /// On the state thread, every tick: publishes the servers' status lists at actionlib_status_frequency.
-  void publishStatuses();
+  /// On the state thread, every tick: publishes the listened servers' status lists at actionlib_status_frequency;
+  /// returns how many it published.
+  int publishStatuses();
+  /// Runs \p changes (goal status changes, on the main thread) with each server's transitions making one status list,
+  /// published when they are done.
+  void batchStatuses(const std::function<void()>& changes);
+  /// Calls \p call with each action server built so far.
+  template <class Call>
+  void forEachServer(Call&& call);
   template <class Action>
   void onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   template <class Action>
@@ -153,6 +156,8 @@ private:
   StatusPoster statusPoster();
   /// Arms the one-shot timer that releases the held status changes at \p due (none if TimePoint::max()).
   void armStatusRelease(TimePoint due);
+  /// On the main queue when the release timer fires: runs the held changes that are due, then arms it again.
+  void releaseHeldStatuses();
   /// On the backend's thread when its state may have changed: queues one early verdict check on the main thread.
   void onBackendSample();
 
@@ -166,8 +171,8 @@ private:
   std::unique_ptr<GoalSupervisor> supervisor_;       ///< the goal state machine, on the main thread; built by start()
   std::unique_ptr<StatePublisher> state_publisher_;  ///< the 10 Hz tick, on its own thread; built by start()
   SystemClock clock_;
-  StatusHold status_hold_;                 ///< goal status changes after a new goal wait here (main thread)
-  ros::SteadyTimer status_release_timer_;  ///< one-shot, armed while changes are held
+  StatusHold status_hold_;           ///< goal status changes after a new goal wait here (main thread)
+  QueueTimer status_release_timer_;  ///< one-shot, armed while changes are held (no roscpp timer, no thread of its own)
   bool status_release_armed_ = false;
   std::atomic<bool> supervising_{ false };  ///< supervisor_ is built: backend reports may be judged
   /// What the backend's listener reaches this server through; the destructor cuts it (the backend may outlive us).
@@ -181,6 +186,7 @@ private:
   std::atomic<bool> servers_started_{ false };       ///< the action servers are started: their status may go out
   int status_period_ticks_ = 0;                      ///< state ticks between status lists; 0: none (set before start)
   int status_ticks_ = 0;                             ///< state ticks so far (state thread)
+  TickCosts* tick_costs_ = nullptr;                  ///< the benchmark's, or null
 
   // Frame lookups for position_abs_tf and frame goals; the listener feeds the buffer from the main queue.
   std::unique_ptr<FrameListener> frame_listener_;

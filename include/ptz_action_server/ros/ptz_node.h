@@ -11,6 +11,7 @@
 
 #include "ptz_action_server/ros/backend_loader.h"
 #include "ptz_action_server/ros/ptz_action_server.h"
+#include "ptz_action_server/ros/tick_costs.h"
 
 namespace ptz_action_server
 {
@@ -29,6 +30,12 @@ public:
   PtzNode(const PtzNode&) = delete;
   PtzNode& operator=(const PtzNode&) = delete;
 
+  /// Lets the benchmark measure the state tick's parts into \p costs (see TickCosts); before start().
+  void setTickCosts(TickCosts* costs)
+  {
+    tick_costs_ = costs;
+  }
+
   /// Reads the node's parameters (\p private_handle) and the URDF (robot_description in \p node_handle's
   /// namespace), loads and starts the backend, then the actions. Throws ConfigError or BackendError with the reason.
   void start(const ros::NodeHandle& node_handle, const ros::NodeHandle& private_handle,
@@ -38,6 +45,13 @@ private:
   BackendLoader loader_;  ///< first: destroyed last
   std::shared_ptr<PtzBackend> backend_;
   std::unique_ptr<PtzActionServer> server_;
+  TickCosts* tick_costs_ = nullptr;
 };
+
+/**
+ * \brief ros::spin() on the global queue, for a node's main thread, without its ten wake-ups a second: waits for a
+ * callback until ros::shutdown() (which disables the queue, and so wakes the wait), running each as it comes.
+ */
+void spinUntilShutdown();
 
 }  // namespace ptz_action_server

@@ -5,18 +5,20 @@
  */
 #pragma once
 
+#include <atomic>
 #include <memory>
+#include <thread>
 
 #include <ros/callback_queue.h>
-#include <ros/spinner.h>
 
 namespace ptz_action_server
 {
 /**
  * \brief The process's queue for slow services: one thread for all cameras instead of a spinner per camera.
  *
- * Its callbacks run one at a time, off every camera's goal queue and the state tick. An owner shuts its services
- * down before it lets go of the queue (roscpp then waits for a callback of that service in progress).
+ * Its callbacks run one at a time, off every camera's goal queue and the state tick; the thread sleeps until one comes.
+ * An owner shuts its services down before it lets go of the queue (roscpp then waits for a callback of that service
+ * in progress), and never from one of the queue's callbacks.
  */
 class SharedCallbackQueue
 {
@@ -35,8 +37,11 @@ public:
   }
 
 private:
+  void run();
+
+  std::atomic<bool> stopping_{ false };
   ros::CallbackQueue queue_;
-  ros::AsyncSpinner spinner_;
+  std::thread thread_;  ///< last: runs on the members above
 };
 
 }  // namespace ptz_action_server

@@ -35,8 +35,13 @@ public:
 
   SharedTransforms();
 
-  /// Sends moving joints on /tf (nothing while nobody listens).
-  void send(const std::vector<geometry_msgs::TransformStamped>& transforms);
+  /// True while /tf has a subscriber.
+  bool listened() const
+  {
+    return publisher_.listened();
+  }
+  /// Sends moving joints on /tf (nothing while nobody listens); returns whether it sent them.
+  bool send(const std::vector<geometry_msgs::TransformStamped>& transforms);
   /// Replaces the fixed joints of \p owner and republishes every owner's on the latched /tf_static.
   void setStatic(const void* owner, const std::vector<geometry_msgs::TransformStamped>& transforms);
   /// Drops the fixed joints of \p owner from what /tf_static holds for later subscribers.

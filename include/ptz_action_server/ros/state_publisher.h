@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -23,17 +24,19 @@
 #include "ptz_action_server/ros/field_of_view_publisher.h"
 #include "ptz_action_server/ros/listened_publisher.h"
 #include "ptz_action_server/ros/shared_transforms.h"
+#include "ptz_action_server/ros/tick_costs.h"
 
 namespace ptz_action_server
 {
 /**
  * \brief Publishes the device's state at 10 Hz, whatever the backend does, and hands the samples on.
  *
- * Each tick runs on the process's TimerThread, which ticks every camera of a nodelet manager, each at its own phase
- * (one thread instead of a timer and a spinner thread per camera): it takes one backend sample, publishes
- * PtzState (with the supervisor's mode), joint_states and the pan and tilt transforms, updates the diagnostics
- * (backend status, measured ptz_state rate), and while a goal is active passes the sample to the handler. The
- * messages are built once in start() and reused, so a tick allocates nothing of its own.
+ * Each tick runs on the process's TimerThread, which ticks every camera of a nodelet manager together, on one grid of
+ * the period (one thread and one wake-up instead of a timer and a spinner thread per camera): it takes one backend
+ * sample, publishes PtzState (with the supervisor's mode), joint_states and the pan and tilt transforms, updates the
+ * diagnostics (backend status, measured ptz_state rate), and while a goal is active passes the sample to the handler.
+ * The messages are built once in start() and reused, so a tick allocates nothing of its own; a topic nobody listens to
+ * costs the tick nothing but the check.
  *
  * An axis whose device reports no position (AxisCapability::feedback false) is published as NaN in PtzState and is
  * left out of joint_states and tf: its pose is unknown, and a made-up one would mislead rviz and the clients.
@@ -60,10 +63,18 @@ public:
   /// start().
   void addFieldOfView(const FieldOfViewSettings& settings);
 
-  /// Calls \p hook on the state thread at the end of every tick. Before start().
-  void setTickHook(std::function<void()> hook)
+  /// Calls \p hook on the state thread at the end of every tick; it returns how many messages it sent (the action
+  /// status lists). Before start().
+  void setTickHook(std::function<int()> hook)
   {
     tick_hook_ = std::move(hook);
+  }
+
+  /// Measures each part of every tick into \p costs while its \c enabled is set (the benchmark's instrumented mode);
+  /// \p costs must outlive the publisher. Before start().
+  void setTickCosts(TickCosts* costs)
+  {
+    tick_costs_ = costs;
   }
 
   /// Advertises the topics, publishes the static transforms once (with tf on), then starts the tick.
@@ -90,7 +101,8 @@ private:
   std::vector<Axis> reported_joints_;  ///< pan and tilt, those the device reports, in joint_states and tf
   const bool publish_tf_;
   const SampleHandler hand_over_;
-  std::function<void()> tick_hook_;
+  std::function<int()> tick_hook_;
+  TickCosts* tick_costs_ = nullptr;  ///< the benchmark's, or null
   SystemClock clock_;
 
   // Only the state thread touches these after start().
@@ -105,8 +117,9 @@ private:
   double state_rate_min_ = 0.0;
   double state_rate_max_ = 0.0;
   std::unique_ptr<diagnostic_updater::FrequencyStatus> state_rate_;
-  std::unique_ptr<FieldOfViewPublisher> field_of_view_;  ///< null without a configured field of view
-  std::vector<std::string> warnings_;                    ///< every warning of the backend so far
+  std::unique_ptr<FieldOfViewPublisher> field_of_view_;                 ///< null without a configured field of view
+  std::vector<std::string> warnings_;                                   ///< every warning of the backend so far
+  std::vector<std::pair<std::string, std::string>> capability_values_;  ///< the "can: ..." diagnostics, from start()
   std::shared_ptr<TimerThread> timer_;
   TimerThread::Id tick_ = 0;
 };
