@@ -14,7 +14,7 @@
 #include "diagnostic_value.h"
 #include "ptz_action_server/core/mavlink/mavlink_gimbal_protocol.h"
 #include "ptz_action_server/emulators/mavlink_gimbal_emulator.h"
-#include "ptz_action_server/emulators/udp_socket.h"
+#include "ptz_action_server/emulators/ports/udp_socket.h"
 #include "wait_until.h"
 
 using namespace ptz_action_server;

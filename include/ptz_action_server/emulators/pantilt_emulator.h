@@ -21,10 +21,10 @@
 #include <vector>
 
 #include "ptz_action_server/core/framing/slip.h"
-#include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/ports/device_port.h"
 #include "ptz_action_server/emulators/emulator_faults.h"
 #include "ptz_action_server/emulators/sim_pantilt.h"
-#include "ptz_action_server/emulators/received_log.h"
+#include "ptz_action_server/emulators/ports/received_log.h"
 
 namespace ptz_action_server
 {
