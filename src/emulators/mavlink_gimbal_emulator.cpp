@@ -135,7 +135,7 @@ MavlinkGimbalEmulator::Gimbal& MavlinkGimbalEmulator::at(std::size_t index) cons
 
 void MavlinkGimbalEmulator::setSilent(bool silent)
 {
-  silent_ = silent;
+  PushEmulatorFaults::setSilent(silent);
   port_->setSilent(silent);  // udp: datagrams go unread, so the sender does not become the peer
 }
 
@@ -155,32 +155,9 @@ void MavlinkGimbalEmulator::setFaults(const SimFaults& faults, std::size_t gimba
   at(gimbal).model.setFaults(faults, clock_->now());
 }
 
-bool MavlinkGimbalEmulator::faultSilence(bool on)
+void MavlinkGimbalEmulator::setModelFaults(const SimFaults& faults)
 {
-  setSilent(on);
-  return true;
-}
-
-bool MavlinkGimbalEmulator::faultEndless(bool on)
-{
-  setEndless(on);
-  return true;
-}
-
-bool MavlinkGimbalEmulator::faultFlood(bool on)
-{
-  setFlood(on ? FAULT_FLOOD_COPIES : 1);
-  return true;
-}
-
-bool MavlinkGimbalEmulator::faultModel(EmulatorFault fault, const SimFaults& faults)
-{
-  if (fault != EmulatorFault::IMPOSSIBLE)
-  {
-    return false;
-  }
   setFaults(faults);
-  return true;
 }
 
 void MavlinkGimbalEmulator::giveControlTo(std::uint8_t system_id, std::uint8_t component_id, bool keep,
@@ -244,7 +221,7 @@ MavlinkGimbalEmulatorCounters MavlinkGimbalEmulator::counters() const
 
 void MavlinkGimbalEmulator::receive(const std::uint8_t* data, std::size_t size)
 {
-  if (silent_)
+  if (silent())
   {
     return;
   }
@@ -260,7 +237,7 @@ template <class Message>
 void MavlinkGimbalEmulator::send(std::uint8_t component, const Message& message)
 {
   // With mutex_ held.
-  if (silent_)
+  if (silent())
   {
     return;
   }
@@ -366,7 +343,7 @@ void MavlinkGimbalEmulator::sendAttitude(Gimbal& gimbal, TimePoint now)
   attitude.delta_yaw = static_cast<float>(config_.vehicle_yaw);
   // 1..6 when the manager's component sends it for a gimbal inside it; 0 from a gimbal device's own component.
   attitude.gimbal_device_id = gimbal.separate() ? 0 : gimbal.device_id;
-  for (unsigned copy = 0; copy < flood_; ++copy)
+  for (unsigned copy = 0; copy < floodCopies(); ++copy)
   {
     send(gimbal.attitudeComponent(), attitude);
   }
@@ -482,7 +459,7 @@ void MavlinkGimbalEmulator::sendPx4Attitude(const Gimbal& gimbal, const PtzSampl
   Attitude vehicle;  // PX4 streams the vehicle's ATTITUDE on every link
   vehicle.time_boot_ms = attitude.time_boot_ms;
   vehicle.yaw = static_cast<float>(config_.vehicle_yaw);
-  for (unsigned copy = 0; copy < flood_; ++copy)
+  for (unsigned copy = 0; copy < floodCopies(); ++copy)
   {
     send(gimbal.attitudeComponent(), attitude);
     send(MAV_COMP_ID_AUTOPILOT1, vehicle);
