@@ -75,7 +75,8 @@ ptz_protocol(mavlink_gimbal
     src/emulators/mavlink_gimbal_emulator_reports.cpp
   PROGRAM mavlink_gimbal_emulator src/emulators/programs/mavlink_gimbal_emulator_main.cpp
   TESTS test/core/test_mavlink_codec.cpp test/core/test_mavlink_messages.cpp test/core/test_mavlink_gimbal_goldens.cpp
-    test/core/test_mavlink_gimbal_protocol.cpp test/core/test_mavlink_gimbal_field.cpp
+    test/core/test_mavlink_gimbal_protocol.cpp test/core/test_mavlink_several_gimbals.cpp
+    test/core/test_mavlink_gimbal_emulator.cpp test/core/test_mavlink_gimbal_field.cpp
     test/core/contract/mavlink_gimbal_fixtures.cpp
   FUZZ mavlink src/core/mavlink/mavlink_codec.cpp src/core/mavlink/mavlink_messages.cpp
     src/core/mavlink/mavlink_quaternion.cpp
