@@ -15,7 +15,7 @@
 
 #include "ptz_action_server/core/sim/sim_device_model.h"
 #include "ptz_action_server/core/types.h"
-#include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/ports/device_port.h"
 #include "ptz_action_server/emulators/emulator_faults.h"
 
 namespace ptz_bench

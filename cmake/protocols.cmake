@@ -69,16 +69,22 @@ ptz_protocol(mavlink_gimbal
   CORE src/core/mavlink/mavlink_codec.cpp src/core/mavlink/mavlink_gimbal_protocol.cpp
     src/core/mavlink/mavlink_gimbal_replies.cpp src/core/mavlink/mavlink_gimbal_discovery.cpp
     src/core/mavlink/mavlink_gimbal_attitude.cpp src/core/mavlink/mavlink_messages.cpp
+    src/core/mavlink/mavlink_quaternion.cpp
   PLUGIN src/plugins/mavlink_gimbal_backend_plugin.cpp
   EMULATOR src/emulators/mavlink_gimbal_emulator.cpp src/emulators/mavlink_gimbal_emulator_commands.cpp
+    src/emulators/mavlink_gimbal_emulator_reports.cpp
   PROGRAM mavlink_gimbal_emulator src/emulators/programs/mavlink_gimbal_emulator_main.cpp
-  TESTS test/core/test_mavlink_codec.cpp test/core/test_mavlink_gimbal_protocol.cpp
-    test/core/test_mavlink_gimbal_field.cpp test/core/contract/mavlink_gimbal_fixtures.cpp
+  TESTS test/core/test_mavlink_codec.cpp test/core/test_mavlink_messages.cpp test/core/test_mavlink_gimbal_goldens.cpp
+    test/core/test_mavlink_gimbal_protocol.cpp test/core/test_mavlink_several_gimbals.cpp
+    test/core/test_mavlink_gimbal_emulator.cpp test/core/test_mavlink_gimbal_field.cpp
+    test/core/contract/mavlink_gimbal_fixtures.cpp
   FUZZ mavlink src/core/mavlink/mavlink_codec.cpp src/core/mavlink/mavlink_messages.cpp
+    src/core/mavlink/mavlink_quaternion.cpp
   ROSTESTS test/ros/mavlink_gimbal_node.test
 )
-# Like mavlink_gimbal_emulator.cpp (CMakeLists.txt), its file-wide `using namespace` stays out of the unity batches.
-set_source_files_properties(src/emulators/mavlink_gimbal_emulator_commands.cpp PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
+# Like mavlink_gimbal_emulator.cpp (CMakeLists.txt), their file-wide `using namespace` stays out of the unity batches.
+set_source_files_properties(src/emulators/mavlink_gimbal_emulator_commands.cpp
+  src/emulators/mavlink_gimbal_emulator_reports.cpp PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
 
 ptz_protocol(axis
   CORE src/core/axis/axis_protocol.cpp src/core/axis/axis_zoom_setup.cpp src/core/axis/axis_control_queue.cpp

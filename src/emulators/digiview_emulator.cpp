@@ -70,11 +70,6 @@ std::uint16_t DigiViewEmulator::port() const
   return config_.transport == LinkKind::TCP ? port_->tcpPort() : port_->udpPort();
 }
 
-void DigiViewEmulator::setSilent(bool silent)
-{
-  silent_ = silent;
-}
-
 void DigiViewEmulator::setEndless(bool endless)
 {
   endless_ = endless;
@@ -123,12 +118,6 @@ void DigiViewEmulator::dropConnections()
   }
 }
 
-bool DigiViewEmulator::faultSilence(bool on)
-{
-  setSilent(on);
-  return true;
-}
-
 bool DigiViewEmulator::faultDrop(bool on)
 {
   if (on)
@@ -138,26 +127,9 @@ bool DigiViewEmulator::faultDrop(bool on)
   return true;
 }
 
-bool DigiViewEmulator::faultEndless(bool on)
+void DigiViewEmulator::setModelFaults(const SimFaults& faults)
 {
-  setEndless(on);
-  return true;
-}
-
-bool DigiViewEmulator::faultFlood(bool on)
-{
-  setFlood(on ? FAULT_FLOOD_COPIES : 1);
-  return true;
-}
-
-bool DigiViewEmulator::faultModel(EmulatorFault fault, const SimFaults& faults)
-{
-  if (fault != EmulatorFault::IMPOSSIBLE)
-  {
-    return false;
-  }
   setFaults(faults);
-  return true;
 }
 
 std::size_t DigiViewEmulator::connections() const
@@ -225,7 +197,7 @@ void DigiViewEmulator::closeSession(const SessionPtr& session, bool disconnect)
 
 void DigiViewEmulator::reply(const SessionPtr& session, const Message& message)
 {
-  if (silent_ || !session->open)
+  if (silent() || !session->open)
   {
     return;
   }
@@ -277,7 +249,7 @@ void DigiViewEmulator::tick()
       Message message;
       if (current(subscription.request.param, subscription.request.camera, message))
       {
-        for (unsigned copy = 0; copy < flood_; ++copy)
+        for (unsigned copy = 0; copy < floodCopies(); ++copy)
         {
           reply(entry.second, message);
         }

@@ -85,7 +85,7 @@ void DigiViewEmulator::handle(const SessionPtr& session, const std::uint8_t* byt
   bool unverified = false;
   const UnpackError error = Message::unpack(bytes, size, config_.wire, message, &unverified);
   received_.add(ReceivedMessage{ SteadyClock::now(), error, unverified, message });
-  if (silent_)
+  if (silent())
   {
     return;
   }

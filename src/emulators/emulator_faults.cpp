@@ -61,4 +61,32 @@ bool EmulatorFaults::setFault(EmulatorFault fault, bool on)
   return false;
 }
 
+bool PushEmulatorFaults::faultSilence(bool on)
+{
+  setSilent(on);
+  return true;
+}
+
+bool PushEmulatorFaults::faultEndless(bool on)
+{
+  setEndless(on);
+  return true;
+}
+
+bool PushEmulatorFaults::faultFlood(bool on)
+{
+  setFlood(on ? FAULT_FLOOD_COPIES : 1);
+  return true;
+}
+
+bool PushEmulatorFaults::faultModel(EmulatorFault fault, const SimFaults& faults)
+{
+  if (fault != EmulatorFault::IMPOSSIBLE)
+  {
+    return false;
+  }
+  setModelFaults(faults);
+  return true;
+}
+
 }  // namespace ptz_action_server

@@ -22,7 +22,7 @@
 #include "ptz_action_server/core/transport/http_link.h"
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
-#include "socket_server.h"
+#include "ports/socket_server.h"
 
 namespace ptz_action_server
 {

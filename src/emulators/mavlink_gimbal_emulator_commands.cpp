@@ -1,7 +1,7 @@
 /**
  * \file
  * \brief MavlinkGimbalEmulator: what the managers do with the commands and setpoints they receive. What they send
- * and the link are in mavlink_gimbal_emulator.cpp.
+ * is in mavlink_gimbal_emulator_reports.cpp, the link in mavlink_gimbal_emulator.cpp.
  */
 #include <cmath>
 

@@ -85,11 +85,6 @@ void PanTiltEmulator::replug()
   }
 }
 
-void PanTiltEmulator::setSilent(bool silent)
-{
-  silent_ = silent;
-}
-
 void PanTiltEmulator::setEndless(bool endless)
 {
   port_->setEndless(endless);  // a datagram of noise; on the line, a frame that never ends
@@ -110,38 +105,15 @@ void PanTiltEmulator::sendRaw(const std::string& to, const std::uint8_t* data, s
   port_->sendTo(to, data, size);
 }
 
-bool PanTiltEmulator::faultSilence(bool on)
-{
-  setSilent(on);
-  return true;
-}
-
 bool PanTiltEmulator::faultDrop(bool on)
 {
   setDropRatio(on ? FAULT_DROP_RATIO : 0.0);
   return true;
 }
 
-bool PanTiltEmulator::faultEndless(bool on)
+void PanTiltEmulator::setModelFaults(const SimFaults& faults)
 {
-  setEndless(on);
-  return true;
-}
-
-bool PanTiltEmulator::faultFlood(bool on)
-{
-  setFlood(on ? FAULT_FLOOD_COPIES : 1);
-  return true;
-}
-
-bool PanTiltEmulator::faultModel(EmulatorFault fault, const SimFaults& faults)
-{
-  if (fault != EmulatorFault::IMPOSSIBLE)
-  {
-    return false;
-  }
   pan_tilt_.setFaults(faults);
-  return true;
 }
 
 PanTiltEmulatorCounters PanTiltEmulator::counters() const
@@ -165,7 +137,7 @@ void PanTiltEmulator::sendDueReplies(TimePoint now)
     {
       next_state_at_ = addSeconds(now, config_.state_period);
     }
-    if (!silent_)
+    if (!silent())
     {
       sendState(last_client_);
     }
@@ -176,7 +148,7 @@ void PanTiltEmulator::handleDatagram(const std::uint8_t* data, std::size_t size,
 {
   const TimePoint now = clock_->now();
   received_.add(ReceivedDatagram{ now, std::vector<std::uint8_t>(data, data + size) });
-  if (silent_)
+  if (silent())
   {
     std::lock_guard<std::mutex> lock(mutex_);
     ++counters_.dropped_by_fault;
@@ -276,7 +248,7 @@ void PanTiltEmulator::sendState(const std::string& to)
     bytes = framed_.data();
     length = framed_.size();
   }
-  for (unsigned copy = 0; copy < flood_; ++copy)
+  for (unsigned copy = 0; copy < floodCopies(); ++copy)
   {
     port_->sendTo(to, bytes, length);
     std::lock_guard<std::mutex> lock(mutex_);

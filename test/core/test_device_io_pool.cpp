@@ -23,7 +23,7 @@
 #include "ptz_action_server/core/device/device_protocol.h"
 #include "ptz_action_server/core/device/device_session.h"
 #include "ptz_action_server/core/device/transaction_channel.h"
-#include "ptz_action_server/emulators/udp_socket.h"
+#include "ptz_action_server/emulators/ports/udp_socket.h"
 #include "wait_until.h"
 
 using namespace ptz_action_server;

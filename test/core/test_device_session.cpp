@@ -20,7 +20,7 @@
 #include <boost/asio/write.hpp>
 
 #include "ptz_action_server/core/device/device_backend.h"
-#include "ptz_action_server/emulators/udp_socket.h"
+#include "ptz_action_server/emulators/ports/udp_socket.h"
 
 using namespace ptz_action_server;
 

@@ -6,73 +6,24 @@
  */
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <memory>
 #include <string>
 
-#include "diagnostic_value.h"
-#include "ptz_action_server/core/mavlink/mavlink_gimbal_protocol.h"
-#include "ptz_action_server/emulators/mavlink_gimbal_emulator.h"
-#include "wait_until.h"
+#include "mavlink_gimbal_test_fixture.h"
 
 namespace ptz_action_server
 {
 namespace
 {
-constexpr double WAIT = 10.0;  ///< s: generous, the machine may be busy
+using namespace mavlink_gimbal_test;
 
-class MavlinkGimbalFieldTest : public ::testing::Test
+class MavlinkGimbalFieldTest : public MavlinkGimbalTest
 {
-protected:
-  void startEmulator()
-  {
-    emulator_ = std::make_unique<MavlinkGimbalEmulator>(emulator_config_);
-    config_.link.port = emulator_->udpPort();
-    config_.link.local_host = "127.0.0.1";
-    config_.session.state_timeout = 1.0;
-    config_.session.startup_timeout = 5.0;
-  }
-  /// The text start() fails with ("" if it does not).
-  std::string startFailure()
-  {
-    startEmulator();
-    backend_ = makeDeviceBackend<MavlinkGimbalProtocol>(config_);
-    try
-    {
-      backend_->start();
-    }
-    catch (const BackendError& error)
-    {
-      return error.what();
-    }
-    return "";
-  }
-  void startBoth()
-  {
-    startEmulator();
-    backend_ = makeDeviceBackend<MavlinkGimbalProtocol>(config_);
-    backend_->start();
-  }
-  bool reached(double pan, double tilt) const
-  {
-    const PtzSample sample = backend_->sample();
-    return sample.link_up && !sample.moving && std::abs(sample.position[PAN] - pan) < 0.01 &&
-           std::abs(sample.position[TILT] - tilt) < 0.01;
-  }
-  std::string diagnostic(const std::string& name) const
-  {
-    return diagnosticValue(*backend_, name);
-  }
-
-  MavlinkGimbalEmulatorConfig emulator_config_;
-  std::unique_ptr<MavlinkGimbalEmulator> emulator_;
-  DeviceConfig<MavlinkGimbalProtocol> config_;
-  std::shared_ptr<DeviceBackend> backend_;
 };
 
 TEST_F(MavlinkGimbalFieldTest, AnAutopilotSpeakingOnlyGimbalProtocolV1FailsTheStartSayingSoAndWhatToSet)
 {
   emulator_config_.gimbal_v1 = true;  // PX4 with its mount on MAVLink v1: MOUNT_ORIENTATION, no manager
+  startEmulator();
   const std::string failure = startFailure();
   EXPECT_NE(failure.find("no gimbal manager answered REQUEST_MESSAGE GIMBAL_MANAGER_INFORMATION: the autopilot 1/1 "
                          "(PX4) speaks gimbal protocol v1 (it sends MOUNT_ORIENTATION) (the old protocol: this node "
@@ -87,6 +38,7 @@ TEST_F(MavlinkGimbalFieldTest, AnArduPilotWithMountStatusIsToldItsParameter)
 {
   emulator_config_.gimbal_v1 = true;
   emulator_config_.v1_mount_status = true;
+  startEmulator();
   const std::string failure = startFailure();
   EXPECT_NE(failure.find("the autopilot 1/1 (ArduPilot) speaks gimbal protocol v1 (it sends MOUNT_STATUS)"),
             std::string::npos)

@@ -16,7 +16,7 @@
 
 #include "ptz_action_server/core/pantilt/pantilt_protocol.h"
 #include "ptz_action_server/emulators/pantilt_emulator.h"
-#include "ptz_action_server/emulators/udp_socket.h"
+#include "ptz_action_server/emulators/ports/udp_socket.h"
 
 using namespace ptz_action_server;
 using namespace cr::pantilt;

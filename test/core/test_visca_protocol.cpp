@@ -14,7 +14,7 @@
 #include <thread>
 
 #include "ptz_action_server/core/visca/visca_protocol.h"
-#include "ptz_action_server/emulators/udp_socket.h"
+#include "ptz_action_server/emulators/ports/udp_socket.h"
 #include "ptz_action_server/emulators/visca_emulator.h"
 
 using namespace ptz_action_server;

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "ptz_action_server/core/transport/link.h"
-#include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/ports/device_port.h"
 #include "ptz_action_server/emulators/emulator_faults.h"
-#include "ptz_action_server/emulators/received_log.h"
+#include "ptz_action_server/emulators/ports/received_log.h"
 #include "ptz_action_server/core/digiview/digiview_codec.h"
 #include "ptz_action_server/core/sim/sim_device_model.h"
 
@@ -64,7 +64,7 @@ struct ReceivedMessage
  * not applied (nothing published says more; the emulator's choice). Every client is served at once (a session per TCP
  * connection or UDP peer). Its DevicePort owns the I/O thread; subscriptions are kept on its tick.
  */
-class DigiViewEmulator : public EmulatorFaults
+class DigiViewEmulator : public PushEmulatorFaults
 {
 public:
   explicit DigiViewEmulator(const DigiViewEmulatorConfig& config);
@@ -74,17 +74,10 @@ public:
 
   std::uint16_t port() const;
 
-  /// Silent: reads and ignores everything, sends nothing (subscriptions pause).
-  void setSilent(bool silent);
+  // setSilent(): the subscriptions pause too.
   /// Endless: every reply is replaced by one byte fewer of the filler 'A': on a stream, a message that never ends and
-  /// leaves the stream out of step; in a datagram, noise. Off again, the device answers as before.
-  void setEndless(bool endless);
-  /// Flood: every state the device sends goes out \p copies times (1: normally), as a device that reports far faster
-  /// than it should.
-  void setFlood(unsigned copies)
-  {
-    flood_ = copies < 1 ? 1 : copies;
-  }
+  /// leaves the stream out of step; in a datagram, noise.
+  void setEndless(bool endless) override;
   /// Refuse: every SET is answered FORBIDDEN.
   void setRefuse(bool refuse);
   /// Halted (SYSTEM_STATUS HALT, formats 1.1 and 1.2; a client's SET SYSTEM_STATUS does the same): the views stop
@@ -114,12 +107,8 @@ public:
   PtzSample view(const std::string& stream, std::uint8_t cam_id) const;
 
 private:
-  // Faults: no garbage mode; no slow replies (the device pushes its state).
-  bool faultSilence(bool on) override;
-  bool faultDrop(bool on) override;  ///< every TCP connection closed
-  bool faultEndless(bool on) override;
-  bool faultFlood(bool on) override;
-  bool faultModel(EmulatorFault fault, const SimFaults& faults) override;
+  bool faultDrop(bool on) override;                       ///< every TCP connection closed
+  void setModelFaults(const SimFaults& faults) override;  ///< every view's
 
   struct Subscription;
   struct Session;
@@ -141,9 +130,7 @@ private:
 
   const DigiViewEmulatorConfig config_;
 
-  std::atomic<bool> silent_{ false };
   std::atomic<bool> endless_{ false };
-  std::atomic<unsigned> flood_{ 1 };
   std::atomic<bool> refuse_{ false };
   std::atomic<bool> halted_{ false };
 

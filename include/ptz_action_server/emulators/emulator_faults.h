@@ -5,6 +5,7 @@
  */
 #pragma once
 
+#include <atomic>
 #include <mutex>
 
 #include "ptz_action_server/core/sim/sim_device_model.h"
@@ -79,6 +80,53 @@ protected:
 private:
   std::mutex mutex_;  ///< one switch at a time
   SimFaults model_faults_;
+};
+
+/**
+ * \brief The faults of an emulator that pushes its state (PanTilt, DigiView, the MAVLink gimbal), switched the same
+ * way on each: SILENCE, ENDLESS, FLOOD and IMPOSSIBLE (the reported pan of the model setModelFaults() names). No
+ * garbage mode and no slow replies: the device pushes its state, it has no request to answer late. An emulator with a
+ * DROP of its own overrides faultDrop().
+ */
+class PushEmulatorFaults : public EmulatorFaults
+{
+public:
+  /// Silent: reads and ignores everything, sends nothing.
+  virtual void setSilent(bool silent)
+  {
+    silent_ = silent;
+  }
+  /// Endless: replies that never end, at the rate of the real ones (each emulator says how). Off again, the device
+  /// answers as before.
+  virtual void setEndless(bool endless) = 0;
+  /// Flood: every state the device sends goes out \p copies times (1: normally), as a device that reports far faster
+  /// than it should.
+  void setFlood(unsigned copies)
+  {
+    flood_ = copies < 1 ? 1 : copies;
+  }
+
+protected:
+  bool silent() const
+  {
+    return silent_;
+  }
+  /// How many times each state goes out (setFlood()).
+  unsigned floodCopies() const
+  {
+    return flood_;
+  }
+  /// IMPOSSIBLE switched: \p faults for the model whose state the device reports.
+  virtual void setModelFaults(const SimFaults& faults) = 0;
+
+private:
+  bool faultSilence(bool on) override;
+  bool faultEndless(bool on) override;
+  bool faultFlood(bool on) override;
+  bool faultModel(EmulatorFault fault, const SimFaults& faults) override;
+
+  std::atomic<bool> silent_{ false };
+  std::atomic<unsigned> flood_{ 1 };
 };
 
 }  // namespace ptz_action_server

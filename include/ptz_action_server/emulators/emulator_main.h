@@ -15,7 +15,7 @@
 #include <memory>
 #include <string>
 
-#include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/ports/device_port.h"
 #include "ptz_action_server/emulators/http_camera_server.h"
 
 namespace emulator_main

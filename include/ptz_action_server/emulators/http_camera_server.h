@@ -21,7 +21,7 @@
 #include "ptz_action_server/core/transport/link.h"
 #include "ptz_action_server/core/types.h"
 #include "ptz_action_server/emulators/emulator_faults.h"
-#include "ptz_action_server/emulators/received_log.h"
+#include "ptz_action_server/emulators/ports/received_log.h"
 
 namespace ptz_action_server
 {

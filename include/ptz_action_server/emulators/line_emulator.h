@@ -13,9 +13,9 @@
 #include <string>
 
 #include "ptz_action_server/core/sim/sim_device_model.h"
-#include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/ports/device_port.h"
 #include "ptz_action_server/emulators/emulator_faults.h"
-#include "ptz_action_server/emulators/received_log.h"
+#include "ptz_action_server/emulators/ports/received_log.h"
 
 namespace ptz_action_server
 {

@@ -15,9 +15,9 @@
 #include "ptz_action_server/core/mavlink/mavlink_messages.h"
 #include "ptz_action_server/core/sim/sim_device_model.h"
 #include "ptz_action_server/core/transport/link.h"
-#include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/ports/device_port.h"
 #include "ptz_action_server/emulators/emulator_faults.h"
-#include "ptz_action_server/emulators/received_log.h"
+#include "ptz_action_server/emulators/ports/received_log.h"
 
 namespace ptz_action_server
 {
@@ -115,7 +115,7 @@ struct MavlinkGimbalEmulatorCounters
  * Every command gets a COMMAND_ACK from each component it addresses (UNSUPPORTED for those it does not model).
  * Owns its I/O thread. The gimbal index of the methods below is its place in the config's gimbals.
  */
-class MavlinkGimbalEmulator : public EmulatorFaults
+class MavlinkGimbalEmulator : public PushEmulatorFaults
 {
 public:
   /// Throws std::invalid_argument for gimbals the protocol cannot address (see MavlinkEmulatedGimbal).
@@ -131,17 +131,10 @@ public:
   /// serial: the pseudo-terminal (or its link).
   std::string path() const;
 
-  /// Silent: reads and ignores everything, sends nothing.
-  void setSilent(bool silent);
-  /// Endless: every reply's bytes are replaced by the filler 'A' (no frame starts or ends in it): a reply that never
-  /// ends, at the rate of the real ones. Off again, the device answers as before.
-  void setEndless(bool endless);
-  /// Flood: every state the device sends goes out \p copies times (1: normally), as a device that reports far faster
-  /// than it should.
-  void setFlood(unsigned copies)
-  {
-    flood_ = copies < 1 ? 1 : copies;
-  }
+  /// Silent: on UDP, datagrams go unread too (their sender does not become the peer).
+  void setSilent(bool silent) override;
+  /// Endless: every reply's bytes are replaced by the filler 'A' (no frame starts or ends in it).
+  void setEndless(bool endless) override;
   /// Refuse: DO_GIMBAL_MANAGER_CONFIGURE and DO_GIMBAL_MANAGER_PITCHYAW are DENIED.
   void setRefuse(bool refuse);
   /// Fault hooks of a gimbal's motion model: a stalled axis accepts every command and silently stays where it is.
@@ -174,11 +167,8 @@ public:
   }
 
 private:
-  // Faults: no drop (UDP has no connection), no garbage mode, no slow replies (the gimbal pushes its state).
-  bool faultSilence(bool on) override;
-  bool faultEndless(bool on) override;
-  bool faultFlood(bool on) override;
-  bool faultModel(EmulatorFault fault, const SimFaults& faults) override;  ///< of the first gimbal
+  // No DROP fault: UDP has no connection.
+  void setModelFaults(const SimFaults& faults) override;  ///< the first gimbal's
 
   struct Gimbal;
 
@@ -210,8 +200,6 @@ private:
   const MavlinkGimbalEmulatorConfig config_;
   const std::shared_ptr<const Clock> clock_;
 
-  std::atomic<bool> silent_{ false };
-  std::atomic<unsigned> flood_{ 1 };
   std::atomic<bool> refuse_{ false };
 
   mutable std::mutex mutex_;  ///< guards everything below up to the transports

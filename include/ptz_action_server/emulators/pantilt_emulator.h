@@ -21,10 +21,10 @@
 #include <vector>
 
 #include "ptz_action_server/core/framing/slip.h"
-#include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/ports/device_port.h"
 #include "ptz_action_server/emulators/emulator_faults.h"
 #include "ptz_action_server/emulators/sim_pantilt.h"
-#include "ptz_action_server/emulators/received_log.h"
+#include "ptz_action_server/emulators/ports/received_log.h"
 
 namespace ptz_action_server
 {
@@ -76,7 +76,7 @@ struct ReceivedDatagram
  * Fault switches (any thread): silent (receive and do nothing, send nothing: an unplugged device), a ratio of
  * replies dropped, and a reply delay.
  */
-class PanTiltEmulator : public EmulatorFaults
+class PanTiltEmulator : public PushEmulatorFaults
 {
 public:
   explicit PanTiltEmulator(const PanTiltEmulatorConfig& config,
@@ -95,16 +95,8 @@ public:
   void unplug();
   void replug();
 
-  void setSilent(bool silent);
-  /// Endless: every reply's bytes are replaced by the filler 'A' (no frame starts or ends in it): a reply that never
-  /// ends, at the rate of the real ones. Off again, the device answers as before.
-  void setEndless(bool endless);
-  /// Flood: every state the device sends goes out \p copies times (1: normally), as a device that reports far faster
-  /// than it should.
-  void setFlood(unsigned copies)
-  {
-    flood_ = copies < 1 ? 1 : copies;
-  }
+  /// Endless: every reply's bytes are replaced by the filler 'A' (no frame starts or ends in it).
+  void setEndless(bool endless) override;
   void setDropRatio(double ratio);
   void setReplyDelay(double seconds);
 
@@ -129,12 +121,8 @@ public:
   }
 
 private:
-  // Faults: no garbage mode; no slow replies (the device pushes its state).
-  bool faultSilence(bool on) override;
   bool faultDrop(bool on) override;  ///< half the replies lost
-  bool faultEndless(bool on) override;
-  bool faultFlood(bool on) override;
-  bool faultModel(EmulatorFault fault, const SimFaults& faults) override;
+  void setModelFaults(const SimFaults& faults) override;
 
   struct PendingReply
   {
@@ -152,8 +140,6 @@ private:
   const std::shared_ptr<const Clock> clock_;
   SimPanTilt pan_tilt_;
 
-  std::atomic<bool> silent_{ false };
-  std::atomic<unsigned> flood_{ 1 };
   std::atomic<double> drop_ratio_{ 0.0 };
   std::atomic<double> reply_delay_{ 0.0 };
 

@@ -8,7 +8,7 @@
 
 #include "../line_test_support.h"
 #include "device_fixtures_internal.h"
-#include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/ports/device_port.h"
 
 namespace ptz_action_server
 {

@@ -14,6 +14,7 @@
 
 #include "ptz_action_server/core/byte_order.h"
 #include "ptz_action_server/core/mavlink/mavlink_codec.h"
+#include "ptz_action_server/core/mavlink/mavlink_quaternion.h"
 
 namespace ptz_action_server
 {
@@ -249,9 +250,6 @@ struct GimbalManagerStatus
   }
 };
 
-/// A rotation, w first (MAVLink's order).
-using Quaternion = std::array<float, 4>;
-
 struct GimbalManagerSetAttitude
 {
   static constexpr std::uint32_t ID = message_id::GIMBAL_MANAGER_SET_ATTITUDE;
@@ -435,22 +433,6 @@ Message decode(const Frame& frame)
 {
   return unpack<Message>(frame.payload);
 }
-
-/// Pan (yaw, positive right) and tilt (pitch, positive up) of a gimbal attitude, rad.
-struct PanTilt
-{
-  double pan = 0.0;
-  double tilt = 0.0;
-};
-
-/// The attitude with roll 0, yaw \p pan and pitch \p tilt (FRD: yaw about z down, pitch about y right).
-Quaternion quaternionFromPanTilt(double pan, double tilt);
-/**
- * \brief Yaw and pitch of the camera's optical axis (body x) under \p q, from the axis itself rather than from
- * Euler angles, so they stay exact near pitch -90 degrees (a gimbal looking straight down); exactly there, the yaw
- * comes from the camera's right axis. The quaternion need not be normalised.
- */
-PanTilt panTiltFromQuaternion(const Quaternion& q);
 
 }  // namespace mavlink
 }  // namespace ptz_action_server

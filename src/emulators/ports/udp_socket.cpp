@@ -1,4 +1,4 @@
-#include "ptz_action_server/emulators/udp_socket.h"
+#include "ptz_action_server/emulators/ports/udp_socket.h"
 
 #include <arpa/inet.h>
 #include <fcntl.h>

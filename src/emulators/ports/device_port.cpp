@@ -1,4 +1,4 @@
-#include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/ports/device_port.h"
 
 #include <algorithm>
 

@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "ptz_action_server/emulators/device_port.h"
+#include "ptz_action_server/emulators/ports/device_port.h"
 
 namespace ptz_action_server
 {
