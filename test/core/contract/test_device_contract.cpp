@@ -373,13 +373,15 @@ TEST_P(DeviceContract, ASlowDeviceWorksWithinItsDeadlineAndPastItEndsTheGoalAsLi
     GTEST_SKIP() << "no reply deadline to test: the device pushes its state unasked (a slow one is a late report, "
                     "which the silence cases cover), or see the fixture's replyDeadline() (HTTP cameras)";
   }
-  // Every answer at 90 % of the deadline: slow, but in time. A goal succeeds.
+  // Every answer at 60 % of the deadline: slow (a device in good health answers in milliseconds), but in time. A goal
+  // succeeds. Not 90 %: an HTTPS camera's answers come one after another, so the link's news may be two answers
+  // apart, and a busy machine took the 10 % left (5 failures in 18 runs beside other test processes).
   SimFaults slow;
-  slow.reply_delay = 0.9 * deadline;
+  slow.reply_delay = 0.6 * deadline;
   ASSERT_TRUE(device_->setFaults(slow));
   const AxisValues near = device_->goal(0.3, 0.1);
-  // The stall timeout a user of a slow device sets: a poll round of several answers (Pelco-D, VISCA) at 90 % of a
-  // 0.1 s allowance each leaves 10 ms to the scheduler, and a busy machine sometimes takes them, losing a round.
+  // The stall timeout a user of a slow device sets: a poll round of several slow answers (Pelco-D, VISCA) leaves
+  // little to the scheduler, and a busy machine sometimes takes it, losing a round.
   const std::string end = runGoalToItsEnd(*backend_, near, 2.0 * stateTimeout());
   EXPECT_EQ(end.rfind("SUCCEEDED", 0), 0u) << end << "; last loss " << backend_->lastLinkLoss();
 
