@@ -9,6 +9,7 @@
 #include <ros/ros.h>
 #include <visualization_msgs/InteractiveMarkerFeedback.h>
 
+#include "../core/wait_until.h"
 #include "panel_test.h"
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/panel/panel_model.h"
@@ -21,14 +22,7 @@ TEST(AimMarker, ADragSendsAPositionGoalAndTheMarkerFollowsTheCamera)
   Observer observer;
   ros::NodeHandle node("/ptz");
   ros::Publisher feedback = node.advertise<visualization_msgs::InteractiveMarkerFeedback>("aim_marker/feedback", 10);
-  const auto until = [](const std::function<bool()>& done) {
-    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(WAIT);
-    while (!done() && ros::WallTime::now() < deadline)
-    {
-      ros::WallDuration(0.02).sleep();
-    }
-    return done();
-  };
+  const auto until = [](const std::function<bool()>& done) { return ptz_action_server::waitUntil(done, WAIT); };
   ASSERT_TRUE(until([&] { return feedback.getNumSubscribers() > 0; }));
   ASSERT_TRUE(until([&] {
     std::lock_guard<std::mutex> lock(observer.mutex);
