@@ -107,7 +107,7 @@ TEST(PoseHistory, AFullRingForgetsItsOldestSample)
   PoseHistory history(config(100.0, 0.2, 8));
   for (int step = 0; step < 20; ++step)
   {
-    history.add(at(step), { static_cast<double>(step), 0.0, 1.0 });
+    history.add(at(step), { 0.1 * step, 0.0, 1.0 });
   }
   EXPECT_EQ(history.size(), 8u);
   EXPECT_EQ(history.at(at(12.0)).oldest, at(12.0));
@@ -115,23 +115,23 @@ TEST(PoseHistory, AFullRingForgetsItsOldestSample)
   // Older than every sample of a full ring: nowhere to go.
   EXPECT_EQ(history.add(at(11.0), { 0.0, 0.0, 1.0 }), PoseHistory::Added::DROPPED);
   // A late sample in the middle takes the oldest's place.
-  EXPECT_EQ(history.add(at(15.5), { 30.0, 0.0, 1.0 }), PoseHistory::Added::KEPT);
+  EXPECT_EQ(history.add(at(15.5), { 3.0, 0.0, 1.0 }), PoseHistory::Added::KEPT);
   EXPECT_EQ(history.size(), 8u);
   EXPECT_EQ(history.at(at(15.0)).oldest, at(13.0));
-  expectPose(history.at(at(15.25)), 22.5, 0.0, 1.0);
+  expectPose(history.at(at(15.25)), 2.25, 0.0, 1.0);
 }
 
 TEST(PoseHistory, LateSamplesGoToTheirPlaceAndSameStampsMerge)
 {
   PoseHistory history;
   history.add(at(1.0), { 0.0, 0.0, 1.0 });
-  history.add(at(3.0), { 2.0, 0.0, 1.0 });
-  EXPECT_EQ(history.add(at(2.0), { 4.0, 0.0, 1.0 }), PoseHistory::Added::KEPT);  // late: between the two
-  expectPose(history.at(at(1.5)), 2.0, 0.0, 1.0);
-  expectPose(history.at(at(2.5)), 3.0, 0.0, 1.0);
+  history.add(at(3.0), { 1.0, 0.0, 1.0 });
+  EXPECT_EQ(history.add(at(2.0), { 1.5, 0.0, 1.0 }), PoseHistory::Added::KEPT);  // late: between the two
+  expectPose(history.at(at(1.5)), 0.75, 0.0, 1.0);
+  expectPose(history.at(at(2.5)), 1.25, 0.0, 1.0);
   // The renderer's exact pose at a stamp the state tick also took: the known axes of the later one win.
-  EXPECT_EQ(history.add(at(2.0), { 4.5, NOT_KNOWN, 2.0 }), PoseHistory::Added::MERGED);
-  expectPose(history.at(at(2.0)), 4.5, 0.0, 2.0);
+  EXPECT_EQ(history.add(at(2.0), { 1.8, NOT_KNOWN, 2.0 }), PoseHistory::Added::MERGED);
+  expectPose(history.at(at(2.0)), 1.8, 0.0, 2.0);
   EXPECT_EQ(history.size(), 3u);
 }
 
