@@ -60,7 +60,7 @@ struct PixelGoal
 /// Where to aim, or why not.
 struct PixelAim
 {
-  std::string error;  ///< "" on success; else why not, for the goal's rejection (nothing else is set)
+  std::string error;  ///< "" on success; else why not, for the goal's rejection (the rest means nothing)
   double pan = 0.0;   ///< rad, contract: the pixel's direction on the optical axis
   double tilt = 0.0;  ///< rad
   /// X, within the limits' zoom range: a box's zoom. NaN: leave the zoom alone (centre only, or a zoom the device
