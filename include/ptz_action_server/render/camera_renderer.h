@@ -64,7 +64,8 @@ struct RenderSettings
  * camera's offset from the pan axis counts), farther ones drawn first.
  *
  * Not thread-safe (one renderer per thread). The buffers are reused from one call to the next: rendering allocates
- * nothing of its own once the image size stays (OpenCV's text and ellipse drawing keep small buffers of their own).
+ * nothing of its own once the image size stays (OpenCV's resize, text and ellipse drawing take small temporary
+ * buffers of their own).
  */
 class CameraRenderer
 {
