@@ -324,10 +324,9 @@ template <class Action>
 void PtzActionServer::submit(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
 {
   const auto goal = handle.getGoal();
-  supervisor_->submit(std::make_unique<GoalHandleAdapter<Action>>(handle, kind, statusPoster()),
-                      [&](const PtzSample& current, GoalCommand& command) {
-                        return translator_->convert(*goal, kind, current, command);
-                      });
+  const PtzSample current = backend_->sample();
+  supervisor_->submit(std::make_unique<GoalHandleAdapter<Action>>(handle, kind, statusPoster()), current,
+                      translator_->convert(*goal, kind, current));
   if constexpr (std::is_same_v<Action, PtzFrameAction>)
   {
     const std::string& id = handle.getGoalID().id;
@@ -353,9 +352,9 @@ void PtzActionServer::lookAt(const geometry_msgs::PointStamped& point)
   frame_hold_->supersede(ActionKind::CLICKED_POINT);
   const std::string id = std::string(ClickedPointGoal::ACTION) + "_" + std::to_string(++clicked_points_);
   const auto submit_point = [this, point, id] {
-    supervisor_->submit(
-        std::make_unique<ClickedPointGoal>(id, describePoint(point)),
-        [&](const PtzSample& current, GoalCommand& command) { return translator_->convert(point, current, command); });
+    const PtzSample current = backend_->sample();
+    supervisor_->submit(std::make_unique<ClickedPointGoal>(id, describePoint(point)), current,
+                        translator_->convert(point, current));
   };
   if (frame_hold_->mustWait(point.header.frame_id))
   {

@@ -80,8 +80,9 @@ class StatePublisher;
  * \brief The ptz_action_server node around one backend.
  *
  * It wires ROS to the core: a goal goes from its action callback (through the FrameGoalHold if it must wait for tf)
- * to the GoalSupervisor, which converts it with the GoalTranslator, checks it and commands the backend; the goal
- * handle's status changes go through the StatusHold. The StatePublisher runs the 10 Hz state tick.
+ * to the GoalTranslator, which converts it into a command against the device's current state, and then to the
+ * GoalSupervisor, which checks it and commands the backend; the goal handle's status changes go through the
+ * StatusHold. The StatePublisher runs the 10 Hz state tick.
  *
  * Threads: the node handle's queue (the main thread) runs every action callback and the supervisor; the state tick
  * runs on the process's TimerThread and hands each sample to the main thread for the goal's feedback and verdict.
@@ -143,7 +144,7 @@ private:
   void onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   template <class Action>
   void onCancel(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
-  /// Hands a goal to the supervisor, which converts, checks and runs it.
+  /// Converts a goal against the device's current state and hands it to the supervisor, which checks and runs it.
   template <class Action>
   void submit(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   /// Aims the optical axis at a clicked point, as a frame goal aims it at a frame's origin: it waits for tf the same
