@@ -1,6 +1,8 @@
+#include "ptz_action_server/ros/node_config.h"
+
 #include <algorithm>
 
-#include "ptz_action_server/ros/ptz_action_server.h"
+#include "ptz_action_server/ros/action_kind.h"
 
 namespace ptz_action_server
 {
