@@ -5,6 +5,7 @@
  */
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -35,6 +36,22 @@ public:
   /// \p frames and \p presets must outlive the translator. \p limits are the node's.
   GoalTranslator(const PtzKinematics& kinematics, const Capabilities& limits, const FrameListener& frames,
                  const PresetServices& presets);
+
+  /// The tf frame a goal is expressed in, which it may have to wait for (FrameGoalHold); none for a goal without
+  /// one.
+  template <class Goal>
+  static std::optional<std::string> frameOf(const Goal&)
+  {
+    return std::nullopt;
+  }
+  static std::optional<std::string> frameOf(const PtzRelToGoal& goal)
+  {
+    return goal.frame_id;
+  }
+  static std::optional<std::string> frameOf(const PtzFrameGoal& goal)
+  {
+    return goal.frame_id;
+  }
 
   /// Each returns the goal's command, or the reason to reject it; \p current is the device's state.
   ConvertedGoal convert(const PtzGoal& goal, ActionKind kind, const PtzSample& current) const;

@@ -5,46 +5,33 @@
 #pragma once
 
 #include <atomic>
-#include <functional>
+#include <cstdint>
 #include <memory>
 #include <mutex>
-#include <optional>
-#include <string>
 
+#include <actionlib/server/action_server.h>
+#include <geometry_msgs/PointStamped.h>
 #include <ros/ros.h>
 
-#include "ptz_action_server/PtzAction.h"
-#include "ptz_action_server/PtzFrameAction.h"
-#include "ptz_action_server/PtzPresetAction.h"
-#include "ptz_action_server/PtzRelToAction.h"
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/goal/goal_supervisor.h"
-#include "ptz_action_server/core/motion/kinematics.h"
-#include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/core/goal/status_hold.h"
+#include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/ros/action_kind.h"
+#include "ptz_action_server/ros/action_servers.h"
 #include "ptz_action_server/ros/frame_goal_hold.h"
 #include "ptz_action_server/ros/frame_listener.h"
 #include "ptz_action_server/ros/frame_tracking.h"
+#include "ptz_action_server/ros/goal_handle_adapter.h"
 #include "ptz_action_server/ros/goal_translator.h"
 #include "ptz_action_server/ros/look_at_clicked_point.h"
 #include "ptz_action_server/ros/node_config.h"
-#include "ptz_action_server/ros/node_action_server.h"
-#include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/preset_services.h"
 #include "ptz_action_server/ros/queue_timer.h"
 #include "ptz_action_server/ros/tick_costs.h"
-#include "ptz_action_server/ros/view_config.h"
 
 namespace ptz_action_server
 {
-/// Runs a goal status change now or later (see StatusHold), and says whether changes are being held.
-struct StatusPoster
-{
-  std::function<void(StatusHold::Change)> post;
-  std::function<bool()> holding;
-};
-
 class StatePublisher;
 
 /**
@@ -53,7 +40,8 @@ class StatePublisher;
  * It wires ROS to the core: a goal goes from its action callback (through the FrameGoalHold if it must wait for tf)
  * to the GoalTranslator, which converts it into a command against the device's current state, and then to the
  * GoalSupervisor, which checks it and commands the backend; the goal handle's status changes go through the
- * StatusHold. The StatePublisher runs the 10 Hz state tick.
+ * StatusHold. ActionServers holds the action servers (one row each in NODE_ACTIONS); the StatePublisher runs the
+ * 10 Hz state tick.
  *
  * Threads: the node handle's queue (the main thread) runs every action callback and the supervisor; the state tick
  * runs on the process's TimerThread and hands each sample to the main thread for the goal's feedback and verdict.
@@ -86,25 +74,6 @@ public:
   }
 
 private:
-  using PtzServer = NodeActionServer<PtzAction>;
-  using PtzRelToServer = NodeActionServer<PtzRelToAction>;
-  using PtzFrameServer = NodeActionServer<PtzFrameAction>;
-  using PtzPresetServer = NodeActionServer<PtzPresetAction>;
-
-  /// The action server of \p kind, not started, with the node's queue sizes and status_list_timeout.
-  template <class Action>
-  std::unique_ptr<NodeActionServer<Action>> makeServer(ActionKind kind);
-  /// Starts the action servers without a status timer each: publishStatuses() publishes their status lists.
-  void startServers();
-  /// On the state thread, every tick: publishes the listened servers' status lists at actionlib_status_frequency;
-  /// returns how many it published.
-  int publishStatuses();
-  /// Runs \p changes (goal status changes, on the main thread) with each server's transitions making one status list,
-  /// published when they are done.
-  void batchStatuses(const std::function<void()>& changes);
-  /// Calls \p call with each action server built so far.
-  template <class Call>
-  void forEachServer(Call&& call);
   template <class Action>
   void onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   template <class Action>
@@ -149,9 +118,6 @@ private:
   };
   std::shared_ptr<ListenerTarget> listener_target_;
   std::atomic<bool> verdict_check_queued_{ false };  ///< an early verdict check waits on the main queue
-  std::atomic<bool> servers_started_{ false };       ///< the action servers are started: their status may go out
-  int status_period_ticks_ = 0;                      ///< state ticks between status lists; 0: none (set before start)
-  int status_ticks_ = 0;                             ///< state ticks so far (state thread)
   TickCosts* tick_costs_ = nullptr;                  ///< the benchmark's, or null
 
   // Frame lookups for position_abs_tf and frame goals; the listener feeds the buffer from the main queue.
@@ -159,15 +125,9 @@ private:
   std::unique_ptr<FrameGoalHold> frame_hold_;   ///< a frame goal waiting for tf; built by start()
   std::unique_ptr<GoalTranslator> translator_;  ///< goals to commands; built by start()
 
-  std::unique_ptr<PtzServer> position_abs_server_;
-  std::unique_ptr<PtzServer> position_rel_server_;
-  std::unique_ptr<PtzServer> velocity_server_;
-  std::unique_ptr<PtzRelToServer> position_abs_tf_server_;
-  std::unique_ptr<PtzFrameServer> frame_server_;
-  std::unique_ptr<PtzFrameServer> track_frame_server_;
-  std::unique_ptr<FrameTracking> frame_tracking_;  ///< steers track_frame goals; built by start()
-  std::unique_ptr<PresetServices> presets_;        ///< the preset services and lookups; built by start()
-  std::unique_ptr<PtzPresetServer> preset_server_;
+  ActionServers servers_;                                      ///< one per action; started by start()
+  std::unique_ptr<FrameTracking> frame_tracking_;              ///< steers track_frame goals; built by start()
+  std::unique_ptr<PresetServices> presets_;                    ///< the preset services and lookups; built by start()
   std::unique_ptr<LookAtClickedPoint> look_at_clicked_point_;  ///< the switch; built by start()
   std::uint64_t clicked_points_ = 0;                           ///< clicked points so far, for their ids
 };
