@@ -90,7 +90,7 @@ AxisCameraEmulatorConfig fieldCamera(const std::string& model)
 }
 
 /// A goal the node's supervisor runs on \p backend (validation, the axes it judges, its monitor), to its end.
-std::string runGoal(const std::shared_ptr<PtzBackend>& backend, const GoalConverter& goal)
+std::string runGoal(const std::shared_ptr<PtzBackend>& backend, const goal_supervisor_test::GoalConverter& goal)
 {
   GoalMonitorConfig config;
   config.stall_timeout = 2.0;
