@@ -21,16 +21,6 @@ constexpr double ZOOM_FACTOR_MAX = 100000.0;
 constexpr double ZOOM_FACTOR_MIN_STEP = 1e-5;  ///< relative, between two points of the table
 constexpr std::size_t MAX_POINTS = 1000;       ///< of a zoom table, and of the lists read from a camera
 
-std::string trimmed(const std::string& text)
-{
-  const std::size_t first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos)
-  {
-    return {};
-  }
-  return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
-}
-
 bool validKey(const std::string& key)
 {
   return !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
