@@ -154,14 +154,7 @@ Credentials makeCredentials(const std::string& host)
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
   check(X509_digest(cert, EVP_sha256(), digest, &length) == 1, "digest");
-  static const char* const HEX = "0123456789abcdef";
-  std::string hex;
-  for (unsigned int i = 0; i < length; ++i)
-  {
-    hex += HEX[digest[i] >> 4];
-    hex += HEX[digest[i] & 0x0f];
-  }
-  credentials.fingerprint = formatCertificateFingerprint(hex);
+  credentials.fingerprint = formatCertificateFingerprint(hexDigits(digest, length));
   return credentials;
 }
 }  // namespace
@@ -407,10 +400,7 @@ HttpCameraServer::~HttpCameraServer()
 {
   socket_server_->stop([this] {
     listener_->close();
-    while (!connections_.empty())
-    {
-      (*connections_.begin())->close();
-    }
+    closeConnections();
   });
 }
 
@@ -448,10 +438,7 @@ void HttpCameraServer::renewCertificate()
 {
   socket_server_->run([this] {
     makeCertificate();
-    while (!connections_.empty())
-    {
-      (*connections_.begin())->close();
-    }
+    closeConnections();
   });
 }
 
@@ -509,12 +496,15 @@ void HttpCameraServer::setErrorStatus(unsigned status)
 
 void HttpCameraServer::dropConnections()
 {
-  socket_server_->run([this] {
-    while (!connections_.empty())
-    {
-      (*connections_.begin())->close();
-    }
-  });
+  socket_server_->run([this] { closeConnections(); });
+}
+
+void HttpCameraServer::closeConnections()
+{
+  while (!connections_.empty())
+  {
+    (*connections_.begin())->close();  // it leaves connections_
+  }
 }
 
 void HttpCameraServer::setListening(bool listening)

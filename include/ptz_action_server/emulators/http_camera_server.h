@@ -159,6 +159,8 @@ private:
   friend class Connection;
 
   void accept();
+  /// Closes every open connection (server thread).
+  void closeConnections();
   /// The answer to one request; \p challenge set for a 401.
   HttpAnswer answer(const std::string& method, const std::string& target, const std::string& body,
                     const std::string& authorization, std::string& challenge);
