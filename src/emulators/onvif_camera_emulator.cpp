@@ -233,7 +233,7 @@ bool OnvifCameraEmulatorConfig::applyMode(const std::string& mode)
 }
 
 OnvifCameraEmulator::OnvifCameraEmulator(const OnvifCameraEmulatorConfig& config, std::shared_ptr<const Clock> clock)
-  : config_(config), clock_(std::move(clock)), model_(modelOf(config), clock_->now())
+  : HttpCameraEmulator(modelOf(config), std::move(clock)), config_(config)
 {
   approach_.fill(std::numeric_limits<double>::quiet_NaN());
   home_ = { { config.device.axes[PAN].initial_position, config.device.axes[TILT].initial_position,
@@ -244,29 +244,6 @@ OnvifCameraEmulator::OnvifCameraEmulator(const OnvifCameraEmulatorConfig& config
 }
 
 OnvifCameraEmulator::~OnvifCameraEmulator() = default;
-
-PtzSample OnvifCameraEmulator::sample() const
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  const TimePoint now = clock_->now();
-  advance(now);
-  return model_.sample(now);
-}
-
-void OnvifCameraEmulator::setRefuse(bool refuse)
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  refuse_ = refuse;
-}
-
-void OnvifCameraEmulator::setFaults(const SimFaults& faults)
-{
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    model_.setFaults(faults, clock_->now());
-  }
-  server_->setDelay(faults.reply_delay);  // a slow camera: every answer waits
-}
 
 std::uint64_t OnvifCameraEmulator::refusedTokens() const
 {

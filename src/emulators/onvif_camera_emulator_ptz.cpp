@@ -236,7 +236,7 @@ HttpAnswer OnvifCameraEmulator::ptz(const std::string& operation, const SoapMess
   }
   const bool moves = operation == "AbsoluteMove" || operation == "ContinuousMove" || operation == "RelativeMove" ||
                      operation == "GotoPreset" || operation == "GotoHomePosition";
-  if (moves && refuse_)
+  if (moves && refusing())
   {
     return fault(true, { "ter:InvalidArgVal" }, OnvifCameraEmulator::REFUSAL);
   }
