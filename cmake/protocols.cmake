@@ -111,7 +111,7 @@ ptz_protocol(onvif
     test/core/test_onvif_emulator.cpp test/core/test_onvif_emulator_modes.cpp test/core/test_onvif_motion_check.cpp
     test/core/test_onvif_protocol.cpp test/core/test_onvif_field_modes.cpp test/core/contract/onvif_fixtures.cpp
   FUZZ soap_reply src/core/onvif/onvif_codec.cpp src/core/onvif/onvif_requests.cpp src/core/onvif/onvif_ws_security.cpp
-    src/core/onvif/onvif_xml.cpp src/core/axis/vapix_codec.cpp src/core/http/crypto.cpp src/core/types.cpp
+    src/core/onvif/onvif_xml.cpp src/core/http/crypto.cpp src/core/types.cpp
   FUZZ_LIBS tinyxml2::tinyxml2 OpenSSL::Crypto
   ROSTESTS test/ros/onvif_node.test test/ros/onvif_field_node.test test/ros/onvif_continuous_node.test
     test/ros/onvif_no_position_node.test test/ros/onvif_cheap_cameras_node.test
