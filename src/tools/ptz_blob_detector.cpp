@@ -12,7 +12,9 @@
 //   id ("blob"): every detection's id.
 // Each detection: the blob's centroid (u, v), its bounding box's size, and its area over the largest blob's as score.
 // See doc/tracking-detections.md.
+#include <algorithm>
 #include <cstdint>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -35,7 +37,25 @@ using ptz_action_server::ChannelOrder;
 using ptz_action_server::ConfigError;
 using ptz_action_server::ParamReader;
 
-/// A list of three numbers, each in [\p min, \p max]; false if \p name is not set.
+/// Three numbers from \p text ("300, 0.5, 0.5" or "[300, 0.5, 0.5]": rosrun's _name:=value gives a C++ node a
+/// string, not a list); false unless there are exactly three.
+bool parseTriple(std::string text, double (&values)[3])
+{
+  std::replace_if(
+      text.begin(), text.end(), [](char c) { return c == '[' || c == ']' || c == ','; }, ' ');
+  std::istringstream numbers(text);
+  for (double& value : values)
+  {
+    if (!(numbers >> value))
+    {
+      return false;
+    }
+  }
+  std::string rest;
+  return !(numbers >> rest);
+}
+
+/// A list of three numbers (or a string of them), each in [\p min, \p max]; false if \p name is not set.
 bool readTriple(const ParamReader& params, const std::string& name, double min, double max, double (&values)[3])
 {
   XmlRpc::XmlRpcValue list;
@@ -43,29 +63,29 @@ bool readTriple(const ParamReader& params, const std::string& name, double min, 
   {
     return false;
   }
-  if (list.getType() != XmlRpc::XmlRpcValue::TypeArray || list.size() != 3)
+  const ConfigError wrong(params.resolve(name) + " must be a list of three numbers");
+  const bool text = list.getType() == XmlRpc::XmlRpcValue::TypeString;
+  if (text ? !parseTriple(static_cast<std::string>(list), values) :
+             list.getType() != XmlRpc::XmlRpcValue::TypeArray || list.size() != 3)
   {
-    throw ConfigError(params.resolve(name) + " must be a list of three numbers");
+    throw wrong;
   }
-  for (int index = 0; index < 3; ++index)
+  for (int index = 0; index < 3 && !text; ++index)
   {
     XmlRpc::XmlRpcValue& item = list[index];
-    if (item.getType() == XmlRpc::XmlRpcValue::TypeInt)
+    if (item.getType() != XmlRpc::XmlRpcValue::TypeInt && item.getType() != XmlRpc::XmlRpcValue::TypeDouble)
     {
-      values[index] = static_cast<int>(item);
+      throw wrong;
     }
-    else if (item.getType() == XmlRpc::XmlRpcValue::TypeDouble)
+    values[index] = item.getType() == XmlRpc::XmlRpcValue::TypeInt ? static_cast<int>(item) : static_cast<double>(item);
+  }
+  for (const double value : values)
+  {
+    if (!(value >= min && value <= max))
     {
-      values[index] = static_cast<double>(item);
-    }
-    else
-    {
-      throw ConfigError(params.resolve(name) + " must be a list of three numbers");
-    }
-    if (!(values[index] >= min && values[index] <= max))
-    {
-      throw ConfigError(params.resolve(name) + " must hold numbers in [" + std::to_string(min) + ", " +
-                        std::to_string(max) + "]");
+      std::ostringstream problem;
+      problem << params.resolve(name) << " must hold numbers in [" << min << ", " << max << "], not " << value;
+      throw ConfigError(problem.str());
     }
   }
   return true;

@@ -85,11 +85,10 @@ public:
     message_.header.frame_id = parent_;
     message_.child_frame_id = frame_;
     message_.transform.rotation.w = 1.0;
-    const std::string leaving = visible_for_ > 0.0 ? ", leaving after " + std::to_string(visible_for_) + " s" : "";
     ROS_INFO("ptz_moving_target: %s in %s, path %s at %g rad/s around azimuth %g rad (amplitude %g rad), "
-             "elevation %g rad, %g m away%s",
+             "elevation %g rad, %g m away, visible for %g s (0: for ever)",
              frame_.c_str(), parent_.c_str(), path_.path.c_str(), path_.angular_speed, path_.centre, path_.amplitude,
-             path_.elevation, path_.distance, leaving.c_str());
+             path_.elevation, path_.distance, visible_for_);
     timer_ = node.createTimer(ros::Duration(1.0 / rate), &MovingTarget::publish, this);
   }
 
