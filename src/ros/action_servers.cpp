@@ -19,7 +19,7 @@ constexpr bool rowsInKindOrder()
   return in_order;
 }
 static_assert(rowsInKindOrder(), "NODE_ACTIONS lists the actions in the order of ActionKind");
-// Every kind but the clicked point is an action with its row.
+// Every kind but the clicked point and the image click is an action with its row.
 static_assert(static_cast<std::size_t>(ActionKind::CLICKED_POINT) == NODE_ACTION_COUNT, "a row per action");
 }  // namespace action_servers
 
@@ -28,7 +28,13 @@ const char* actionName(ActionKind kind)
   static constexpr std::array<const char*, NODE_ACTION_COUNT> NAMES = std::apply(
       [](const auto&... row) { return std::array<const char*, NODE_ACTION_COUNT>{ row.name... }; }, NODE_ACTIONS);
   const auto index = static_cast<std::size_t>(kind);
-  return index < NAMES.size() ? NAMES[index] : kind == ActionKind::CLICKED_POINT ? "look_at_clicked_point" : "?";
+  if (index < NAMES.size())
+  {
+    return NAMES[index];
+  }
+  return kind == ActionKind::CLICKED_POINT ? "look_at_clicked_point" :
+         kind == ActionKind::IMAGE_CLICK   ? "image_click" :
+                                             "?";
 }
 
 ActionServers::ActionServers(const ros::NodeHandle& node_handle, int queue_size, double status_list_timeout)

@@ -39,9 +39,33 @@ void FieldOfViewPublisher::onCameraInfo(const sensor_msgs::CameraInfo::ConstPtr&
 {
   // The zoom now, not the one of the last tick: sample() only reads the backend's snapshot.
   const double zoom = backend_->sample().position[ZOOM];
+  {
+    std::lock_guard<std::mutex> lock(calibration_mutex_);
+    if (info->K[0] > 0.0 && info->K[4] > 0.0 && info->width > 0 && info->height > 0)
+    {
+      PinholeIntrinsics intrinsics;
+      intrinsics.width = static_cast<int>(info->width);
+      intrinsics.height = static_cast<int>(info->height);
+      intrinsics.fx = info->K[0];
+      intrinsics.fy = info->K[4];
+      intrinsics.cx = info->K[2];
+      intrinsics.cy = info->K[5];
+      calibration_ = CalibratedIntrinsics{ intrinsics, settings_.camera_info_zoom };
+    }
+    else
+    {
+      calibration_.reset();
+    }
+  }
   camera_info_message_ = *info;  // assigning into the kept message reuses its strings' and D's storage
   rescale(camera_info_message_, model_.focalScale(settings_.camera_info_zoom, zoom));
   camera_info_publisher_.publish(camera_info_message_);
+}
+
+std::optional<CalibratedIntrinsics> FieldOfViewPublisher::calibration() const
+{
+  std::lock_guard<std::mutex> lock(calibration_mutex_);
+  return calibration_;
 }
 
 void FieldOfViewPublisher::rescale(sensor_msgs::CameraInfo& info, const FocalScale& scale)

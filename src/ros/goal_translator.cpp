@@ -1,5 +1,8 @@
 #include "ptz_action_server/ros/goal_translator.h"
 
+#include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <optional>
 
 #include <tf2/exceptions.h>
@@ -12,8 +15,8 @@
 namespace ptz_action_server
 {
 GoalTranslator::GoalTranslator(const PtzKinematics& kinematics, const Capabilities& limits, const FrameListener& frames,
-                               const PresetServices& presets)
-  : kinematics_(kinematics), limits_(limits), frames_(frames), presets_(presets)
+                               const PresetServices& presets, const PixelGoals& pixels)
+  : kinematics_(kinematics), limits_(limits), frames_(frames), presets_(presets), pixels_(pixels)
 {
 }
 
@@ -127,6 +130,28 @@ ConvertedGoal GoalTranslator::convert(const PtzPresetGoal& goal, ActionKind, con
   ConvertedGoal converted;
   converted.command.values = *pose;
   return converted;
+}
+
+ConvertedGoal GoalTranslator::convert(const PtzPixelGoal& goal, ActionKind, const PtzSample& current) const
+{
+  PixelGoal pixel;
+  pixel.u = goal.u;
+  pixel.v = goal.v;
+  pixel.box_width = goal.box_width;
+  pixel.box_height = goal.box_height;
+  pixel.image_width = static_cast<int>(std::min<std::uint32_t>(goal.image_width, 1U << 30));
+  pixel.image_height = static_cast<int>(std::min<std::uint32_t>(goal.image_height, 1U << 30));
+  pixel.distance = goal.distance;
+  return pixels_.convert(pixel, goal.image_header.stamp, current);
+}
+
+void GoalTranslator::fillResult(PtzPixelResult& result, const ConvertedGoal& converted)
+{
+  const AxisValues& aim = converted.command.values;
+  const bool aimed = converted.rejection.empty();
+  result.pan = aimed ? static_cast<float>(aim[PAN]) : std::numeric_limits<float>::quiet_NaN();
+  result.tilt = aimed ? static_cast<float>(aim[TILT]) : std::numeric_limits<float>::quiet_NaN();
+  result.zoom = aimed ? static_cast<float>(aim[ZOOM]) : std::numeric_limits<float>::quiet_NaN();
 }
 
 ConvertedGoal GoalTranslator::convert(const geometry_msgs::PointStamped& point, const PtzSample& current) const

@@ -1,5 +1,6 @@
 #include "ptz_action_server/ros/ptz_action_server.h"
 
+#include <chrono>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -15,6 +16,12 @@
 
 namespace ptz_action_server
 {
+namespace
+{
+/// A device's own reports go into the pose history at most this often (200 Hz keeps the history's 10 s window).
+constexpr std::chrono::milliseconds REPORT_SPACING(5);
+}  // namespace
+
 PtzActionServer::PtzActionServer(const ros::NodeHandle& node_handle, const NodeConfig& config,
                                  const PtzKinematics& kinematics, std::shared_ptr<PtzBackend> backend)
   : node_handle_(node_handle)
@@ -72,6 +79,7 @@ void PtzActionServer::start()
   limits_ = intersection.limits;
   capabilities_publisher_ = node_handle_.advertise<PtzCapabilities>("capabilities", 1, true);
   capabilities_publisher_.publish(toMessage(backend_->name(), limits_));
+  poses_ = std::make_shared<PoseRecorder>(limits_);
   supervisor_ = std::make_unique<GoalSupervisor>(backend_, limits_, config_.monitor, config_.clamp_goals);
   supervising_ = true;
 
@@ -88,13 +96,24 @@ void PtzActionServer::start()
     state_publisher_->addFieldOfView(config_.field_of_view);
   }
   state_publisher_->setTickHook([this] { return servers_.publishStatuses(); });
+  state_publisher_->setPoseRecorder(poses_.get());
   state_publisher_->setTickCosts(tick_costs_);
   state_publisher_->start();
 
   presets_ = std::make_unique<PresetServices>(node_handle_, config_.presets, limits_, backend_);
   frame_listener_ = std::make_unique<FrameListener>(node_handle_, config_.frame_listen_time, config_.frame_wait);
   frame_hold_ = std::make_unique<FrameGoalHold>(node_handle_, *frame_listener_, kinematics_.baseFrame());
-  translator_ = std::make_unique<GoalTranslator>(kinematics_, limits_, *frame_listener_, *presets_);
+  PixelGoals::CalibrationSource calibration;
+  if (!config_.field_of_view.camera_info_topic.empty())
+  {
+    calibration = [this]() -> std::optional<CalibratedIntrinsics> {
+      const FieldOfViewPublisher* view = state_publisher_ ? state_publisher_->fieldOfView() : nullptr;
+      return view ? view->calibration() : std::nullopt;
+    };
+  }
+  pixel_goals_ = std::make_unique<PixelGoals>(kinematics_, limits_, *poses_, config_.pixel, calibration,
+                                              node_handle_.resolveName(config_.field_of_view.camera_info_topic));
+  translator_ = std::make_unique<GoalTranslator>(kinematics_, limits_, *frame_listener_, *presets_, *pixel_goals_);
   frame_tracking_ = std::make_unique<FrameTracking>(node_handle_, kinematics_, limits_, config_.track, *supervisor_,
                                                     *frame_listener_, *backend_);
 
@@ -102,6 +121,13 @@ void PtzActionServer::start()
                  [this](auto handle, ActionKind kind) { onCancel(handle, kind); });
   look_at_clicked_point_ = std::make_unique<LookAtClickedPoint>(
       node_handle_, config_.look_at_clicked_point, [this](const geometry_msgs::PointStamped& point) { lookAt(point); });
+  if (!config_.pixel.image_topic.empty())
+  {
+    const std::string image_topic = node_handle_.resolveName(config_.pixel.image_topic);
+    image_clicks_ = std::make_unique<ImageClicks>(
+        node_handle_, image_topic, image_topic == local_image_topic_ ? local_images_ : nullptr,
+        [this](const ros::Time& stamp, const PixelGoal& goal) { centrePixel(stamp, goal); });
+  }
   ROS_INFO("ptz_action_server ready with backend '%s': pan %s; tilt %s; zoom %s; device extras: %s",
            backend_->name().c_str(), describeAxis(limits_, PAN).c_str(), describeAxis(limits_, TILT).c_str(),
            describeAxis(limits_, ZOOM).c_str(), describeExtras(limits_).c_str());
@@ -135,8 +161,14 @@ void PtzActionServer::releaseHeldStatuses()
 
 void PtzActionServer::onBackendSample()
 {
+  if (!supervising_)
+  {
+    return;
+  }
+  const PtzSample sample = backend_->sample();
+  poses_->record(rosStampOf(sample.stamp, clock_), sample, REPORT_SPACING);
   // Only the final verdict matters between ticks; one queued check covers every report that comes before it runs.
-  if (!supervising_ || !supervisor_->goalActive() || verdict_check_queued_.exchange(true))
+  if (!supervisor_->goalActive() || verdict_check_queued_.exchange(true))
   {
     return;
   }
@@ -174,8 +206,11 @@ void PtzActionServer::submit(actionlib::ServerGoalHandle<Action> handle, ActionK
 {
   const auto goal = handle.getGoal();
   const PtzSample current = backend_->sample();
-  supervisor_->submit(std::make_unique<GoalHandleAdapter<Action>>(handle, kind, statusPoster()), current,
-                      translator_->convert(*goal, kind, current));
+  const ConvertedGoal converted = translator_->convert(*goal, kind, current);
+  typename GoalHandleAdapter<Action>::Result result;
+  GoalTranslator::fillResult(result, converted);
+  supervisor_->submit(std::make_unique<GoalHandleAdapter<Action>>(handle, kind, statusPoster(), result), current,
+                      converted);
   if constexpr (std::is_same_v<Action, PtzFrameAction>)
   {
     const std::string& id = handle.getGoalID().id;
@@ -216,6 +251,16 @@ void PtzActionServer::lookAt(const geometry_msgs::PointStamped& point)
     return;
   }
   submit_point();
+}
+
+void PtzActionServer::centrePixel(const ros::Time& stamp, const PixelGoal& goal)
+{
+  // No status hold: a click has no actionlib client that could miss its status.
+  frame_hold_->supersede(ActionKind::IMAGE_CLICK);
+  const std::string id = std::string(ImageClickGoal::ACTION) + "_" + std::to_string(++image_clicks_count_);
+  const PtzSample current = backend_->sample();
+  supervisor_->submit(std::make_unique<ImageClickGoal>(id, describePixel(goal, stamp)), current,
+                      pixel_goals_->convert(goal, stamp, current));
 }
 
 }  // namespace ptz_action_server

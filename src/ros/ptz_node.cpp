@@ -22,7 +22,7 @@ void PtzNode::start(const ros::NodeHandle& node_handle, const ros::NodeHandle& p
                     const BackendWrapper& wrap)
 {
   const ParamReader params(private_handle);
-  const NodeConfig config = NodeConfig::load(params);
+  NodeConfig config = NodeConfig::load(params);
   std::string urdf;
   if (!node_handle.getParam("robot_description", urdf))
   {
@@ -35,6 +35,19 @@ void PtzNode::start(const ros::NodeHandle& node_handle, const ros::NodeHandle& p
   const std::string backend_name = config.backend.substr(config.backend.rfind('/') + 1);
   const SimCameraSettings camera =
       SimCameraSettings::load(params.child("camera"), backend_name == "sim", kinematics, config.field_of_view.model);
+  // Pixel goals on the simulated camera's picture use its lens (the field of view, or its default); clicks on it
+  // centre by default.
+  std::shared_ptr<LatestImage> images;
+  const std::string image_topic = node_handle.resolveName("image_raw");
+  if (camera.enabled)
+  {
+    config.pixel.lens = camera.lens;
+    if (!config.pixel.image_topic_set)
+    {
+      config.pixel.image_topic = image_topic;
+    }
+    images = std::make_shared<LatestImage>();
+  }
   // Position goals on a device that only moves at a speed are steered on its state, in the device's own angles; the
   // mount maps those to the contract's, under everything else (goals, limits, state, tf).
   backend_ = applyMount(
@@ -46,10 +59,12 @@ void PtzNode::start(const ros::NodeHandle& node_handle, const ros::NodeHandle& p
   }
   server_ = std::make_unique<PtzActionServer>(node_handle, config, kinematics, backend_);
   server_->setTickCosts(tick_costs_);
+  server_->setLocalImages(images, image_topic);
   server_->start();
   if (camera.enabled)
   {
-    camera_ = std::make_unique<SimCameraPublisher>(node_handle, camera, kinematics, backend_);
+    camera_ = std::make_unique<SimCameraPublisher>(node_handle, camera, kinematics, backend_, server_->poseRecorder(),
+                                                   images);
   }
 }
 

@@ -1,6 +1,5 @@
 #include "ptz_action_server/ros/sim_camera_publisher.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -18,11 +17,14 @@ constexpr double TF_CACHE_TIME = 2.0;  ///< s of tf kept: the frames are looked 
 }  // namespace
 
 SimCameraPublisher::SimCameraPublisher(const ros::NodeHandle& node_handle, const SimCameraSettings& settings,
-                                       const PtzKinematics& kinematics, std::shared_ptr<PtzBackend> backend)
+                                       const PtzKinematics& kinematics, std::shared_ptr<PtzBackend> backend,
+                                       std::shared_ptr<PoseRecorder> poses, std::shared_ptr<LatestImage> images)
   : settings_(settings)
   , lens_(settings_.lens.value())
   , kinematics_(kinematics)
   , backend_(std::move(backend))
+  , poses_(std::move(poses))
+  , images_(std::move(images))
   , node_handle_(node_handle)
 {
   node_handle_.setCallbackQueue(&queue_);
@@ -171,19 +173,20 @@ void SimCameraPublisher::publishFrame()
   cv::Mat image(settings_.height, settings_.width, CV_8UC3, image_.data.data(), image_.step);
   renderer_.render(kinematics_.cameraInBase(pan, tilt), intrinsics, markers_, image);
 
-  const ros::Time stamp = toRosTime(sample.stamp);
+  const ros::Time stamp = rosStampOf(sample.stamp, clock_);
+  if (poses_)
+  {
+    poses_->recordExact(stamp, { { pan, tilt, zoom } });
+  }
+  if (images_)
+  {
+    images_->set(stamp, image_.width, image_.height);
+  }
   image_.header.stamp = stamp;
   info_.header.stamp = stamp;
   info_.K = { intrinsics.fx, 0.0, intrinsics.cx, 0.0, intrinsics.fy, intrinsics.cy, 0.0, 0.0, 1.0 };
   info_.P = { intrinsics.fx, 0.0, intrinsics.cx, 0.0, 0.0, intrinsics.fy, intrinsics.cy, 0.0, 0.0, 0.0, 1.0, 0.0 };
   publisher_.publish(image_, info_);
-}
-
-ros::Time SimCameraPublisher::toRosTime(TimePoint stamp) const
-{
-  // As the state tick stamps joint_states: the sample's age taken from ROS time now.
-  const double age = std::max(0.0, secondsBetween(stamp, clock_.now()));
-  return ros::Time::now() - ros::Duration(age);
 }
 
 }  // namespace ptz_action_server

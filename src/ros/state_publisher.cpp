@@ -136,7 +136,13 @@ void StatePublisher::onTick()
   state_message_.pan = reported(PAN, sample);
   state_message_.tilt = reported(TILT, sample);
   state_message_.zoom = reported(ZOOM, sample);
-  const ros::Time stamp = toRosTime(sample.stamp);
+  const ros::Time now = ros::Time::now();
+  const ros::Time stamp = rosStampOf(sample.stamp, clock_, now);
+  if (poses_)
+  {
+    poses_->checkClock(now);
+    poses_->record(stamp, sample);
+  }
   meter.lap(TickCosts::SAMPLE);
 
   if (state_publisher_.publish(state_message_))
@@ -278,12 +284,6 @@ void StatePublisher::diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper
   {
     status.add(value.first, value.second);
   }
-}
-
-ros::Time StatePublisher::toRosTime(TimePoint stamp) const
-{
-  const double age = std::max(0.0, secondsBetween(stamp, clock_.now()));
-  return ros::Time::now() - ros::Duration(age);
 }
 
 }  // namespace ptz_action_server

@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include <actionlib/client/simple_action_client.h>
 #include <ros/ros.h>
 
 #include "ptz_action_server/PtzAction.h"
@@ -20,6 +19,7 @@
 #include "ptz_action_server/PtzState.h"
 #include "ptz_action_server/ros/ptz_goal.h"
 #include "ptz_move.h"
+#include "ptz_move_run.h"
 
 namespace ptz_action_server::ptz_move
 {
@@ -35,6 +35,9 @@ Commands (angles in rad, or degrees with --degrees; zoom as X-factor):
   vel    PAN TILT [ZOOM]           move at a velocity (per s) until Ctrl-C, --for, or a limit
   abs_tf FRAME PAN TILT [ZOOM]     go to a pan and tilt expressed in the axes of a tf frame
   frame  FRAME [ZOOM]              point the camera at the origin of a tf frame
+  pixel  U V [W H]                 centre pixel (U, V) of the camera's latest image (camera_info's pixels: (0, 0)
+                                   is the centre of the top-left pixel); with a W x H box around it, also zoom
+                                   until the box fills the view. The image's stamp and size come from --camera-info
   state                            print the current PtzState once
   capabilities                     print what the device can do (the node's latched capabilities)
   teleop                           drive the camera from the keyboard: hold an arrow to pan and tilt, + or - to
@@ -43,6 +46,7 @@ Commands (angles in rad, or degrees with --degrees; zoom as X-factor):
 Options:
   --ns NAMESPACE   namespace of the node (default: /ptz)
   --degrees        angles (and angular speeds) in degrees
+  --camera-info T  pixel: the camera_info topic of the image clicked on (default: the node's NAMESPACE/camera_info)
   --for SECONDS    cancel the goal after SECONDS (useful with vel)
   --wait SECONDS   how long to wait for the server (default 5)
   --speed SPEED    teleop: pan and tilt speed while an arrow is held (default 0.5 rad/s; deg/s with --degrees)
@@ -56,6 +60,7 @@ void onSigint(int)
 {
   interrupted = 1;
 }
+}  // namespace
 
 bool parseNumber(const std::string& text, double& value)
 {
@@ -70,6 +75,8 @@ bool parseNumber(const std::string& text, double& value)
   std::exit(2);
 }
 
+namespace
+{
 Options parseOptions(const std::vector<std::string>& args)
 {
   Options options;
@@ -90,6 +97,10 @@ Options parseOptions(const std::vector<std::string>& args)
     else if (arg == "--degrees")
     {
       options.degrees = true;
+    }
+    else if (arg == "--camera-info")
+    {
+      options.camera_info = value();
     }
     else if (arg == "--for" || arg == "--wait")
     {
@@ -207,50 +218,6 @@ int printCapabilities(const Options& options)
   return 0;
 }
 
-/// Sends \p goal, prints each feedback on one line, cancels on Ctrl-C or after --for; returns the exit code.
-template <class Action, class Goal>
-int run(const Options& options, const std::string& action, const Goal& goal)
-{
-  actionlib::SimpleActionClient<Action> client(options.ns + "/move_ptz/" + action, true);
-  if (!client.waitForServer(ros::Duration(options.wait)))
-  {
-    std::fprintf(stderr, "ptz_move: no action server at %s/move_ptz/%s (is the node running?)\n", options.ns.c_str(),
-                 action.c_str());
-    return 1;
-  }
-  const double scale = options.degrees ? 180.0 / M_PI : 1.0;
-  const char* unit = options.degrees ? "deg" : "rad";
-  client.sendGoal(goal, typename actionlib::SimpleActionClient<Action>::SimpleDoneCallback(),
-                  typename actionlib::SimpleActionClient<Action>::SimpleActiveCallback(),
-                  [&](const typename Action::_action_feedback_type::_feedback_type::ConstPtr& feedback) {
-                    std::printf("\r  remaining: pan %+9.4f %s  tilt %+9.4f %s  zoom %+7.2f   ",
-                                feedback->pan_remaining * scale, unit, feedback->tilt_remaining * scale, unit,
-                                feedback->zoom_remaining);
-                    std::fflush(stdout);
-                  });
-  const ros::WallTime started = ros::WallTime::now();
-  bool cancelled = false;
-  while (ros::ok() && !client.getState().isDone())
-  {
-    const bool expired = options.cancel_after > 0.0 && (ros::WallTime::now() - started).toSec() >= options.cancel_after;
-    if (!cancelled && (interrupted || expired))
-    {
-      std::printf("\n  cancelling...\n");
-      client.cancelGoal();
-      cancelled = true;
-    }
-    ros::WallDuration(0.02).sleep();
-  }
-  const actionlib::SimpleClientGoalState state = client.getState();
-  const auto result = client.getResult();
-  std::printf("\n%s: %s%s%s (success = %s, %.2f s)\n", action.c_str(), state.toString().c_str(),
-              state.getText().empty() ? "" : ": ", state.getText().c_str(),
-              result && result->success ? "true" : "false", (ros::WallTime::now() - started).toSec());
-  return state == actionlib::SimpleClientGoalState::SUCCEEDED ||
-                 (cancelled && state == actionlib::SimpleClientGoalState::PREEMPTED) ?
-             0 :
-             1;
-}
 }  // namespace
 }  // namespace ptz_action_server::ptz_move
 
@@ -330,6 +297,10 @@ int main(int argc, char** argv)
     }
     goal.zoom = options.words.size() == 3 ? zoom : currentZoom(options);
     return run<PtzFrameAction>(options, "frame", goal);
+  }
+  if (command == "pixel")
+  {
+    return pixel(options);
   }
   fail("unknown command '" + command + "'");
 }

@@ -1,6 +1,7 @@
 /**
  * \file
- * \brief What ptz_move's files share: its options, the Ctrl-C flag, and the keyboard teleop (ptz_move_teleop.cpp).
+ * \brief What ptz_move's files share: its options, the Ctrl-C flag, its errors, the keyboard teleop
+ * (ptz_move_teleop.cpp) and the pixel command (ptz_move_pixel.cpp).
  */
 #pragma once
 
@@ -15,6 +16,7 @@ struct Options
 {
   std::string ns = "/ptz";
   bool degrees = false;
+  std::string camera_info;  ///< --camera-info; "": ns + "/camera_info"
   double cancel_after = 0.0;
   double wait = 5.0;
   double speed = 0.5;
@@ -28,4 +30,13 @@ extern volatile std::sig_atomic_t interrupted;
 
 /// Keyboard teleop until q, Ctrl-C or the node goes; returns the exit code.
 int teleop(const Options& options);
+
+/// `pixel U V [W H]`: centres a pixel (and zooms to a box) of the latest image of --camera-info; the exit code.
+int pixel(const Options& options);
+
+/// True if all of \p text is a number, then in \p value.
+bool parseNumber(const std::string& text, double& value);
+
+/// Prints \p message and the usage, and exits with 2.
+[[noreturn]] void fail(const std::string& message);
 }  // namespace ptz_action_server::ptz_move

@@ -3,12 +3,9 @@
  * \brief rostest client, the simulated camera's picture (sim_camera.test): image_raw and camera_info as a user sees
  * them, and a listed frame's marker where tf and camera_info say it is.
  */
-#include <sensor_msgs/CameraInfo.h>
-#include <sensor_msgs/Image.h>
-
 #include "../core/wait_until.h"
+#include "camera_observer.h"
 #include "node_test.h"
-#include "ptz_action_server/FieldOfView.h"
 
 namespace
 {
@@ -21,116 +18,8 @@ constexpr int WIDTH = 640;  // config/sim.yaml's
 constexpr int HEIGHT = 360;
 constexpr double PIXEL_TOLERANCE = 2.0;
 
-/// Every image's stamp, the latest image, every camera_info and the latest field_of_view.
-class CameraObserver
-{
-public:
-  CameraObserver()
-  {
-    ros::NodeHandle node_handle;
-    image_subscriber_ = node_handle.subscribe("image_raw", 5, &CameraObserver::onImage, this);
-    info_subscriber_ = node_handle.subscribe("camera_info", 5, &CameraObserver::onInfo, this);
-    view_subscriber_ = node_handle.subscribe("field_of_view", 5, &CameraObserver::onView, this);
-  }
-
-  /// Waits for an image stamped after \p after, and its camera_info (same stamp); false after the deadline.
-  bool waitForImage(const ros::Time& after, sensor_msgs::Image& image, sensor_msgs::CameraInfo& info)
-  {
-    return ptz_action_server::waitUntil(
-        [&] {
-          std::lock_guard<std::mutex> lock(mutex_);
-          if (image_.header.stamp <= after)
-          {
-            return false;
-          }
-          for (const sensor_msgs::CameraInfo& candidate : infos_)
-          {
-            if (candidate.header.stamp == image_.header.stamp)
-            {
-              image = image_;
-              info = candidate;
-              return true;
-            }
-          }
-          return false;
-        },
-        GOAL_WAIT);
-  }
-  std::vector<ros::Time> stamps() const
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return stamps_;
-  }
-  bool waitForView(ptz_action_server::FieldOfView& view)
-  {
-    return ptz_action_server::waitUntil(
-        [&] {
-          std::lock_guard<std::mutex> lock(mutex_);
-          view = view_;
-          return view_.horizontal > 0.0;
-        },
-        GOAL_WAIT);
-  }
-
-private:
-  void onImage(const sensor_msgs::Image::ConstPtr& image)
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    image_ = *image;
-    stamps_.push_back(image->header.stamp);
-  }
-  void onInfo(const sensor_msgs::CameraInfo::ConstPtr& info)
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    infos_.push_back(*info);
-    if (infos_.size() > 20)
-    {
-      infos_.erase(infos_.begin());
-    }
-  }
-  void onView(const ptz_action_server::FieldOfView::ConstPtr& view)
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    view_ = *view;
-  }
-
-  mutable std::mutex mutex_;
-  sensor_msgs::Image image_;
-  std::vector<ros::Time> stamps_;
-  std::vector<sensor_msgs::CameraInfo> infos_;
-  ptz_action_server::FieldOfView view_;
-  ros::Subscriber image_subscriber_;
-  ros::Subscriber info_subscriber_;
-  ros::Subscriber view_subscriber_;
-};
-
-/// The centroid of \p image's pixels of exactly \p colour; false if there are none.
-bool centroidOf(const sensor_msgs::Image& image, const std::uint8_t (&colour)[3], double& u, double& v)
-{
-  double sum_u = 0.0;
-  double sum_v = 0.0;
-  int pixels = 0;
-  for (std::uint32_t row = 0; row < image.height; ++row)
-  {
-    const std::uint8_t* pixel = &image.data[row * image.step];
-    for (std::uint32_t column = 0; column < image.width; ++column, pixel += 3)
-    {
-      if (pixel[0] == colour[0] && pixel[1] == colour[1] && pixel[2] == colour[2])
-      {
-        sum_u += column;
-        sum_v += row;
-        ++pixels;
-      }
-    }
-  }
-  if (pixels == 0)
-  {
-    return false;
-  }
-  u = sum_u / pixels;
-  v = sum_v / pixels;
-  return true;
-}
+using ptz_action_server::CameraObserver;
+using ptz_action_server::centroidOf;
 
 class SimCameraTest : public NodeTest
 {

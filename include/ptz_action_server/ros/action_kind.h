@@ -17,10 +17,13 @@ enum class ActionKind
   FRAME,
   TRACK_FRAME,
   PRESET,
+  PIXEL,
   CLICKED_POINT,  ///< not an action: a point on the clicked point topic (LookAtClickedPoint)
+  IMAGE_CLICK,    ///< not an action: a click on <image_topic>_mouse_left (ImageClicks)
 };
 
-/// "position_abs", ..., the name under move_ptz/ (NODE_ACTIONS); "look_at_clicked_point" for a clicked point.
+/// "position_abs", ..., the name under move_ptz/ (NODE_ACTIONS); "look_at_clicked_point" for a clicked point,
+/// "image_click" for a click on an image.
 const char* actionName(ActionKind kind);
 
 }  // namespace ptz_action_server

@@ -17,6 +17,7 @@
 
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/PtzFrameAction.h"
+#include "ptz_action_server/PtzPixelAction.h"
 #include "ptz_action_server/PtzPresetAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
 #include "ptz_action_server/ros/action_kind.h"
@@ -37,7 +38,8 @@ struct ActionRow
  * \brief The node's actions, one row each, in the order of ActionKind (a test at compile time checks it).
  *
  * Adding an action is its value of ActionKind, its row here and the conversion of its goal
- * (GoalTranslator::convert(), and GoalTranslator::frameOf() if the goal waits for a tf frame).
+ * (GoalTranslator::convert(), and GoalTranslator::frameOf() if the goal waits for a tf frame; for a result with more
+ * than `success`, GoalTranslator::fillResult()).
  */
 inline constexpr std::tuple NODE_ACTIONS{
   ActionRow<PtzAction>{ ActionKind::POSITION_ABS, "position_abs" },
@@ -47,6 +49,7 @@ inline constexpr std::tuple NODE_ACTIONS{
   ActionRow<PtzFrameAction>{ ActionKind::FRAME, "frame" },
   ActionRow<PtzFrameAction>{ ActionKind::TRACK_FRAME, "track_frame" },
   ActionRow<PtzPresetAction>{ ActionKind::PRESET, "preset" },
+  ActionRow<PtzPixelAction>{ ActionKind::PIXEL, "pixel" },
 };
 
 /// How many actions the node serves.

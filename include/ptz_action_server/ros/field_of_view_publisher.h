@@ -5,6 +5,8 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
 
 #include <ros/ros.h>
@@ -12,6 +14,7 @@
 
 #include "ptz_action_server/FieldOfView.h"
 #include "ptz_action_server/core/backend.h"
+#include "ptz_action_server/core/motion/pixel_aim.h"
 #include "ptz_action_server/ros/listened_publisher.h"
 #include "ptz_action_server/ros/view_config.h"
 
@@ -22,7 +25,8 @@ namespace ptz_action_server
  * republishes each camera_info rescaled for the zoom at that moment.
  *
  * Runs on the queue of the node handle it is given (the state publisher's): the camera_info callback stays off the
- * main queue. Both messages are kept and reused, so neither path allocates once the first camera_info is in.
+ * main queue. Both messages are kept and reused, so neither path allocates once the first camera_info is in. The
+ * incoming camera_info's calibration is kept too, for aiming at its pixels (calibration()).
  */
 class FieldOfViewPublisher
 {
@@ -35,6 +39,11 @@ public:
   /// One state tick: the field of view at \p zoom, stamped \p stamp (joint_states' stamp), if someone listens;
   /// returns whether it was sent.
   bool publish(const ros::Time& stamp, double zoom);
+
+  /// The latest incoming camera_info's K (fx, fy, cx, cy) and size, calibrated at camera_info_zoom; none before one
+  /// came, or while it holds no calibration (focal lengths or size not positive, as uncalibrated drivers send). Any
+  /// thread.
+  std::optional<CalibratedIntrinsics> calibration() const;
 
   /// Rescales \p info in place from \p scale: fx, fy (and skew, Tx, Ty) in K and P; principal point unchanged.
   static void rescale(sensor_msgs::CameraInfo& info, const FocalScale& scale);
@@ -50,6 +59,8 @@ private:
   ros::Subscriber camera_info_subscriber_;
   ros::Publisher camera_info_publisher_;
   sensor_msgs::CameraInfo camera_info_message_;  ///< the rescaled copy, reused
+  mutable std::mutex calibration_mutex_;
+  std::optional<CalibratedIntrinsics> calibration_;  ///< of the latest incoming camera_info
 };
 
 }  // namespace ptz_action_server

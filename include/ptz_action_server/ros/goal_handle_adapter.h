@@ -34,9 +34,14 @@ public:
   using Result = typename Action::_action_result_type::_result_type;
   using Feedback = typename Action::_action_feedback_type::_feedback_type;
 
-  /// \p post_status runs or holds each status change (PtzActionServer::postStatus).
-  GoalHandleAdapter(const Handle& handle, ActionKind kind, StatusPoster post_status)
-    : handle_(handle), action_(actionName(kind)), id_(handle.getGoalID().id), post_status_(std::move(post_status))
+  /// \p post_status runs or holds each status change (PtzActionServer::postStatus). Every result the goal ends with
+  /// is \p result with its `success` set (a pixel goal's also says where it aimed).
+  GoalHandleAdapter(const Handle& handle, ActionKind kind, StatusPoster post_status, Result result = Result())
+    : handle_(handle)
+    , action_(actionName(kind))
+    , id_(handle.getGoalID().id)
+    , post_status_(std::move(post_status))
+    , result_(std::move(result))
   {
   }
   const std::string& action() const override
@@ -54,7 +59,8 @@ public:
   void reject(const std::string& text) override
   {
     ROS_WARN_THROTTLE(1.0, "%s goal rejected: %s", action_.c_str(), text.c_str());
-    post_status_.post([handle = handle_, text]() mutable { handle.setRejected(result(false), text); });
+    post_status_.post(
+        [handle = handle_, text, outcome = result(false)]() mutable { handle.setRejected(outcome, text); });
   }
   void publishFeedback(const AxisValues& remaining) override
   {
@@ -72,31 +78,35 @@ public:
   void succeed(const std::string& text) override
   {
     ROS_DEBUG("%s goal succeeded: %s", action_.c_str(), text.c_str());
-    post_status_.post([handle = handle_, text]() mutable { handle.setSucceeded(result(true), text); });
+    post_status_.post(
+        [handle = handle_, text, outcome = result(true)]() mutable { handle.setSucceeded(outcome, text); });
   }
   void abort(const std::string& text) override
   {
     ROS_WARN("%s goal aborted: %s", action_.c_str(), text.c_str());
-    post_status_.post([handle = handle_, text]() mutable { handle.setAborted(result(false), text); });
+    post_status_.post(
+        [handle = handle_, text, outcome = result(false)]() mutable { handle.setAborted(outcome, text); });
   }
   void preempt(const std::string& text) override
   {
     ROS_DEBUG("%s goal preempted: %s", action_.c_str(), text.c_str());
-    post_status_.post([handle = handle_, text]() mutable { handle.setCanceled(result(false), text); });
+    post_status_.post(
+        [handle = handle_, text, outcome = result(false)]() mutable { handle.setCanceled(outcome, text); });
   }
 
 private:
-  static Result result(bool success)
+  Result result(bool success) const
   {
-    Result result;
-    result.success = success;
-    return result;
+    Result outcome = result_;
+    outcome.success = success;
+    return outcome;
   }
 
   Handle handle_;
   std::string action_;
   std::string id_;
   StatusPoster post_status_;
+  Result result_;  ///< what every result says besides `success`
   Feedback feedback_;
 };
 

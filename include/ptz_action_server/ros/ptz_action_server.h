@@ -24,8 +24,11 @@
 #include "ptz_action_server/ros/frame_tracking.h"
 #include "ptz_action_server/ros/goal_handle_adapter.h"
 #include "ptz_action_server/ros/goal_translator.h"
+#include "ptz_action_server/ros/image_clicks.h"
 #include "ptz_action_server/ros/look_at_clicked_point.h"
 #include "ptz_action_server/ros/node_config.h"
+#include "ptz_action_server/ros/pixel_goals.h"
+#include "ptz_action_server/ros/pose_recorder.h"
 #include "ptz_action_server/ros/preset_services.h"
 #include "ptz_action_server/ros/queue_timer.h"
 #include "ptz_action_server/ros/tick_costs.h"
@@ -40,8 +43,9 @@ class StatePublisher;
  * It wires ROS to the core: a goal goes from its action callback (through the FrameGoalHold if it must wait for tf)
  * to the GoalTranslator, which converts it into a command against the device's current state, and then to the
  * GoalSupervisor, which checks it and commands the backend; the goal handle's status changes go through the
- * StatusHold. ActionServers holds the action servers (one row each in NODE_ACTIONS); the StatePublisher runs the
- * 10 Hz state tick.
+ * StatusHold. Every state sample it takes (the tick's and the backend's own reports) goes into the pose history that
+ * pixel goals look the image's pose up in. ActionServers holds the action servers (one row each in NODE_ACTIONS); the
+ * StatePublisher runs the 10 Hz state tick.
  *
  * Threads: the node handle's queue (the main thread) runs every action callback and the supervisor; the state tick
  * runs on the process's TimerThread and hands each sample to the main thread for the goal's feedback and verdict.
@@ -67,6 +71,20 @@ public:
     tick_costs_ = costs;
   }
 
+  /// Lets clicks on the simulated camera's picture (\p topic, resolved) take its images' stamps and sizes from
+  /// \p images, which its publisher fills, instead of from its camera_info topic; before start().
+  void setLocalImages(std::shared_ptr<LatestImage> images, const std::string& topic)
+  {
+    local_images_ = std::move(images);
+    local_image_topic_ = topic;
+  }
+
+  /// The pose history's feed, for the simulated camera to record the pose of each image; built by start().
+  std::shared_ptr<PoseRecorder> poseRecorder() const
+  {
+    return poses_;
+  }
+
   /// Limits goals are checked against: the backend's capabilities narrowed by the URDF joint limits.
   const Capabilities& limits() const
   {
@@ -84,6 +102,9 @@ private:
   /// Aims the optical axis at a clicked point, as a frame goal aims it at a frame's origin: it waits for tf the same
   /// way, then preempts the active goal (or is rejected, moving nothing, with the reason in the log).
   void lookAt(const geometry_msgs::PointStamped& point);
+  /// Centres a pixel clicked on an image (ImageClicks) as a pixel goal does: it preempts the active goal (or is
+  /// rejected, moving nothing, with the reason in the log).
+  void centrePixel(const ros::Time& stamp, const PixelGoal& goal);
 
   /// Runs \p change (a goal's status change) through the status hold, arming its release timer if it is held.
   void postStatus(StatusHold::Change change);
@@ -93,7 +114,8 @@ private:
   void armStatusRelease(TimePoint due);
   /// On the main queue when the release timer fires: runs the held changes that are due, then arms it again.
   void releaseHeldStatuses();
-  /// On the backend's thread when its state may have changed: queues one early verdict check on the main thread.
+  /// On the backend's thread when its state may have changed: records the pose, and queues one early verdict check on
+  /// the main thread.
   void onBackendSample();
 
   ros::NodeHandle node_handle_;  ///< the node's namespace: actions and topics; the main callback queue
@@ -123,6 +145,8 @@ private:
   // Frame lookups for position_abs_tf and frame goals; the listener feeds the buffer from the main queue.
   std::unique_ptr<FrameListener> frame_listener_;
   std::unique_ptr<FrameGoalHold> frame_hold_;   ///< a frame goal waiting for tf; built by start()
+  std::shared_ptr<PoseRecorder> poses_;         ///< the pose history; built by start(), before supervising_
+  std::unique_ptr<PixelGoals> pixel_goals_;     ///< pixels to commands; built by start()
   std::unique_ptr<GoalTranslator> translator_;  ///< goals to commands; built by start()
 
   ActionServers servers_;                                      ///< one per action; started by start()
@@ -130,6 +154,10 @@ private:
   std::unique_ptr<PresetServices> presets_;                    ///< the preset services and lookups; built by start()
   std::unique_ptr<LookAtClickedPoint> look_at_clicked_point_;  ///< the switch; built by start()
   std::uint64_t clicked_points_ = 0;                           ///< clicked points so far, for their ids
+  std::shared_ptr<LatestImage> local_images_;                  ///< the simulated camera's, or null
+  std::string local_image_topic_;                              ///< its image topic, resolved
+  std::unique_ptr<ImageClicks> image_clicks_;                  ///< with ~image_topic only; built by start()
+  std::uint64_t image_clicks_count_ = 0;                       ///< clicks on the image so far, for their ids
 };
 
 }  // namespace ptz_action_server

@@ -23,7 +23,9 @@
 #include "ptz_action_server/core/motion/field_of_view.h"
 #include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/render/camera_renderer.h"
+#include "ptz_action_server/ros/image_clicks.h"
 #include "ptz_action_server/ros/param_reader.h"
+#include "ptz_action_server/ros/pose_recorder.h"
 
 namespace ptz_action_server
 {
@@ -54,9 +56,10 @@ struct SimCameraSettings
  * One thread of its own, never the node's queues or the state tick: it sleeps while nobody subscribes (to either
  * topic), and while someone does it renders at the settings' rate, each image from the backend's state at that moment
  * (pan, tilt and zoom as the contract has them, the camera's pose from the URDF) and stamped with that state's time,
- * as joint_states is. The listed frames come from a tf listener that exists only while someone subscribes; a frame
- * tf does not know is left out (and named once in the log). The thread runs its own callback queue: the
- * subscriber-connect callbacks wake it, the tf listener's messages arrive on it between two frames. The image and
+ * as joint_states is; that exact pose goes into the node's pose history before the image goes out, so a pixel goal on
+ * any image finds where the camera looked. The listed frames come from a tf listener that exists only while someone
+ * subscribes; a frame tf does not know is left out (and named once in the log). The thread runs its own callback queue:
+ * the subscriber-connect callbacks wake it, the tf listener's messages arrive on it between two frames. The image and
  * camera_info messages and the renderer's buffers are made with the first image and reused: a frame allocates nothing
  * of its own but what tf's lookups and roscpp's serialization do.
  */
@@ -64,9 +67,11 @@ class SimCameraPublisher
 {
 public:
   /// Advertises image_raw and camera_info in \p node_handle's namespace and starts the thread. \p settings must be
-  /// enabled and hold a lens; \p backend must outlive the publisher's use of it (until the destructor returns).
+  /// enabled and hold a lens; \p backend must outlive the publisher's use of it (until the destructor returns). Each
+  /// image's pose goes to \p poses and its stamp and size to \p images, either of which may be null.
   SimCameraPublisher(const ros::NodeHandle& node_handle, const SimCameraSettings& settings,
-                     const PtzKinematics& kinematics, std::shared_ptr<PtzBackend> backend);
+                     const PtzKinematics& kinematics, std::shared_ptr<PtzBackend> backend,
+                     std::shared_ptr<PoseRecorder> poses = nullptr, std::shared_ptr<LatestImage> images = nullptr);
   /// Stops the thread, then the topics.
   ~SimCameraPublisher();
 
@@ -83,12 +88,13 @@ private:
   void publishFrame();
   /// The listed frames' positions in the base frame, from tf.
   void updateMarkers();
-  ros::Time toRosTime(TimePoint stamp) const;
 
   const SimCameraSettings settings_;
   const FieldOfViewModel& lens_;  ///< settings_.lens's value
   const PtzKinematics kinematics_;
   const std::shared_ptr<PtzBackend> backend_;
+  const std::shared_ptr<PoseRecorder> poses_;
+  const std::shared_ptr<LatestImage> images_;
   SystemClock clock_;
 
   ros::CallbackQueue queue_;     ///< the thread's: connect callbacks and tf

@@ -23,6 +23,7 @@
 #include "ptz_action_server/core/timer_thread.h"
 #include "ptz_action_server/ros/field_of_view_publisher.h"
 #include "ptz_action_server/ros/listened_publisher.h"
+#include "ptz_action_server/ros/pose_recorder.h"
 #include "ptz_action_server/ros/shared_transforms.h"
 #include "ptz_action_server/ros/tick_costs.h"
 
@@ -36,7 +37,8 @@ namespace ptz_action_server
  * sample, publishes PtzState (with the supervisor's mode), joint_states and the pan and tilt transforms, updates the
  * diagnostics (backend status, measured ptz_state rate), and while a goal is active passes the sample to the handler.
  * The messages are built once in start() and reused, so a tick allocates nothing of its own; a topic nobody listens to
- * costs the tick nothing but the check.
+ * costs the tick nothing but the check. Each sample's pose also goes to the pose history (setPoseRecorder()), stamped
+ * as joint_states is.
  *
  * An axis whose device reports no position (AxisCapability::feedback false) is published as NaN in PtzState and is
  * left out of joint_states and tf: its pose is unknown, and a made-up one would mislead rviz and the clients.
@@ -62,6 +64,19 @@ public:
   /// Publishes field_of_view on each tick (the zoomed camera_info is served on the node handle's queue). Before
   /// start().
   void addFieldOfView(const FieldOfViewSettings& settings);
+
+  /// The field_of_view publisher (and the camera_info calibration it keeps), or null without one.
+  const FieldOfViewPublisher* fieldOfView() const
+  {
+    return field_of_view_.get();
+  }
+
+  /// Records each tick's sample in \p poses (which must outlive the publisher), and tells it when ROS time went back.
+  /// Before start().
+  void setPoseRecorder(PoseRecorder* poses)
+  {
+    poses_ = poses;
+  }
 
   /// Calls \p hook on the state thread at the end of every tick; it returns how many messages it sent (the action
   /// status lists). Before start().
@@ -90,7 +105,6 @@ private:
   void diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper& status);
   /// Logs the backend's new warnings (ROS_WARN) and keeps them for the diagnostics.
   void takeWarnings();
-  ros::Time toRosTime(TimePoint stamp) const;
 
   ros::NodeHandle node_handle_;  ///< the node's namespace, on the node's queue
   const std::string node_name_;  ///< the node's private namespace
@@ -103,6 +117,7 @@ private:
   const SampleHandler hand_over_;
   std::function<int()> tick_hook_;
   TickCosts* tick_costs_ = nullptr;  ///< the benchmark's, or null
+  PoseRecorder* poses_ = nullptr;    ///< the pose history's, or null
   SystemClock clock_;
 
   // Only the state thread touches these after start().
