@@ -87,6 +87,8 @@ public:
   void setRefuse(bool refuse);
   /// Fault hooks of the motion model: a stalled axis accepts every command and silently stays where it is.
   void setFaults(const SimFaults& faults);
+  /// What the camera was asked, classified (axis_camera_classify.cpp); challenged requests left out.
+  std::vector<ClassifiedCommand> classify() const;
   /// control_queue: another client (a browser, a guard tour) holds PTZ control for \p seconds from now (-1: for good,
   /// as a client with TimeoutType infinity); 0 lets it go.
   void holdControlElsewhere(double seconds);

@@ -151,6 +151,8 @@ public:
   void setRefuse(bool refuse);
   /// Fault hooks of the motion model: a stalled axis accepts every command and silently stays where it is.
   void setFaults(const SimFaults& faults);
+  /// What the camera was asked, classified (onvif_camera_classify.cpp); challenged requests left out.
+  std::vector<ClassifiedCommand> classify() const;
   static constexpr const char* REFUSAL = "PTZ is locked by another user";
 
   /// Tokens the camera refused (a wrong password, a stale Created).
