@@ -1,3 +1,4 @@
+#include <optional>
 #include <string>
 
 #include "ptz_action_server/core/units.h"
@@ -8,12 +9,10 @@ namespace ptz_action_server
 std::vector<ClassifiedCommand> AxisCameraEmulator::classify() const
 {
   using Kind = ClassifiedCommand::Kind;
-  std::vector<ClassifiedCommand> commands;
-  for (const HttpExchange& exchange : server_->received().items())
-  {
+  return server_->received().classified([](const HttpExchange& exchange) -> std::optional<ClassifiedCommand> {
     if (exchange.status == 401)
     {
-      continue;  // challenged, not carried out: the same request follows with its credentials
+      return std::nullopt;  // challenged, not carried out: the same request follows with its credentials
     }
     const std::string& target = exchange.target;
     ClassifiedCommand command{ exchange.at, Kind::OTHER, exchange.method + " " + target };
@@ -36,9 +35,8 @@ std::vector<ClassifiedCommand> AxisCameraEmulator::classify() const
     {
       command.kind = Kind::MOVE;  // a velocity goal's
     }
-    commands.push_back(command);
-  }
-  return commands;
+    return command;
+  });
 }
 
 }  // namespace ptz_action_server

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "ptz_action_server/core/onvif/onvif_codec.h"
@@ -11,15 +12,13 @@ namespace ptz_action_server
 std::vector<ClassifiedCommand> OnvifCameraEmulator::classify() const
 {
   using Kind = ClassifiedCommand::Kind;
-  std::vector<ClassifiedCommand> commands;
-  for (const HttpExchange& exchange : server_->received().items())
-  {
+  return server_->received().classified([](const HttpExchange& exchange) -> std::optional<ClassifiedCommand> {
     onvif::SoapMessage message;
     // A request HTTP Digest challenged is not carried out (the same follows with its credentials); nor is one that is
     // no SOAP message.
     if (exchange.status == 401 || !onvif::parseSoap(exchange.body, message).empty())
     {
-      continue;
+      return std::nullopt;
     }
     const std::string operation = onvif::localName(*message.content);
     Kind kind = operation == "GetStatus" ? Kind::QUERY : operation == "Stop" ? Kind::STOP : Kind::OTHER;
@@ -39,9 +38,8 @@ std::vector<ClassifiedCommand> OnvifCameraEmulator::classify() const
     {
       kind = Kind::MOVE;  // a velocity goal's
     }
-    commands.push_back(ClassifiedCommand{ exchange.at, kind, operation + " " + std::to_string(pan), aims, pan });
-  }
-  return commands;
+    return ClassifiedCommand{ exchange.at, kind, operation + " " + std::to_string(pan), aims, pan };
+  });
 }
 
 }  // namespace ptz_action_server

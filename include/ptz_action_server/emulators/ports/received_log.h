@@ -13,6 +13,7 @@
 #include <deque>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,10 @@ public:
       if (items_.size() > capacity_)
       {
         items_.pop_front();
+        if (!classified_.empty())
+        {
+          classified_.pop_front();
+        }
       }
     }
     changed_.notify_all();
@@ -82,14 +87,25 @@ public:
     return std::vector<Item>(items_.begin(), items_.end());
   }
 
-  /// Every item as \p classify (Item -> ClassifiedCommand) sorts it, oldest first.
+  /// Every item as \p classify (Item -> ClassifiedCommand, or std::nullopt to leave it out) sorts it, oldest first.
+  /// Each item is classified once: the log keeps what \p classify gave (so it must give the same for the same item),
+  /// and a benchmark that asks again and again while a device runs pays only for what came since.
   template <class Classify>
   std::vector<ClassifiedCommand> classified(Classify classify) const
   {
-    std::vector<ClassifiedCommand> commands;
-    for (const Item& item : items())
+    std::lock_guard<std::mutex> lock(mutex_);
+    while (classified_.size() < items_.size())
     {
-      commands.push_back(classify(item));
+      classified_.push_back(classify(items_[classified_.size()]));
+    }
+    std::vector<ClassifiedCommand> commands;
+    commands.reserve(classified_.size());
+    for (const std::optional<ClassifiedCommand>& command : classified_)
+    {
+      if (command)
+      {
+        commands.push_back(*command);
+      }
     }
     return commands;
   }
@@ -98,6 +114,7 @@ public:
   {
     std::lock_guard<std::mutex> lock(mutex_);
     items_.clear();
+    classified_.clear();
   }
 
   /// Waits until an item satisfies \p predicate, or \p timeout s pass; true if one does.
@@ -120,6 +137,7 @@ private:
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;
   std::deque<Item> items_;
+  mutable std::deque<std::optional<ClassifiedCommand>> classified_;  ///< classified(): items_'s first ones
 };
 
 }  // namespace ptz_action_server
