@@ -57,6 +57,26 @@ std::vector<HarnessParam> serialParams(const std::string& protocol, unsigned bau
            paramValue(protocol + "/baud", static_cast<int>(baud)) };
 }
 
+HarnessEntry serialEntry(const std::string& plugin, unsigned baud, const std::string& emulator,
+                         std::function<std::unique_ptr<DeviceHarness>(const DevicePortConfig& port)> start)
+{
+  const PortKind kind = baud == 0 ? PortKind::TCP : PortKind::PTY;
+  HarnessEntry entry;
+  entry.name = plugin + (baud == 0 ? "_tcp" : "_serial_" + std::to_string(baud));
+  entry.plugin = plugin;
+  entry.params = serialParams(plugin, baud);
+  entry.figures.summary = emulator + ", " + portSummary(kind, baud);
+  entry.figures.goals = baud == 0 ? 1000 : 300;
+  entry.start = [kind, baud, start = std::move(start)](const std::string& link) {
+    DevicePortConfig port;
+    port.kind = kind;
+    port.baud = baud;
+    port.link = kind == PortKind::PTY ? link : "";
+    return start(port);
+  };
+  return entry;
+}
+
 double byteTime(PortKind kind, unsigned baud)
 {
   return kind == PortKind::PTY ? 10.0 / baud : 0.0;

@@ -144,6 +144,12 @@ HarnessParam emulatorPort(const std::string& name);
 HarnessParam emulatorLink(const std::string& name);
 /// ... ~<protocol>/... on the emulator's pseudo-terminal at \p baud, or over TCP (\p baud 0) ...
 std::vector<HarnessParam> serialParams(const std::string& protocol, unsigned baud);
+/// ... a row of \p plugin's device on a pseudo-terminal at \p baud ("<plugin>_serial_<baud>", 300 goals), or over
+/// TCP (\p baud 0: "<plugin>_tcp"), with serialParams() and a summary that names \p emulator and the port; \p start
+/// makes the harness on the port it is given (at the row's link on a pseudo-terminal). The figures' texts, targets and
+/// pause are the protocol's ...
+HarnessEntry serialEntry(const std::string& plugin, unsigned baud, const std::string& emulator,
+                         std::function<std::unique_ptr<DeviceHarness>(const DevicePortConfig& port)> start);
 /// ... seconds a byte takes at \p baud on \p kind (8N1; 0 on a socket), how --list names the port ...
 double byteTime(DevicePortConfig::Kind kind, unsigned baud);
 std::string portSummary(DevicePortConfig::Kind kind, unsigned baud);

@@ -11,13 +11,13 @@ using PortKind = DevicePortConfig::Kind;
 /// The device (address 1) on a pseudo-terminal at \p baud, or over TCP (\p baud 0).
 HarnessEntry pelcoEntry(unsigned baud)
 {
+  HarnessEntry entry = serialEntry("pelco_d", baud, "PelcoDEmulator (address 1)", [](const DevicePortConfig& port) {
+    PelcoDEmulatorConfig config;
+    config.port = port;
+    return std::make_unique<PelcoDHarness>(config);
+  });
   const PortKind kind = baud == 0 ? PortKind::TCP : PortKind::PTY;
-  HarnessEntry entry;
-  entry.name = baud == 0 ? "pelco_d_tcp" : "pelco_d_serial_" + std::to_string(baud);
-  entry.plugin = "pelco_d";
-  entry.params = serialParams("pelco_d", baud);
   HarnessFigures& figures = entry.figures;
-  figures.summary = "PelcoDEmulator (address 1), " + portSummary(kind, baud);
   figures.goal_items = "the set position frames (pan, tilt, zoom); wire time: 7 bytes";
   figures.stop_items = "the stop frame (all zero)";
   figures.goal_pause = 6 * pelco::FRAME_SIZE * byteTime(kind, baud) + 0.005;
@@ -26,14 +26,6 @@ HarnessEntry pelcoEntry(unsigned baud)
   figures.stop_target = kind == PortKind::TCP ? "p99 <= 5 ms" :
                                                 formatText("p99 <= one frame time + 2 ms (%.1f ms)",
                                                            (pelco::FRAME_SIZE * byteTime(kind, baud) + 0.002) * 1e3);
-  figures.goals = baud == 0 ? 1000 : 300;
-  entry.start = [kind, baud](const std::string& link) {
-    PelcoDEmulatorConfig config;
-    config.port.kind = kind;
-    config.port.baud = baud;
-    config.port.link = kind == PortKind::PTY ? link : "";
-    return std::make_unique<PelcoDHarness>(config);
-  };
   return entry;
 }
 }  // namespace

@@ -21,29 +21,15 @@ vapix::ZoomTable zoomTable(const std::string& text)
 
 /// An Axis camera: by default the emulator's own (zoom attributes, an 18X table); \p camera for a field case, whose
 /// zoom goals the backend sends through \p backend_table.
-class AxisFixture : public HarnessFixture<AxisHarness>
+class AxisFixture : public HttpCameraFixture<AxisHarness>
 {
 public:
   explicit AxisFixture(const AxisCameraEmulatorConfig& camera = AxisCameraEmulatorConfig(),
                        const vapix::ZoomTable& backend_table = zoomTable(AxisCameraEmulatorConfig::DEFAULT_ZOOM_TABLE))
-    : HarnessFixture(camera), backend_table_(backend_table)
+    : HttpCameraFixture(camera), backend_table_(backend_table)
   {
-    harness_.config().link.http.request_timeout = 2.0;  // longer than the state timeout: silence is seen as silence
-    harness_.config().session.state_timeout = HTTP_TEST_STATE_TIMEOUT;
   }
 
-  std::string linkLossWords() const override
-  {
-    return httpLinkLossWords(harness_.emulator().server());
-  }
-  double replyDeadline() const override
-  {
-    return HTTP_REPLY_DEADLINE;
-  }
-  AxisValues goal(double pan, double tilt) const override
-  {
-    return AxisValues{ { pan, tilt, 2.0 } };
-  }
   std::string prepareRefusal(AxisValues& goal) override
   {
     harness_.emulator().setRefuse(true);

@@ -31,11 +31,6 @@ std::string transportLossWords(const DeviceHarness& harness, const std::string& 
   return harness.breaksAtOnce() ? "connection to 127.0.0.1" : silence_words;
 }
 
-std::string httpLinkLossWords(const HttpCameraServer& server)
-{
-  return server.url().substr(0, server.url().rfind(':'));  // "http://127.0.0.1" or "https://127.0.0.1"
-}
-
 std::string describe(const std::vector<ClassifiedCommand>& commands)
 {
   std::string text;

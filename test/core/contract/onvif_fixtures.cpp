@@ -62,32 +62,18 @@ OnvifCameraEmulatorConfig onvifCamera(const std::vector<std::string>& modes, boo
 }
 
 /// An ONVIF camera in one of the emulator's modes, and the contract cases it cannot run.
-class OnvifFixture : public HarnessFixture<OnvifHarness>
+class OnvifFixture : public HttpCameraFixture<OnvifHarness>
 {
 public:
   explicit OnvifFixture(const std::vector<std::string>& modes, Unsupported unsupported = {}, bool tls = false)
-    : HarnessFixture(onvifCamera(modes, tls)), unsupported_(std::move(unsupported))
+    : HttpCameraFixture(onvifCamera(modes, tls)), unsupported_(std::move(unsupported))
   {
-    harness_.config().link.http.request_timeout = 2.0;  // longer than the state timeout: silence is seen as silence
-    harness_.config().session.state_timeout = HTTP_TEST_STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override
   {
     skipIfUnsupported(unsupported_);
     return harness_.makeBackend();
-  }
-  std::string linkLossWords() const override
-  {
-    return httpLinkLossWords(harness_.emulator().server());
-  }
-  double replyDeadline() const override
-  {
-    return HTTP_REPLY_DEADLINE;
-  }
-  AxisValues goal(double pan, double tilt) const override
-  {
-    return AxisValues{ { pan, tilt, 2.0 } };
   }
   std::string prepareRefusal(AxisValues& goal) override
   {
