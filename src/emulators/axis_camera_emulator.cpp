@@ -117,10 +117,9 @@ SimDeviceConfig AxisCameraEmulatorConfig::defaultDevice()
 }
 
 AxisCameraEmulator::AxisCameraEmulator(const AxisCameraEmulatorConfig& config, std::shared_ptr<const Clock> clock)
-  : config_(config)
-  , clock_(std::move(clock))
+  : HttpCameraEmulator(withLens(config.device, lensOf(config.zoom_table)), std::move(clock))
+  , config_(config)
   , zoom_table_(lensOf(config.zoom_table))
-  , model_(withLens(config.device, zoom_table_), clock_->now())
 {
   if (config_.model.empty() || config_.model.find_first_of("\r\n") != std::string::npos)
   {
@@ -130,27 +129,6 @@ AxisCameraEmulator::AxisCameraEmulator(const AxisCameraEmulatorConfig& config, s
       config_.http, [this](const std::string& method, const std::string& target, const std::string& body) {
         return handle(method, target, body);
       });
-}
-
-PtzSample AxisCameraEmulator::sample() const
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  return model_.sample(clock_->now());
-}
-
-void AxisCameraEmulator::setRefuse(bool refuse)
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  refuse_ = refuse;
-}
-
-void AxisCameraEmulator::setFaults(const SimFaults& faults)
-{
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    model_.setFaults(faults, clock_->now());
-  }
-  server_->setDelay(faults.reply_delay);  // a slow camera: every answer waits
 }
 
 HttpAnswer AxisCameraEmulator::handle(const std::string& method, const std::string& target, const std::string& body)
@@ -262,7 +240,7 @@ HttpAnswer AxisCameraEmulator::command(const std::string& path, std::map<std::st
   {
     return errorBody("move: unknown value: " + values["move"]);
   }
-  if (refuse_)
+  if (refusing())
   {
     return errorBody(REFUSAL);
   }

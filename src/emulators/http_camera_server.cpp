@@ -1,16 +1,12 @@
+/**
+ * \file
+ * \brief HttpCameraServer: its listener, its keep-alive connections (a request read, answered after the delay or not
+ * at all, the next read; a TLS handshake or plain HTTP on the TLS port told apart) and its fault switches. The
+ * authentication is http_camera_auth.cpp's, the certificate http_camera_tls.cpp's.
+ */
 #include "ptz_action_server/emulators/http_camera_server.h"
 
-#include <openssl/bio.h>
-#include <openssl/evp.h>
-#include <openssl/pem.h>
-#include <openssl/x509.h>
-#include <openssl/x509v3.h>
-
-#include <fstream>
 #include <future>
-#include <map>
-#include <random>
-#include <stdexcept>
 
 #include <boost/asio/post.hpp>
 #include <boost/asio/ssl/stream.hpp>
@@ -18,9 +14,6 @@
 #include <boost/beast/core/flat_buffer.hpp>
 #include <boost/beast/http.hpp>
 
-#include "ptz_action_server/core/http/crypto.h"
-#include "ptz_action_server/core/transport/http_link.h"
-#include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
 #include "ports/socket_server.h"
 
@@ -31,149 +24,11 @@ using boost::asio::ip::tcp;
 
 namespace
 {
-/// The `key=value` / `key="value"` pairs of a Digest Authorization header (after "Digest ").
-std::map<std::string, std::string> digestFields(const std::string& text)
-{
-  std::map<std::string, std::string> fields;
-  std::size_t index = 0;
-  while (index < text.size())
-  {
-    while (index < text.size() && (text[index] == ' ' || text[index] == ','))
-    {
-      ++index;
-    }
-    const std::size_t equals = text.find('=', index);
-    if (equals == std::string::npos)
-    {
-      break;
-    }
-    const std::string key = text.substr(index, equals - index);
-    std::string value;
-    index = equals + 1;
-    if (index < text.size() && text[index] == '"')
-    {
-      const std::size_t close = text.find('"', index + 1);
-      value = text.substr(index + 1, close == std::string::npos ? std::string::npos : close - index - 1);
-      index = close == std::string::npos ? text.size() : close + 1;
-    }
-    else
-    {
-      const std::size_t comma = text.find(',', index);
-      value = text.substr(index, comma == std::string::npos ? std::string::npos : comma - index);
-      index = comma == std::string::npos ? text.size() : comma;
-    }
-    fields[key] = value;
-  }
-  return fields;
-}
-
 const char* reasonOf(unsigned status)
 {
   return http::obsolete_reason(static_cast<http::status>(status)).data();
 }
-
-/// A key and a self-signed certificate made at start, as PEM, with the certificate's SHA-256.
-struct Credentials
-{
-  std::string certificate_pem;
-  std::string key_pem;
-  std::string fingerprint;  ///< "AB:CD:..."
-};
-
-template <typename T, void (*Free)(T*)>
-struct OpenSslFree
-{
-  void operator()(T* pointer) const
-  {
-    Free(pointer);
-  }
-};
-using KeyPointer = std::unique_ptr<EVP_PKEY, OpenSslFree<EVP_PKEY, EVP_PKEY_free>>;
-using CertificatePointer = std::unique_ptr<X509, OpenSslFree<X509, X509_free>>;
-using BioPointer = std::unique_ptr<BIO, OpenSslFree<BIO, BIO_free_all>>;
-using ExtensionPointer = std::unique_ptr<X509_EXTENSION, OpenSslFree<X509_EXTENSION, X509_EXTENSION_free>>;
-
-void check(bool ok, const char* what)
-{
-  if (!ok)
-  {
-    throw std::runtime_error(std::string("the emulated camera cannot make its TLS certificate: ") + what);
-  }
-}
-
-std::string pemOf(const std::function<int(BIO*)>& write)
-{
-  BioPointer bio(BIO_new(BIO_s_mem()));
-  check(bio != nullptr && write(bio.get()) == 1, "PEM");
-  char* data = nullptr;
-  const long size = BIO_get_mem_data(bio.get(), &data);
-  return std::string(data, static_cast<std::size_t>(size));
-}
-
-/// An EC P-256 key and a self-signed X.509 v3 certificate for 127.0.0.1, localhost and \p host, valid for a year.
-Credentials makeCredentials(const std::string& host)
-{
-  KeyPointer key(EVP_EC_gen("P-256"));
-  check(key != nullptr, "EC key");
-  CertificatePointer certificate(X509_new());
-  check(certificate != nullptr, "X509_new");
-  X509* cert = certificate.get();
-  X509_set_version(cert, 2);
-  std::random_device random;
-  ASN1_INTEGER_set(X509_get_serialNumber(cert), static_cast<long>(random() & 0x7fffffff));
-  X509_gmtime_adj(X509_getm_notBefore(cert), -3600);
-  X509_gmtime_adj(X509_getm_notAfter(cert), 365L * 24 * 3600);
-  check(X509_set_pubkey(cert, key.get()) == 1, "public key");
-  X509_NAME* name = X509_get_subject_name(cert);
-  X509_NAME_add_entry_by_txt(name, "O", MBSTRING_ASC,
-                             reinterpret_cast<const unsigned char*>("ptz_action_server emulated camera"), -1, -1, 0);
-  X509_NAME_add_entry_by_txt(name, "CN", MBSTRING_ASC, reinterpret_cast<const unsigned char*>("127.0.0.1"), -1, -1, 0);
-  X509_set_issuer_name(cert, name);
-  std::string names = "IP:127.0.0.1,DNS:localhost";
-  boost::system::error_code not_an_address;
-  const auto address = boost::asio::ip::make_address(host, not_an_address);
-  if (!not_an_address && !address.is_unspecified() && host != "127.0.0.1")
-  {
-    names += ",IP:" + host;
-  }
-  X509V3_CTX context;
-  X509V3_set_ctx_nodb(&context);
-  X509V3_set_ctx(&context, cert, cert, nullptr, nullptr, 0);
-  for (const auto& extension : { std::make_pair(NID_basic_constraints, std::string("critical,CA:TRUE")),
-                                 std::make_pair(NID_subject_alt_name, names) })
-  {
-    ExtensionPointer made(X509V3_EXT_conf_nid(nullptr, &context, extension.first, extension.second.c_str()));
-    check(made != nullptr && X509_add_ext(cert, made.get(), -1) == 1, "extension");
-  }
-  check(X509_sign(cert, key.get(), EVP_sha256()) > 0, "signature");
-
-  Credentials credentials;
-  credentials.certificate_pem = pemOf([cert](BIO* bio) { return PEM_write_bio_X509(bio, cert); });
-  credentials.key_pem = pemOf(
-      [&key](BIO* bio) { return PEM_write_bio_PrivateKey(bio, key.get(), nullptr, nullptr, 0, nullptr, nullptr); });
-  unsigned char digest[EVP_MAX_MD_SIZE];
-  unsigned int length = 0;
-  check(X509_digest(cert, EVP_sha256(), digest, &length) == 1, "digest");
-  static const char* const HEX = "0123456789abcdef";
-  std::string hex;
-  for (unsigned int i = 0; i < length; ++i)
-  {
-    hex += HEX[digest[i] >> 4];
-    hex += HEX[digest[i] & 0x0f];
-  }
-  credentials.fingerprint = formatCertificateFingerprint(hex);
-  return credentials;
-}
 }  // namespace
-
-std::string httpDigestResponse(const std::string& username, const std::string& realm, const std::string& password,
-                               const std::string& method, const std::string& uri, const std::string& nonce,
-                               const std::string& nc, const std::string& cnonce)
-{
-  const std::string ha1 = md5Hex(username + ":" + realm + ":" + password);
-  const std::string ha2 = md5Hex(method + ":" + uri);
-  return md5Hex(ha1 + ":" + nonce + ":" + nc + ":" + cnonce + ":auth:" + ha2);
-}
 
 /// One keep-alive connection: read a request, answer it (after the delay), read the next.
 class HttpCameraServer::Connection : public std::enable_shared_from_this<Connection>
@@ -407,10 +262,7 @@ HttpCameraServer::~HttpCameraServer()
 {
   socket_server_->stop([this] {
     listener_->close();
-    while (!connections_.empty())
-    {
-      (*connections_.begin())->close();
-    }
+    closeConnections();
   });
 }
 
@@ -429,58 +281,9 @@ void HttpCameraServer::accept()
   });
 }
 
-void HttpCameraServer::makeCertificate()
-{
-  namespace ssl = boost::asio::ssl;
-  const Credentials credentials = makeCredentials(config_.host);
-  auto context = std::make_shared<ssl::context>(ssl::context::tls_server);
-  context->set_options(ssl::context::default_workarounds | ssl::context::no_sslv2 | ssl::context::no_sslv3 |
-                       ssl::context::no_tlsv1 | ssl::context::no_tlsv1_1);
-  context->use_certificate(boost::asio::buffer(credentials.certificate_pem), ssl::context::pem);
-  context->use_private_key(boost::asio::buffer(credentials.key_pem), ssl::context::pem);
-  ssl_context_ = context;
-  std::lock_guard<std::mutex> lock(mutex_);
-  certificate_pem_ = credentials.certificate_pem;
-  fingerprint_ = credentials.fingerprint;
-}
-
-void HttpCameraServer::renewCertificate()
-{
-  socket_server_->run([this] {
-    makeCertificate();
-    while (!connections_.empty())
-    {
-      (*connections_.begin())->close();
-    }
-  });
-}
-
-std::string HttpCameraServer::fingerprint() const
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  return fingerprint_;
-}
-
-std::string HttpCameraServer::certificatePem() const
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  return certificate_pem_;
-}
-
 std::string HttpCameraServer::url() const
 {
   return (config_.tls ? "https://" : "http://") + config_.host + ":" + std::to_string(port());
-}
-
-void HttpCameraServer::writeCertificate(const std::string& path) const
-{
-  std::ofstream file(path);
-  file << certificatePem();
-  file.close();
-  if (!file)
-  {
-    throw std::runtime_error("cannot write the certificate to " + path);
-  }
 }
 
 void HttpCameraServer::setSilent(bool silent)
@@ -509,12 +312,15 @@ void HttpCameraServer::setErrorStatus(unsigned status)
 
 void HttpCameraServer::dropConnections()
 {
-  socket_server_->run([this] {
-    while (!connections_.empty())
-    {
-      (*connections_.begin())->close();
-    }
-  });
+  socket_server_->run([this] { closeConnections(); });
+}
+
+void HttpCameraServer::closeConnections()
+{
+  while (!connections_.empty())
+  {
+    (*connections_.begin())->close();  // it leaves connections_
+  }
 }
 
 void HttpCameraServer::setListening(bool listening)
@@ -534,94 +340,6 @@ void HttpCameraServer::setListening(bool listening)
       listener_->close();
     }
   });
-}
-
-void HttpCameraServer::recordSecrets(const std::vector<std::string>& values)
-{
-  if (config_.secrets_file.empty())
-  {
-    return;
-  }
-  std::lock_guard<std::mutex> lock(secrets_mutex_);
-  std::ofstream file(config_.secrets_file, std::ios::app);
-  for (const std::string& value : values)
-  {
-    if (!value.empty())
-    {
-      file << value << '\n';
-    }
-  }
-}
-
-void HttpCameraServer::renewNonce()
-{
-  socket_server_->run([this] { nonce_ = newNonce(); });
-}
-
-std::string HttpCameraServer::newNonce()
-{
-  static thread_local std::mt19937_64 random(std::random_device{}());
-  nonce_used_ = 0;
-  const std::string nonce = base64Encode(formatText("%016llx:%llu", static_cast<unsigned long long>(random()),
-                                                    static_cast<unsigned long long>(++nonce_serial_)));
-  recordSecrets({ nonce });
-  return nonce;
-}
-
-bool HttpCameraServer::authorised(const std::string& method, const std::string& target,
-                                  const std::string& authorization, bool& stale)
-{
-  stale = false;
-  if (config_.auth == HttpAuth::BASIC)
-  {
-    recordSecrets({ authorization.rfind("Basic ", 0) == 0 ? authorization.substr(6) : std::string() });
-    return authorization == "Basic " + base64Encode(config_.username + ":" + config_.password);
-  }
-  if (authorization.rfind("Digest ", 0) != 0)
-  {
-    return false;
-  }
-  std::map<std::string, std::string> fields = digestFields(authorization.substr(7));
-  recordSecrets({ fields["response"], fields["nonce"], fields["cnonce"] });
-  if (fields["nonce"] != nonce_)
-  {
-    stale = !fields["nonce"].empty();
-    return false;
-  }
-  const bool valid = fields["username"] == config_.username && fields["realm"] == config_.realm &&
-                     fields["uri"] == target && fields["qop"] == "auth" &&
-                     fields["response"] == httpDigestResponse(config_.username, config_.realm, config_.password, method,
-                                                              target, nonce_, fields["nc"], fields["cnonce"]);
-  if (valid && config_.nonce_uses > 0 && ++nonce_used_ >= config_.nonce_uses)
-  {
-    nonce_ = newNonce();  // this request passes; the next one meets a stale nonce
-  }
-  return valid;
-}
-
-HttpAnswer HttpCameraServer::answer(const std::string& method, const std::string& target, const std::string& body,
-                                    const std::string& authorization, std::string& challenge)
-{
-  if (config_.auth == HttpAuth::NONE || (open_ && open_(target)))
-  {
-    HttpAnswer answered = handler_(method, target, body);
-    challenge = answered.challenge;
-    return answered;
-  }
-  bool stale = false;
-  if (authorised(method, target, authorization, stale))
-  {
-    return handler_(method, target, body);
-  }
-  ++counters_.challenges;
-  if (!authorization.empty() && !stale)
-  {
-    ++counters_.refused_credentials;
-  }
-  challenge = config_.auth == HttpAuth::BASIC ? "Basic realm=\"" + config_.realm + "\"" :
-                                                "Digest realm=\"" + config_.realm + "\", nonce=\"" + nonce_ +
-                                                    "\", algorithm=MD5, qop=\"auth\"" + (stale ? ", stale=true" : "");
-  return HttpAnswer{ 401, "text/html", "<HTML><HEAD><TITLE>401 Unauthorized</TITLE></HEAD></HTML>\r\n" };
 }
 
 }  // namespace ptz_action_server

@@ -8,7 +8,6 @@
 #include "ptz_action_server/core/http/crypto.h"
 #include "ptz_action_server/core/onvif/onvif_codec.h"
 #include "ptz_action_server/core/text.h"
-#include "ptz_action_server/core/units.h"
 
 namespace ptz_action_server
 {
@@ -130,110 +129,8 @@ SimDeviceConfig modelOf(const OnvifCameraEmulatorConfig& config)
 }
 }  // namespace
 
-const char* const OnvifCameraEmulatorConfig::MODES = "standard, generic-status, continuous-only, refuse-absolute-move, "
-                                                     "no-position, no-presets, wrong-generic-range, "
-                                                     "no-relative, generic-only, wrong-address, ptz-profile-second, "
-                                                     "timeout-range, axis-401, stop-keeps-moving, "
-                                                     "absolute-never-moves, speed-ignores-magnitude, "
-                                                     "zoom-only-moves-pantilt, zoom-range-not-honoured";
-
-SimDeviceConfig OnvifCameraEmulatorConfig::defaultDevice()
-{
-  SimDeviceConfig device = SimDeviceConfig::defaults();
-  device.axes[ZOOM].range = { 1.0, 18.0 };
-  device.axes[PAN].resolution = 0.0;
-  device.axes[TILT].resolution = 0.0;
-  return device;
-}
-
-bool OnvifCameraEmulatorConfig::applyMode(const std::string& mode)
-{
-  if (mode == "generic-status")
-  {
-    degree_space = true;
-    degrees_default = false;
-  }
-  else if (mode == "continuous-only")
-  {
-    absolute = false;
-  }
-  else if (mode == "refuse-absolute-move")
-  {
-    refuse_absolute_move = true;
-  }
-  else if (mode == "no-position")
-  {
-    status_position = false;
-  }
-  else if (mode == "no-presets")
-  {
-    presets = false;
-  }
-  else if (mode == "wrong-generic-range")
-  {
-    degree_space = true;  // the camera of the field report: degrees listed, its status in the generic space
-    degrees_default = false;
-    listed_generic_pan_min = 0.0;
-    listed_generic_pan_max = 1.0;
-    device.axes[PAN].initial_position = -0.864666 * M_PI;
-  }
-  else if (mode == "no-relative")
-  {
-    relative = false;
-  }
-  else if (mode == "generic-only")
-  {
-    degree_space = false;
-  }
-  else if (mode == "wrong-address")
-  {
-    advertised_host = "127.0.0.2";  // wrong, as some firmware's, and still on this machine
-  }
-  else if (mode == "ptz-profile-second")
-  {
-    ptz_profile_first = false;
-  }
-  else if (mode == "timeout-range")
-  {
-    min_timeout = 1.0;
-    max_timeout = 10.0;
-  }
-  else if (mode == "axis-401")
-  {
-    open_clock = false;
-  }
-  else if (mode == "stop-keeps-moving")
-  {
-    stop_keeps_moving = true;
-  }
-  else if (mode == "absolute-never-moves")
-  {
-    absolute_never_moves = true;
-  }
-  else if (mode == "speed-ignores-magnitude")
-  {
-    fixed_speed_share = 0.5;
-    // Such cameras' steppers start and stop at once.
-    device.axes[PAN].motion.acceleration = 20.0;
-    device.axes[TILT].motion.acceleration = 20.0;
-  }
-  else if (mode == "zoom-only-moves-pantilt")
-  {
-    backlash = toRadians(2.0);
-  }
-  else if (mode == "zoom-range-not-honoured")
-  {
-    honoured_zoom = 0.5;
-  }
-  else if (mode != "standard")
-  {
-    return false;
-  }
-  return true;
-}
-
 OnvifCameraEmulator::OnvifCameraEmulator(const OnvifCameraEmulatorConfig& config, std::shared_ptr<const Clock> clock)
-  : config_(config), clock_(std::move(clock)), model_(modelOf(config), clock_->now())
+  : HttpCameraEmulator(modelOf(config), std::move(clock)), config_(config)
 {
   approach_.fill(std::numeric_limits<double>::quiet_NaN());
   home_ = { { config.device.axes[PAN].initial_position, config.device.axes[TILT].initial_position,
@@ -244,29 +141,6 @@ OnvifCameraEmulator::OnvifCameraEmulator(const OnvifCameraEmulatorConfig& config
 }
 
 OnvifCameraEmulator::~OnvifCameraEmulator() = default;
-
-PtzSample OnvifCameraEmulator::sample() const
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  const TimePoint now = clock_->now();
-  advance(now);
-  return model_.sample(now);
-}
-
-void OnvifCameraEmulator::setRefuse(bool refuse)
-{
-  std::lock_guard<std::mutex> lock(mutex_);
-  refuse_ = refuse;
-}
-
-void OnvifCameraEmulator::setFaults(const SimFaults& faults)
-{
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    model_.setFaults(faults, clock_->now());
-  }
-  server_->setDelay(faults.reply_delay);  // a slow camera: every answer waits
-}
 
 std::uint64_t OnvifCameraEmulator::refusedTokens() const
 {

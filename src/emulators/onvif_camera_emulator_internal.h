@@ -1,8 +1,9 @@
 /**
  * \file
- * \brief Private to OnvifCameraEmulator, what its two halves share: the services' paths and tokens, and the SOAP
- * answers and faults in the camera's own prefixes. onvif_camera_emulator.cpp is the camera (its modes, WS-Security,
- * the device and media services), onvif_camera_emulator_ptz.cpp its PTZ service and how it moves.
+ * \brief Private to OnvifCameraEmulator, what its parts share: the services' paths and tokens, and the SOAP answers
+ * and faults in the camera's own prefixes. onvif_camera_emulator.cpp is the camera (WS-Security, the device and media
+ * services), onvif_camera_emulator_modes.cpp its modes, onvif_camera_emulator_ptz.cpp its PTZ service and
+ * onvif_camera_emulator_moves.cpp how it moves.
  */
 #pragma once
 

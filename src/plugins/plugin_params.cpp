@@ -4,19 +4,13 @@
 #include <fstream>
 #include <string>
 
+#include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/transport/http_link.h"
 
 namespace ptz_action_server
 {
 namespace
 {
-std::string trimmed(const std::string& text)
-{
-  const std::size_t first = text.find_first_not_of(" \t\r");
-  const std::size_t last = text.find_last_not_of(" \t\r");
-  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
-}
-
 /// `username: NAME` and `password: SECRET` lines of \p path into \p http. Errors name the file, never its content.
 void readCredentialsFile(const std::string& path, HttpLinkConfig& http)
 {

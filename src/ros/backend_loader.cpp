@@ -2,7 +2,7 @@
 
 #include <ros/names.h>
 
-#include "ptz_action_server/ros/ptz_action_server.h"
+#include "ptz_action_server/core/limits.h"
 
 namespace ptz_action_server
 {
@@ -54,7 +54,7 @@ std::shared_ptr<PtzBackend> BackendLoader::load(const std::string& backend, cons
   }
   plugins_.push_back(plugin);
   BackendContext context;
-  context.urdf_limits = deviceLimits(PtzActionServer::urdfLimits(kinematics), mount);
+  context.urdf_limits = deviceLimits(urdfLimits(kinematics), mount);
   context.joint_names = { { kinematics.panJoint().name, kinematics.tiltJoint().name } };
   // The private namespace's parent is the node's namespace.
   context.node_namespace = ros::NodeHandle(ros::names::parentNamespace(params.nodeHandle().getNamespace()));

@@ -17,10 +17,11 @@ GoalTranslator::GoalTranslator(const PtzKinematics& kinematics, const Capabiliti
 {
 }
 
-std::string GoalTranslator::convert(const PtzGoal& goal, ActionKind kind, const PtzSample& sample,
-                                    GoalCommand& command) const
+ConvertedGoal GoalTranslator::convert(const PtzGoal& goal, ActionKind kind, const PtzSample& current) const
 {
   const AxisValues values{ { goal.pan, goal.tilt, goal.zoom } };
+  ConvertedGoal converted;
+  GoalCommand& command = converted.command;
   switch (kind)
   {
     case ActionKind::POSITION_REL: {
@@ -31,7 +32,7 @@ std::string GoalTranslator::convert(const PtzGoal& goal, ActionKind kind, const 
         const AxisCapability& capability = limits_.axes[axis];
         if (capability.present && capability.feedback)
         {
-          command.values[axis] += sample.position[axis];
+          command.values[axis] += current.position[axis];
         }
         else if (axis == ZOOM && !capability.present)
         {
@@ -53,20 +54,25 @@ std::string GoalTranslator::convert(const PtzGoal& goal, ActionKind kind, const 
           command.values[axis] = axis == ZOOM ? 0.0 : values[axis];  // zoom 0: left alone (leavesAxisAlone())
         }
       }
-      return reason;
+      converted.rejection = reason;
+      break;
     }
     case ActionKind::VELOCITY:
       command.velocity = true;
       command.values = values;
-      return findNonFinite(values, "velocity");
+      converted.rejection = findNonFinite(values, "velocity");
+      break;
     default:
       command.values = values;
-      return findNonFinite(values, "position");
+      converted.rejection = findNonFinite(values, "position");
   }
+  return converted;
 }
 
-std::string GoalTranslator::convert(const PtzRelToGoal& goal, ActionKind, const PtzSample&, GoalCommand& command) const
+ConvertedGoal GoalTranslator::convert(const PtzRelToGoal& goal, ActionKind, const PtzSample&) const
 {
+  ConvertedGoal converted;
+  GoalCommand& command = converted.command;
   std::string reason = findNonFinite({ { goal.pan, goal.tilt, goal.zoom } }, "position");
   Eigen::Isometry3d frame_in_base = Eigen::Isometry3d::Identity();
   if (reason.empty())
@@ -75,21 +81,22 @@ std::string GoalTranslator::convert(const PtzRelToGoal& goal, ActionKind, const 
   }
   if (!reason.empty())
   {
-    return reason;
+    return ConvertedGoal::rejected(reason);
   }
   // The goal's pan and tilt follow the contract's convention in the axes of frame_id.
   const Eigen::Vector3d in_base = frame_in_base.linear() * directionOf(goal.pan, goal.tilt);
   command.values[ZOOM] = goal.zoom;
   if (!kinematics_.aimAlong(in_base, command.values[PAN], command.values[TILT]))
   {
-    return "no pan and tilt aim the camera along that direction of '" + goal.frame_id + "'";
+    return ConvertedGoal::rejected("no pan and tilt aim the camera along that direction of '" + goal.frame_id + "'");
   }
-  return {};
+  return converted;
 }
 
-std::string GoalTranslator::convert(const PtzFrameGoal& goal, ActionKind kind, const PtzSample&,
-                                    GoalCommand& command) const
+ConvertedGoal GoalTranslator::convert(const PtzFrameGoal& goal, ActionKind kind, const PtzSample&) const
 {
+  ConvertedGoal converted;
+  GoalCommand& command = converted.command;
   command.track = kind == ActionKind::TRACK_FRAME;
   std::string reason = findNonFinite({ { 0.0, 0.0, goal.zoom } }, "position");
   Eigen::Isometry3d frame_in_base = Eigen::Isometry3d::Identity();
@@ -99,49 +106,52 @@ std::string GoalTranslator::convert(const PtzFrameGoal& goal, ActionKind kind, c
   }
   if (!reason.empty())
   {
-    return reason;
+    return ConvertedGoal::rejected(reason);
   }
   command.values[ZOOM] = goal.zoom;
   if (!kinematics_.aimAt(frame_in_base.translation(), command.values[PAN], command.values[TILT]))
   {
-    return "cannot point at the origin of '" + goal.frame_id + "': it is too close to the camera";
+    return ConvertedGoal::rejected("cannot point at the origin of '" + goal.frame_id +
+                                   "': it is too close to the camera");
   }
-  return {};
+  return converted;
 }
 
-std::string GoalTranslator::convert(const PtzPresetGoal& goal, ActionKind, const PtzSample&, GoalCommand& command) const
+ConvertedGoal GoalTranslator::convert(const PtzPresetGoal& goal, ActionKind, const PtzSample&) const
 {
   const std::optional<AxisValues> pose = presets_.find(goal.name);
   if (!pose)
   {
-    return "no preset named '" + goal.name + "'";
+    return ConvertedGoal::rejected("no preset named '" + goal.name + "'");
   }
-  command.values = *pose;
-  return {};
+  ConvertedGoal converted;
+  converted.command.values = *pose;
+  return converted;
 }
 
-std::string GoalTranslator::convert(const geometry_msgs::PointStamped& point, const PtzSample& sample,
-                                    GoalCommand& command) const
+ConvertedGoal GoalTranslator::convert(const geometry_msgs::PointStamped& point, const PtzSample& current) const
 {
   const Eigen::Vector3d in_frame(point.point.x, point.point.y, point.point.z);
   if (!in_frame.allFinite())
   {
-    return "the point is not finite";
+    return ConvertedGoal::rejected("the point is not finite");
   }
   Eigen::Isometry3d frame_in_base = Eigen::Isometry3d::Identity();
   const std::string reason = lookupFrame(point.header.frame_id, frame_in_base);
   if (!reason.empty())
   {
-    return reason;
+    return ConvertedGoal::rejected(reason);
   }
+  ConvertedGoal converted;
+  GoalCommand& command = converted.command;
   // The zoom stays where it is (0: left alone on a device that cannot position or report it).
   const AxisCapability& zoom = limits_.axes[ZOOM];
-  command.values[ZOOM] = zoom.present && zoom.absolute && zoom.feedback ? sample.position[ZOOM] : 0.0;
+  command.values[ZOOM] = zoom.present && zoom.absolute && zoom.feedback ? current.position[ZOOM] : 0.0;
   if (!kinematics_.aimAt(frame_in_base * in_frame, command.values[PAN], command.values[TILT]))
   {
-    return "cannot point at it: it is too close to the camera";
+    return ConvertedGoal::rejected("cannot point at it: it is too close to the camera");
   }
-  return {};
+  return converted;
 }
 
 std::string GoalTranslator::lookupFrame(const std::string& frame_id, Eigen::Isometry3d& frame_in_base) const

@@ -1,33 +1,9 @@
-#include <algorithm>
+#include "ptz_action_server/ros/node_config.h"
 
-#include "ptz_action_server/ros/ptz_action_server.h"
+#include <algorithm>
 
 namespace ptz_action_server
 {
-const char* actionName(ActionKind kind)
-{
-  switch (kind)
-  {
-    case ActionKind::POSITION_ABS:
-      return "position_abs";
-    case ActionKind::POSITION_REL:
-      return "position_rel";
-    case ActionKind::VELOCITY:
-      return "velocity";
-    case ActionKind::POSITION_ABS_TF:
-      return "position_abs_tf";
-    case ActionKind::FRAME:
-      return "frame";
-    case ActionKind::TRACK_FRAME:
-      return "track_frame";
-    case ActionKind::PRESET:
-      return "preset";
-    case ActionKind::CLICKED_POINT:
-      return "look_at_clicked_point";
-  }
-  return "?";
-}
-
 NodeConfig NodeConfig::load(const ParamReader& params)
 {
   NodeConfig config;

@@ -1,43 +1,20 @@
 #include "ptz_action_server/ros/ptz_action_server.h"
 
-#include <algorithm>
-#include <cmath>
-#include <functional>
+#include <optional>
+#include <string>
 #include <type_traits>
-#include <vector>
 
 #include <boost/make_shared.hpp>
 
 #include "ptz_action_server/core/capabilities.h"
+#include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/ros/capabilities_message.h"
 #include "ptz_action_server/ros/function_callback.h"
-#include "ptz_action_server/ros/goal_handle_adapter.h"
 #include "ptz_action_server/ros/state_publisher.h"
 
 namespace ptz_action_server
 {
-namespace
-{
-/// The tf frame a goal is expressed in; "" for goals without one.
-std::string frameOf(const PtzGoal&)
-{
-  return {};
-}
-std::string frameOf(const PtzRelToGoal& goal)
-{
-  return goal.frame_id;
-}
-std::string frameOf(const PtzFrameGoal& goal)
-{
-  return goal.frame_id;
-}
-std::string frameOf(const PtzPresetGoal&)
-{
-  return {};
-}
-}  // namespace
-
 PtzActionServer::PtzActionServer(const ros::NodeHandle& node_handle, const NodeConfig& config,
                                  const PtzKinematics& kinematics, std::shared_ptr<PtzBackend> backend)
   : node_handle_(node_handle)
@@ -46,6 +23,7 @@ PtzActionServer::PtzActionServer(const ros::NodeHandle& node_handle, const NodeC
   , backend_(std::move(backend))
   , status_hold_(config.status_hold)
   , status_release_timer_(node_handle_.getCallbackQueue(), [this] { releaseHeldStatuses(); })
+  , servers_(node_handle_, config.action_queue_size, config.status_list_timeout)
 {
 }
 
@@ -66,32 +44,6 @@ PtzActionServer::~PtzActionServer()
     supervisor_->shutdown("the node is shutting down");
   }
   status_hold_.release(TimePoint::max());  // the last words reach the clients without waiting
-}
-
-template <class Action>
-std::unique_ptr<NodeActionServer<Action>> PtzActionServer::makeServer(ActionKind kind)
-{
-  const std::string name = std::string("move_ptz/") + actionName(kind);
-  // A storm of goals from several clients must lose none: large actionlib queues, and finished goals leave the
-  // status list after status_list_timeout, since actionlib republishes the whole list on every goal transition.
-  // Parameters already set under the action's namespace win.
-  ros::NodeHandle action_handle(node_handle_, name);
-  for (const char* parameter : { "actionlib_server_sub_queue_size", "actionlib_server_pub_queue_size" })
-  {
-    if (!action_handle.hasParam(parameter))
-    {
-      action_handle.setParam(parameter, config_.action_queue_size);
-    }
-  }
-  if (!action_handle.hasParam("status_list_timeout"))
-  {
-    action_handle.setParam("status_list_timeout", config_.status_list_timeout);
-  }
-  using Server = NodeActionServer<Action>;
-  return std::make_unique<Server>(
-      node_handle_, name,
-      [this, kind](typename Server::GoalHandle handle) { batchStatuses([&] { onGoal<Action>(handle, kind); }); },
-      [this, kind](typename Server::GoalHandle handle) { batchStatuses([&] { onCancel<Action>(handle, kind); }); });
 }
 
 void PtzActionServer::start()
@@ -135,7 +87,7 @@ void PtzActionServer::start()
   {
     state_publisher_->addFieldOfView(config_.field_of_view);
   }
-  state_publisher_->setTickHook([this] { return publishStatuses(); });
+  state_publisher_->setTickHook([this] { return servers_.publishStatuses(); });
   state_publisher_->setTickCosts(tick_costs_);
   state_publisher_->start();
 
@@ -146,115 +98,13 @@ void PtzActionServer::start()
   frame_tracking_ = std::make_unique<FrameTracking>(node_handle_, kinematics_, limits_, config_.track, *supervisor_,
                                                     *frame_listener_, *backend_);
 
-  position_abs_server_ = makeServer<PtzAction>(ActionKind::POSITION_ABS);
-  position_rel_server_ = makeServer<PtzAction>(ActionKind::POSITION_REL);
-  velocity_server_ = makeServer<PtzAction>(ActionKind::VELOCITY);
-  position_abs_tf_server_ = makeServer<PtzRelToAction>(ActionKind::POSITION_ABS_TF);
-  frame_server_ = makeServer<PtzFrameAction>(ActionKind::FRAME);
-  track_frame_server_ = makeServer<PtzFrameAction>(ActionKind::TRACK_FRAME);
-  preset_server_ = makeServer<PtzPresetAction>(ActionKind::PRESET);
-  startServers();
+  servers_.start([this](auto handle, ActionKind kind) { onGoal(handle, kind); },
+                 [this](auto handle, ActionKind kind) { onCancel(handle, kind); });
   look_at_clicked_point_ = std::make_unique<LookAtClickedPoint>(
       node_handle_, config_.look_at_clicked_point, [this](const geometry_msgs::PointStamped& point) { lookAt(point); });
   ROS_INFO("ptz_action_server ready with backend '%s': pan %s; tilt %s; zoom %s; device extras: %s",
            backend_->name().c_str(), describeAxis(limits_, PAN).c_str(), describeAxis(limits_, TILT).c_str(),
            describeAxis(limits_, ZOOM).c_str(), describeExtras(limits_).c_str());
-}
-
-void PtzActionServer::startServers()
-{
-  // actionlib gives each server a ros::Timer for its status list (5 Hz by default). roscpp's timer manager costs
-  // more than linearly in the timers of a process: 64 cameras in one nodelet manager made 448 of them, which took
-  // a core. So the servers start without one (actionlib_status_frequency 0 under each action's namespace while
-  // they start) and the state tick publishes their lists at the rate actionlib would have used.
-  double frequency = 5.0;
-  const ros::NodeHandle first(node_handle_, std::string("move_ptz/") + actionName(ActionKind::POSITION_ABS));
-  std::string key;
-  if (!first.getParam("status_frequency", frequency) && first.searchParam("actionlib_status_frequency", key))
-  {
-    first.getParam(key, frequency);
-  }
-  constexpr double STATE_TICK_RATE = 10.0;  // Hz, StatePublisher's
-  status_period_ticks_ =
-      frequency > 0.0 ? std::max(1, static_cast<int>(std::lround(STATE_TICK_RATE / std::min(frequency, 10.0)))) : 0;
-  struct Restore
-  {
-    ros::NodeHandle handle;
-    bool had = false;
-    double value = 0.0;
-  };
-  std::vector<Restore> restores;
-  for (ActionKind kind :
-       { ActionKind::POSITION_ABS, ActionKind::POSITION_REL, ActionKind::VELOCITY, ActionKind::POSITION_ABS_TF,
-         ActionKind::FRAME, ActionKind::TRACK_FRAME, ActionKind::PRESET })
-  {
-    Restore restore{ ros::NodeHandle(node_handle_, std::string("move_ptz/") + actionName(kind)) };
-    restore.had = restore.handle.getParam("actionlib_status_frequency", restore.value);
-    restore.handle.setParam("actionlib_status_frequency", 0.0);
-    restores.push_back(restore);
-  }
-  position_abs_server_->start();
-  position_rel_server_->start();
-  velocity_server_->start();
-  position_abs_tf_server_->start();
-  frame_server_->start();
-  track_frame_server_->start();
-  preset_server_->start();
-  for (Restore& restore : restores)
-  {
-    if (restore.had)
-    {
-      restore.handle.setParam("actionlib_status_frequency", restore.value);
-    }
-    else
-    {
-      restore.handle.deleteParam("actionlib_status_frequency");
-    }
-  }
-  servers_started_ = true;
-}
-
-template <class Call>
-void PtzActionServer::forEachServer(Call&& call)
-{
-  const auto each = [&call](auto& server) {
-    if (server)  // start() builds them one by one
-    {
-      call(*server);
-    }
-  };
-  each(position_abs_server_);
-  each(position_rel_server_);
-  each(velocity_server_);
-  each(position_abs_tf_server_);
-  each(frame_server_);
-  each(track_frame_server_);
-  each(preset_server_);
-}
-
-int PtzActionServer::publishStatuses()
-{
-  if (!servers_started_ || status_period_ticks_ == 0 || ++status_ticks_ % status_period_ticks_ != 0)
-  {
-    return 0;
-  }
-  int published = 0;
-  forEachServer([&published](auto& server) { published += server.publishStatusIfListened(); });
-  return published;
-}
-
-void PtzActionServer::batchStatuses(const std::function<void()>& changes)
-{
-  forEachServer([](auto& server) { server.holdStatus(); });
-  struct Release
-  {
-    PtzActionServer& server;
-    ~Release()
-    {
-      server.forEachServer([](auto& action_server) { action_server.releaseStatus(); });
-    }
-  } release{ *this };
-  changes();
 }
 
 void PtzActionServer::postStatus(StatusHold::Change change)
@@ -280,7 +130,7 @@ void PtzActionServer::armStatusRelease(TimePoint due)
 
 void PtzActionServer::releaseHeldStatuses()
 {
-  batchStatuses([this] { armStatusRelease(status_hold_.release(clock_.now())); });
+  servers_.batch([this] { armStatusRelease(status_hold_.release(clock_.now())); });
 }
 
 void PtzActionServer::onBackendSample()
@@ -302,13 +152,12 @@ void PtzActionServer::onGoal(actionlib::ServerGoalHandle<Action> handle, ActionK
 {
   status_hold_.goalArrived(clock_.now());
   frame_hold_->supersede(kind);
-  const std::string frame_id = frameOf(*handle.getGoal());
-  const bool on_frame =
-      kind == ActionKind::POSITION_ABS_TF || kind == ActionKind::FRAME || kind == ActionKind::TRACK_FRAME;
-  if (on_frame && frame_hold_->mustWait(frame_id))
+  // A goal on a tf frame starts the tf listener, and waits for the frame if it is not known yet.
+  const std::optional<std::string> frame_id = GoalTranslator::frameOf(*handle.getGoal());
+  if (frame_id && frame_hold_->mustWait(*frame_id))
   {
     const auto result = [] { return typename Action::_action_result_type::_result_type(); };
-    frame_hold_->hold({ handle.getGoalID().id, frame_id, [this, handle, kind] { submit(handle, kind); },
+    frame_hold_->hold({ handle.getGoalID().id, *frame_id, [this, handle, kind] { submit(handle, kind); },
                         [this, handle, result](const std::string& text) {
                           postStatus([handle, result, text]() mutable { handle.setRejected(result(), text); });
                         },
@@ -324,10 +173,9 @@ template <class Action>
 void PtzActionServer::submit(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
 {
   const auto goal = handle.getGoal();
-  supervisor_->submit(std::make_unique<GoalHandleAdapter<Action>>(handle, kind, statusPoster()),
-                      [&](const PtzSample& current, GoalCommand& command) {
-                        return translator_->convert(*goal, kind, current, command);
-                      });
+  const PtzSample current = backend_->sample();
+  supervisor_->submit(std::make_unique<GoalHandleAdapter<Action>>(handle, kind, statusPoster()), current,
+                      translator_->convert(*goal, kind, current));
   if constexpr (std::is_same_v<Action, PtzFrameAction>)
   {
     const std::string& id = handle.getGoalID().id;
@@ -353,9 +201,9 @@ void PtzActionServer::lookAt(const geometry_msgs::PointStamped& point)
   frame_hold_->supersede(ActionKind::CLICKED_POINT);
   const std::string id = std::string(ClickedPointGoal::ACTION) + "_" + std::to_string(++clicked_points_);
   const auto submit_point = [this, point, id] {
-    supervisor_->submit(
-        std::make_unique<ClickedPointGoal>(id, describePoint(point)),
-        [&](const PtzSample& current, GoalCommand& command) { return translator_->convert(point, current, command); });
+    const PtzSample current = backend_->sample();
+    supervisor_->submit(std::make_unique<ClickedPointGoal>(id, describePoint(point)), current,
+                        translator_->convert(point, current));
   };
   if (frame_hold_->mustWait(point.header.frame_id))
   {

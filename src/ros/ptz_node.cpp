@@ -5,12 +5,16 @@
 #include <ros/callback_queue.h>
 
 #include "ptz_action_server/core/closed_loop_backend.h"
+#include "ptz_action_server/ros/sim_camera_publisher.h"
 
 namespace ptz_action_server
 {
+PtzNode::PtzNode() = default;
+
 PtzNode::~PtzNode()
 {
-  server_.reset();  // stops using the backend before it goes
+  camera_.reset();  // each stops using the backend before it goes
+  server_.reset();
   backend_.reset();
 }
 
@@ -26,6 +30,11 @@ void PtzNode::start(const ros::NodeHandle& node_handle, const ros::NodeHandle& p
                       " is not set: load the URDF first (the launch file does)");
   }
   const PtzKinematics kinematics = PtzKinematics::fromUrdf(urdf, config.names);
+  // The picture is the simulated camera's by default; another backend (joint_topics, for a simulator without a camera
+  // of its own) draws it when ~camera/enabled asks.
+  const std::string backend_name = config.backend.substr(config.backend.rfind('/') + 1);
+  const SimCameraSettings camera =
+      SimCameraSettings::load(params.child("camera"), backend_name == "sim", kinematics, config.field_of_view.model);
   // Position goals on a device that only moves at a speed are steered on its state, in the device's own angles; the
   // mount maps those to the contract's, under everything else (goals, limits, state, tf).
   backend_ = applyMount(
@@ -38,6 +47,10 @@ void PtzNode::start(const ros::NodeHandle& node_handle, const ros::NodeHandle& p
   server_ = std::make_unique<PtzActionServer>(node_handle, config, kinematics, backend_);
   server_->setTickCosts(tick_costs_);
   server_->start();
+  if (camera.enabled)
+  {
+    camera_ = std::make_unique<SimCameraPublisher>(node_handle, camera, kinematics, backend_);
+  }
 }
 
 void spinUntilShutdown()

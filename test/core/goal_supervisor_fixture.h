@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -165,6 +166,19 @@ private:
   std::shared_ptr<GoalLog> log_;
 };
 
+/// A goal as the test writes it: fills \p command from the device's \p current state, returns "" or why it is refused.
+using GoalConverter = std::function<std::string(const PtzSample& current, GoalCommand& command)>;
+
+/// Submits \p goal to \p supervisor as the node does: converted by \p convert against \p backend's sample first.
+inline void submitConverted(GoalSupervisor& supervisor, const PtzBackend& backend, std::unique_ptr<GoalHandle> goal,
+                            const GoalConverter& convert)
+{
+  const PtzSample current = backend.sample();
+  ConvertedGoal converted;
+  converted.rejection = convert(current, converted.command);
+  supervisor.submit(std::move(goal), current, converted);
+}
+
 inline GoalConverter positionGoal(double pan, double tilt, double zoom)
 {
   return [=](const PtzSample&, GoalCommand& command) {
@@ -183,7 +197,7 @@ inline std::string runGoalToItsEnd(std::shared_ptr<PtzBackend> backend, const Go
 {
   GoalSupervisor supervisor(backend, backend->capabilities(), config, false);
   auto log = std::make_shared<GoalLog>();
-  supervisor.submit(std::make_unique<RecordingGoal>("position_abs", "goal", log), goal);
+  submitConverted(supervisor, *backend, std::make_unique<RecordingGoal>("position_abs", "goal", log), goal);
   waitUntil(
       [&] {
         supervisor.supervise(supervisor.sample());
@@ -219,7 +233,7 @@ protected:
                                   const std::string& action = "position_abs")
   {
     auto log = std::make_shared<GoalLog>();
-    supervisor_.submit(std::make_unique<RecordingGoal>(action, id, log), convert);
+    submitConverted(supervisor_, *backend_, std::make_unique<RecordingGoal>(action, id, log), convert);
     return log;
   }
 

@@ -12,7 +12,9 @@ TEST(CoreSources, IncludeNothingFromRos)
       R"(#\s*include\s*[<"](ros/|actionlib|tf2|tf2_ros/|pluginlib|diagnostic_updater|sensor_msgs|std_msgs|ptz_action_server/(Ptz|SetSimFaults)))");
   const std::filesystem::path root(PTZ_SOURCE_DIR);
   int files = 0;
-  for (const char* folder : { "include/ptz_action_server/core", "src/core" })
+  // The simulated camera's renderer too: plain C++ and OpenCV.
+  for (const char* folder :
+       { "include/ptz_action_server/core", "src/core", "include/ptz_action_server/render", "src/render" })
   {
     for (const auto& entry : std::filesystem::recursive_directory_iterator(root / folder))
     {

@@ -87,6 +87,80 @@ TEST(FieldOfViewTest, OneRowTableHoldsItsAngles)
   EXPECT_NEAR(fixed.focalScale(1.0, 12.0).x, 1.0, 1e-12);
 }
 
+TEST(FieldOfViewTest, ZoomForUndoesAtForBothLaws)
+{
+  const FieldOfViewModel lens = FieldOfViewModel::fromWideEnd({ 60.0 * DEGREE, 34.0 * DEGREE });
+  const FieldOfViewModel divided = FieldOfViewModel::fromWideEnd({ 1.2, 0.7 }, ZoomLaw::DIVIDED);
+  for (const FieldOfViewModel* model : { &lens, &divided })
+  {
+    for (double zoom : { 1.0, 1.3, 4.0, 12.5, 36.0 })
+    {
+      const FieldOfViewAngles angles = model->at(zoom);
+      EXPECT_NEAR(model->zoomFor(angles.horizontal, ViewDirection::HORIZONTAL), zoom, 1e-9 * zoom) << zoom;
+      EXPECT_NEAR(model->zoomFor(angles.vertical, ViewDirection::VERTICAL), zoom, 1e-9 * zoom) << zoom;
+    }
+    // Wider than the wide end: the widest there is.
+    EXPECT_DOUBLE_EQ(model->zoomFor(model->at(1.0).horizontal + 0.1, ViewDirection::HORIZONTAL), 1.0);
+  }
+  // The laws differ: the lens needs less zoom than the division for the same narrow angle (tan grows faster).
+  EXPECT_NEAR(divided.zoomFor(0.3, ViewDirection::HORIZONTAL), 4.0, 1e-12);
+  EXPECT_NEAR(lens.zoomFor(15.0 * DEGREE, ViewDirection::HORIZONTAL), std::tan(30.0 * DEGREE) / std::tan(7.5 * DEGREE),
+              1e-12);
+}
+
+TEST(FieldOfViewTest, ZoomForWalksATableAndStopsAtItsEnds)
+{
+  // Non-ideal rows, starting above 1 X, with a horizontal angle that stays flat from 2 X to 4 X.
+  const FieldOfViewModel table = FieldOfViewModel::fromTable(
+      { { 1.5, { 1.0, 0.6 } }, { 2.0, { 0.5, 0.3 } }, { 4.0, { 0.5, 0.2 } }, { 6.0, { 0.25, 0.1 } } });
+  for (double zoom : { 1.5, 1.8, 2.0, 3.0, 4.0, 4.5, 6.0 })
+  {
+    EXPECT_NEAR(table.zoomFor(table.at(zoom).vertical, ViewDirection::VERTICAL), zoom, 1e-9) << zoom;
+  }
+  for (double zoom : { 1.5, 1.8, 4.7, 6.0 })
+  {
+    EXPECT_NEAR(table.zoomFor(table.at(zoom).horizontal, ViewDirection::HORIZONTAL), zoom, 1e-9) << zoom;
+  }
+  // The flat span: the largest zoom that still shows 0.5 rad.
+  EXPECT_NEAR(table.zoomFor(0.5, ViewDirection::HORIZONTAL), 4.0, 1e-12);
+  // Outside the table: its first row's zoom for a wider view, its last for a narrower one.
+  EXPECT_DOUBLE_EQ(table.zoomFor(1.4, ViewDirection::HORIZONTAL), 1.5);
+  EXPECT_DOUBLE_EQ(table.zoomFor(0.01, ViewDirection::VERTICAL), 6.0);
+  // A one-row table has a single zoom.
+  const FieldOfViewModel fixed = FieldOfViewModel::fromTable({ { 1.0, { 1.2, 0.7 } } });
+  EXPECT_DOUBLE_EQ(fixed.zoomFor(0.2, ViewDirection::HORIZONTAL), 1.0);
+}
+
+TEST(FieldOfViewTest, ZoomShowingKeepsBothAnglesInView)
+{
+  const FieldOfViewModel lens = FieldOfViewModel::fromWideEnd({ 60.0 * DEGREE, 34.0 * DEGREE });
+  // A span relatively wider than the view: its horizontal angle decides; one relatively taller: its vertical one.
+  for (const FieldOfViewAngles span : { FieldOfViewAngles{ 0.2, 0.05 }, FieldOfViewAngles{ 0.05, 0.2 } })
+  {
+    const double zoom = lens.zoomShowing(span);
+    const FieldOfViewAngles view = lens.at(zoom);
+    EXPECT_GE(view.horizontal, span.horizontal - 1e-12);
+    EXPECT_GE(view.vertical, span.vertical - 1e-12);
+    EXPECT_NEAR(std::min(view.horizontal - span.horizontal, view.vertical - span.vertical), 0.0, 1e-12);
+  }
+  EXPECT_DOUBLE_EQ(lens.zoomShowing({ 0.2, 0.05 }), lens.zoomFor(0.2, ViewDirection::HORIZONTAL));
+  EXPECT_DOUBLE_EQ(lens.zoomShowing({ 0.05, 0.2 }), lens.zoomFor(0.2, ViewDirection::VERTICAL));
+  // A missing angle does not count; with none there is no answer.
+  EXPECT_DOUBLE_EQ(lens.zoomShowing({ 0.2, std::nan("") }), lens.zoomFor(0.2, ViewDirection::HORIZONTAL));
+  EXPECT_TRUE(std::isnan(lens.zoomShowing({ std::nan(""), 0.0 })));
+}
+
+TEST(FieldOfViewTest, ZoomForRefusesAnglesOutsideZeroToPi)
+{
+  const FieldOfViewModel lens = FieldOfViewModel::fromWideEnd({ 1.0, 0.6 });
+  const FieldOfViewModel table = FieldOfViewModel::fromTable({ { 1.0, { 1.0, 0.6 } }, { 5.0, { 0.3, 0.2 } } });
+  for (double angle : { 0.0, -0.1, M_PI, 4.0, std::nan(""), HUGE_VAL })
+  {
+    EXPECT_TRUE(std::isnan(lens.zoomFor(angle, ViewDirection::HORIZONTAL))) << angle;
+    EXPECT_TRUE(std::isnan(table.zoomFor(angle, ViewDirection::VERTICAL))) << angle;
+  }
+}
+
 TEST(FieldOfViewTest, BadModelsAreRefused)
 {
   EXPECT_THROW(FieldOfViewModel::fromWideEnd({ 0.0, 0.5 }), ConfigError);

@@ -42,14 +42,24 @@ TEST_F(GoalSupervisorTest, APositionGoalGivesFeedbackUntilTheDeviceRestsInsideTh
 TEST_F(GoalSupervisorTest, GoalsAreRejectedWhileTheLinkIsDownAndNothingMoves)
 {
   backend_->state.link_up = false;
-  bool converted = false;
-  const auto goal = submit([&](const PtzSample&, GoalCommand&) {
-    converted = true;
-    return std::string();
-  });
+  const auto goal = submit(positionGoal(0.5, 0.0, 1.0));
   EXPECT_EQ(goal->end, "REJECTED: the fake device link is down");
   EXPECT_FALSE(goal->accepted);
-  EXPECT_FALSE(converted);
+  // The link comes first: a goal its conversion refused is rejected for the link too.
+  const auto refused = submit([](const PtzSample&, GoalCommand&) { return std::string("pan position is NaN"); });
+  EXPECT_EQ(refused->end, "REJECTED: the fake device link is down");
+  EXPECT_TRUE(backend_->commands.empty());
+}
+
+TEST_F(GoalSupervisorTest, TheLinkIsJudgedOnTheSampleTheGoalWasConvertedAgainst)
+{
+  auto log = std::make_shared<GoalLog>();
+  PtzSample current = backend_->sample();
+  current.link_up = false;
+  ConvertedGoal converted;
+  converted.command.values = { 0.5, 0.0, 1.0 };
+  supervisor_.submit(std::make_unique<RecordingGoal>("position_abs", "goal", log), current, converted);
+  EXPECT_EQ(log->end, "REJECTED: the fake device link is down");
   EXPECT_TRUE(backend_->commands.empty());
 }
 
@@ -65,7 +75,7 @@ TEST_F(GoalSupervisorTest, RefusedGoalsAreRejectedAndLeaveTheActiveGoalAlone)
   EXPECT_EQ(backend_->commands, std::vector<std::string>{ "goTo 1.00 0.00 1.00" });
 }
 
-TEST_F(GoalSupervisorTest, TheConverterSeesTheCurrentState)
+TEST_F(GoalSupervisorTest, AGoalConvertedAgainstTheCurrentStateMovesFromThere)
 {
   backend_->at({ 0.3, 0.1, 2.0 }, false);
   const auto goal = submit([](const PtzSample& current, GoalCommand& command) {
@@ -245,7 +255,7 @@ protected:
   std::shared_ptr<GoalLog> submitBlind(const GoalConverter& convert)
   {
     auto log = std::make_shared<GoalLog>();
-    blind_.submit(std::make_unique<RecordingGoal>("position_abs", "blind", log), convert);
+    submitConverted(blind_, *backend_, std::make_unique<RecordingGoal>("position_abs", "blind", log), convert);
     return log;
   }
   GoalSupervisor blind_;
@@ -298,7 +308,7 @@ protected:
   std::shared_ptr<GoalLog> submitToUnit(const GoalConverter& convert, const std::string& action = "position_abs")
   {
     auto log = std::make_shared<GoalLog>();
-    unit_.submit(std::make_unique<RecordingGoal>(action, "unit", log), convert);
+    submitConverted(unit_, *backend_, std::make_unique<RecordingGoal>(action, "unit", log), convert);
     return log;
   }
   GoalSupervisor unit_;

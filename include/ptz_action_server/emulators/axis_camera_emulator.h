@@ -13,6 +13,7 @@
 #include "ptz_action_server/core/axis/vapix_codec.h"
 #include "ptz_action_server/core/axis/vapix_queue.h"
 #include "ptz_action_server/core/sim/sim_device_model.h"
+#include "ptz_action_server/emulators/http_camera_emulator.h"
 #include "ptz_action_server/emulators/http_camera_server.h"
 
 namespace ptz_action_server
@@ -67,7 +68,7 @@ struct AxisCameraEmulatorConfig
  * body as the camera words it. `/axis-cgi/param.cgi?action=list&group=root.Brand` answers the brand parameters. Other
  * paths: 404. Thread-safe.
  */
-class AxisCameraEmulator : public HttpCameraFaults<AxisCameraEmulator>
+class AxisCameraEmulator : public HttpCameraEmulator
 {
 public:
   explicit AxisCameraEmulator(const AxisCameraEmulatorConfig& config,
@@ -77,16 +78,12 @@ public:
   {
     return server_->port();
   }
-  HttpCameraServer& server()
+  HttpCameraServer& server() override
   {
     return *server_;
   }
-  /// The model's state now (rad, X).
-  PtzSample sample() const;
-  /// Answers every move with `Error:` (as a camera whose PTZ control another user holds).
-  void setRefuse(bool refuse);
-  /// Fault hooks of the motion model: a stalled axis accepts every command and silently stays where it is.
-  void setFaults(const SimFaults& faults);
+  // sample(), setFaults() and setRefuse() are HttpCameraEmulator's: under setRefuse() every move is answered with
+  // `Error:` REFUSAL.
   /// What the camera was asked, classified (axis_camera_classify.cpp); challenged requests left out.
   std::vector<ClassifiedCommand> classify() const;
   /// control_queue: another client (a browser, a guard tour) holds PTZ control for \p seconds from now (-1: for good,
@@ -115,11 +112,8 @@ private:
   std::string queueParameters(const std::string& group) const;
 
   const AxisCameraEmulatorConfig config_;
-  const std::shared_ptr<const Clock> clock_;
   vapix::ZoomTable zoom_table_;
-  mutable std::mutex mutex_;  ///< guards the model and refuse_
-  mutable SimDeviceModel model_;
-  bool refuse_ = false;
+  // Guarded by mutex_, with the model.
   std::string holder_;  ///< the client that holds PTZ control ("" none)
   TimePoint held_until_{};
   bool held_for_good_ = false;

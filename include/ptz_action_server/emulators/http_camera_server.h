@@ -6,6 +6,7 @@
  */
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <set>
@@ -20,7 +21,6 @@
 #include "ptz_action_server/core/counter.h"
 #include "ptz_action_server/core/transport/link.h"
 #include "ptz_action_server/core/types.h"
-#include "ptz_action_server/emulators/emulator_faults.h"
 #include "ptz_action_server/emulators/ports/received_log.h"
 
 namespace ptz_action_server
@@ -159,6 +159,8 @@ private:
   friend class Connection;
 
   void accept();
+  /// Closes every open connection (server thread).
+  void closeConnections();
   /// The answer to one request; \p challenge set for a 401.
   HttpAnswer answer(const std::string& method, const std::string& target, const std::string& body,
                     const std::string& authorization, std::string& challenge);
@@ -193,46 +195,6 @@ private:
   std::string nonce_;
   unsigned nonce_used_ = 0;
   std::uint64_t nonce_serial_ = 0;
-};
-
-/**
- * \brief The faults of an emulated IP camera (\p Camera: its server() and its model's setFaults()): silence, dropped
- * connections and endless answers of its server, slow answers and impossible reports of its model. No garbage mode
- * (HTTP), no flood (the camera answers requests).
- */
-template <class Camera>
-class HttpCameraFaults : public EmulatorFaults
-{
-protected:
-  bool faultSilence(bool on) override
-  {
-    camera().server().setSilent(on);
-    return true;
-  }
-  bool faultDrop(bool on) override
-  {
-    if (on)
-    {
-      camera().server().dropConnections();
-    }
-    return true;
-  }
-  bool faultEndless(bool on) override
-  {
-    camera().server().setEndless(on);
-    return true;
-  }
-  bool faultModel(EmulatorFault /*fault*/, const SimFaults& faults) override
-  {
-    camera().setFaults(faults);
-    return true;
-  }
-
-private:
-  Camera& camera()
-  {
-    return static_cast<Camera&>(*this);
-  }
 };
 
 }  // namespace ptz_action_server

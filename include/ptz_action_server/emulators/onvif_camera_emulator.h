@@ -11,6 +11,7 @@
 #include <string>
 
 #include "ptz_action_server/core/sim/sim_device_model.h"
+#include "ptz_action_server/emulators/http_camera_emulator.h"
 #include "ptz_action_server/emulators/http_camera_server.h"
 
 namespace tinyxml2
@@ -127,7 +128,7 @@ struct OnvifCameraEmulatorConfig
  * ter:MovingPTZ, ter:TooManyPresets; env:Receiver / ter:ActionNotSupported for what it does not do. Answers use
  * prefixes of their own (`env:`, a default namespace), as cameras differ.
  */
-class OnvifCameraEmulator : public HttpCameraFaults<OnvifCameraEmulator>
+class OnvifCameraEmulator : public HttpCameraEmulator
 {
 public:
   explicit OnvifCameraEmulator(const OnvifCameraEmulatorConfig& config,
@@ -138,7 +139,7 @@ public:
   {
     return server_->port();
   }
-  HttpCameraServer& server()
+  HttpCameraServer& server() override
   {
     return *server_;
   }
@@ -146,11 +147,8 @@ public:
   {
     return config_;
   }
-  PtzSample sample() const;
-  /// Refuses every move with a fault carrying REFUSAL.
-  void setRefuse(bool refuse);
-  /// Fault hooks of the motion model: a stalled axis accepts every command and silently stays where it is.
-  void setFaults(const SimFaults& faults);
+  // sample(), setFaults() and setRefuse() are HttpCameraEmulator's: under setRefuse() every move is refused with a
+  // fault carrying REFUSAL.
   /// What the camera was asked, classified (onvif_camera_classify.cpp); challenged requests left out.
   std::vector<ClassifiedCommand> classify() const;
   static constexpr const char* REFUSAL = "PTZ is locked by another user";
@@ -176,7 +174,7 @@ private:
   std::string checkToken(const onvif::SoapMessage& message) const;
   /// Brings the camera's own doings up to \p now: a ContinuousMove's Timeout running out, the second half of a
   /// backlash approach.
-  void advance(TimePoint now) const;
+  void advance(TimePoint now) const override;
   double cameraUtc() const;
   /// "http://127.0.0.1:8081": where its XAddrs point.
   std::string serviceAddress() const;
@@ -199,10 +197,7 @@ private:
   }
 
   const OnvifCameraEmulatorConfig config_;
-  const std::shared_ptr<const Clock> clock_;
-  mutable std::mutex mutex_;  ///< guards everything below
-  mutable SimDeviceModel model_;
-  bool refuse_ = false;
+  // Guarded by mutex_, with the model.
   mutable std::array<bool, AXIS_COUNT> velocity_axes_{};  ///< axes a ContinuousMove moves until its timeout
   TimePoint velocity_until_{};
   /// Backlash: the target each pan-tilt axis goes on to once it has reached the point below it (NaN: none).

@@ -6,7 +6,8 @@
 
 namespace ptz_action_server
 {
-/// One of the actions, for names and messages.
+/// One of the actions, for names and messages; each action has its row, in this order, in NODE_ACTIONS
+/// (action_servers.h), the table of the node's actions.
 enum class ActionKind
 {
   POSITION_ABS,
@@ -19,7 +20,7 @@ enum class ActionKind
   CLICKED_POINT,  ///< not an action: a point on the clicked point topic (LookAtClickedPoint)
 };
 
-/// "position_abs", ..., the name under move_ptz/.
+/// "position_abs", ..., the name under move_ptz/ (NODE_ACTIONS); "look_at_clicked_point" for a clicked point.
 const char* actionName(ActionKind kind);
 
 }  // namespace ptz_action_server

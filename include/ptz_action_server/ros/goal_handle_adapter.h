@@ -5,17 +5,26 @@
  */
 #pragma once
 
+#include <functional>
 #include <string>
 #include <utility>
 
-#include <actionlib/server/server_goal_handle.h>
+#include <actionlib/server/action_server.h>
 #include <ros/console.h>
 
 #include "ptz_action_server/core/goal/goal_supervisor.h"
-#include "ptz_action_server/ros/ptz_action_server.h"
+#include "ptz_action_server/core/goal/status_hold.h"
+#include "ptz_action_server/ros/action_kind.h"
 
 namespace ptz_action_server
 {
+/// Runs a goal status change now or later (see StatusHold), and says whether changes are being held.
+struct StatusPoster
+{
+  std::function<void(StatusHold::Change)> post;
+  std::function<bool()> holding;
+};
+
 /// actionlib's goal handle of any of the node's action types, seen through the supervisor's GoalHandle.
 template <class Action>
 class GoalHandleAdapter : public GoalHandle

@@ -5,6 +5,7 @@
  */
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -23,26 +24,42 @@
 namespace ptz_action_server
 {
 /**
- * \brief Translates the node's goals for the GoalSupervisor (its GoalConverter), which calls it with the device's
- * current sample when it takes a goal.
+ * \brief Converts the node's goals into the GoalSupervisor's commands, against the device's current sample, before
+ * they are submitted.
  *
  * Frames are looked up once, at the latest transform, without waiting (a frame goal that must wait for tf waits
- * before it reaches the supervisor: FrameGoalHold). One thread: the node's main queue.
+ * before it is converted: FrameGoalHold). One thread: the node's main queue.
  */
 class GoalTranslator
 {
 public:
-  /// \p frames and \p presets must outlive the converter. \p limits are the node's.
+  /// \p frames and \p presets must outlive the translator. \p limits are the node's.
   GoalTranslator(const PtzKinematics& kinematics, const Capabilities& limits, const FrameListener& frames,
                  const PresetServices& presets);
 
-  /// Each returns "" with \p command filled, or the reason to reject the goal.
-  std::string convert(const PtzGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
-  std::string convert(const PtzRelToGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
-  std::string convert(const PtzFrameGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
-  std::string convert(const PtzPresetGoal& goal, ActionKind kind, const PtzSample& sample, GoalCommand& command) const;
+  /// The tf frame a goal is expressed in, which it may have to wait for (FrameGoalHold); none for a goal without
+  /// one.
+  template <class Goal>
+  static std::optional<std::string> frameOf(const Goal&)
+  {
+    return std::nullopt;
+  }
+  static std::optional<std::string> frameOf(const PtzRelToGoal& goal)
+  {
+    return goal.frame_id;
+  }
+  static std::optional<std::string> frameOf(const PtzFrameGoal& goal)
+  {
+    return goal.frame_id;
+  }
+
+  /// Each returns the goal's command, or the reason to reject it; \p current is the device's state.
+  ConvertedGoal convert(const PtzGoal& goal, ActionKind kind, const PtzSample& current) const;
+  ConvertedGoal convert(const PtzRelToGoal& goal, ActionKind kind, const PtzSample& current) const;
+  ConvertedGoal convert(const PtzFrameGoal& goal, ActionKind kind, const PtzSample& current) const;
+  ConvertedGoal convert(const PtzPresetGoal& goal, ActionKind kind, const PtzSample& current) const;
   /// A clicked point: the optical axis through it, the zoom where it is.
-  std::string convert(const geometry_msgs::PointStamped& point, const PtzSample& sample, GoalCommand& command) const;
+  ConvertedGoal convert(const geometry_msgs::PointStamped& point, const PtzSample& current) const;
 
 private:
   /// The transform from \p frame_id to the base frame, looked up once without waiting; "" or the reason.

@@ -16,6 +16,21 @@
 
 namespace ptz_action_server
 {
+/// A NodeActionServer of any action type, as the node's table of servers (ActionServers) sees it.
+class NodeActionServerBase
+{
+public:
+  virtual ~NodeActionServerBase() = default;
+  /// actionlib's ActionServer::start(): subscribes to goals and cancels, advertises the topics.
+  virtual void startServer() = 0;
+  /// The periodic list: published if the status topic has a subscriber; returns whether it was.
+  virtual bool publishStatusIfListened() = 0;
+  /// Transitions from now on publish their list at releaseStatus(). Holds nest.
+  virtual void holdStatus() = 0;
+  /// Ends a holdStatus(); the last one publishes the list if a transition wanted it since.
+  virtual void releaseStatus() = 0;
+};
+
 /**
  * \brief An actionlib server whose status list the node publishes instead of a ros::Timer of its own.
  *
@@ -31,7 +46,7 @@ namespace ptz_action_server
  * the server's lock.
  */
 template <class Action>
-class NodeActionServer : public actionlib::ActionServer<Action>
+class NodeActionServer : public actionlib::ActionServer<Action>, public NodeActionServerBase
 {
 public:
   using GoalHandle = typename actionlib::ActionServer<Action>::GoalHandle;
@@ -43,8 +58,12 @@ public:
   {
   }
 
-  /// The periodic list: published if the status topic has a subscriber; returns whether it was.
-  bool publishStatusIfListened()
+  void startServer() override
+  {
+    this->start();
+  }
+
+  bool publishStatusIfListened() override
   {
     if (!status_.listened())
     {
@@ -54,15 +73,13 @@ public:
     return true;
   }
 
-  /// Transitions from now on publish their list at releaseStatus(). Holds nest.
-  void holdStatus()
+  void holdStatus() override
   {
     boost::recursive_mutex::scoped_lock lock(this->lock_);
     ++holds_;
   }
 
-  /// Ends a holdStatus(); the last one publishes the list if a transition wanted it since.
-  void releaseStatus()
+  void releaseStatus() override
   {
     boost::recursive_mutex::scoped_lock lock(this->lock_);
     if (--holds_ == 0 && held_)

@@ -5,83 +5,43 @@
 #pragma once
 
 #include <atomic>
-#include <functional>
+#include <cstdint>
 #include <memory>
 #include <mutex>
-#include <optional>
-#include <string>
 
+#include <actionlib/server/action_server.h>
+#include <geometry_msgs/PointStamped.h>
 #include <ros/ros.h>
 
-#include "ptz_action_server/PtzAction.h"
-#include "ptz_action_server/PtzFrameAction.h"
-#include "ptz_action_server/PtzPresetAction.h"
-#include "ptz_action_server/PtzRelToAction.h"
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/goal/goal_supervisor.h"
-#include "ptz_action_server/core/motion/kinematics.h"
-#include "ptz_action_server/core/limits.h"
 #include "ptz_action_server/core/goal/status_hold.h"
+#include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/ros/action_kind.h"
+#include "ptz_action_server/ros/action_servers.h"
 #include "ptz_action_server/ros/frame_goal_hold.h"
 #include "ptz_action_server/ros/frame_listener.h"
 #include "ptz_action_server/ros/frame_tracking.h"
+#include "ptz_action_server/ros/goal_handle_adapter.h"
 #include "ptz_action_server/ros/goal_translator.h"
 #include "ptz_action_server/ros/look_at_clicked_point.h"
-#include "ptz_action_server/ros/node_action_server.h"
-#include "ptz_action_server/ros/param_reader.h"
+#include "ptz_action_server/ros/node_config.h"
 #include "ptz_action_server/ros/preset_services.h"
 #include "ptz_action_server/ros/queue_timer.h"
 #include "ptz_action_server/ros/tick_costs.h"
-#include "ptz_action_server/ros/view_config.h"
 
 namespace ptz_action_server
 {
-/// The node's own settings (the backend reads its own under ~<backend>/).
-struct NodeConfig
-{
-  std::string backend = "sim";       ///< plugin name; "sim" means "ptz_action_server/sim"
-  bool clamp_goals = false;          ///< clamp out-of-range goals instead of rejecting them
-  bool publish_tf = true;            ///< false: leave tf to robot_state_publisher (joint_states still published)
-  KinematicsNames names;             ///< URDF joint and link names
-  GoalMonitorConfig monitor;         ///< tolerances, stall and timeout rules
-  int action_queue_size = 2000;      ///< actionlib goal/cancel subscriber and publisher queues
-  double status_list_timeout = 1.0;  ///< s a finished goal stays in actionlib's status list (actionlib: 5)
-  double frame_listen_time = 10.0;   ///< s the node keeps listening to tf after the last frame goal
-  double frame_wait = 1.0;           ///< s a frame goal may wait for tf once the node starts listening
-  FrameTrackerConfig track;          ///< how track_frame goals steer
-  double status_hold = 0.02;         ///< s goal status changes wait after a new goal (StatusHold); 0: off
-  MountConfig mount;                 ///< how the device is mounted; PtzNode wraps the backend with it
-  /// The field_of_view topic and the zoomed camera_info.
-  FieldOfViewSettings field_of_view;
-  PresetConfig presets;                            ///< the presets file and home
-  LookAtClickedPointConfig look_at_clicked_point;  ///< "look here" from rviz
-  /// The node's private namespace (/left/ptz_action_server): its name in the diagnostics, as a process or a nodelet.
-  std::string node_name;
-
-  /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
-  /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,
-  /// ~status_list_timeout, ~frame_listen_time, ~frame_wait, ~track/rate, ~track/gain, ~track/feed_forward,
-  /// ~track_timeout, ~status_hold, ~mount, ~pan_offset, ~field_of_view/*, ~camera_info_topic, ~camera_info_zoom,
-  /// ~look_at_clicked_point, ~clicked_point_topic and the presets' (see PresetConfig::load).
-  static NodeConfig load(const ParamReader& params);
-};
-
-/// Runs a goal status change now or later (see StatusHold), and says whether changes are being held.
-struct StatusPoster
-{
-  std::function<void(StatusHold::Change)> post;
-  std::function<bool()> holding;
-};
-
 class StatePublisher;
 
 /**
  * \brief The ptz_action_server node around one backend.
  *
  * It wires ROS to the core: a goal goes from its action callback (through the FrameGoalHold if it must wait for tf)
- * to the GoalSupervisor, which converts it with the GoalTranslator, checks it and commands the backend; the goal
- * handle's status changes go through the StatusHold. The StatePublisher runs the 10 Hz state tick.
+ * to the GoalTranslator, which converts it into a command against the device's current state, and then to the
+ * GoalSupervisor, which checks it and commands the backend; the goal handle's status changes go through the
+ * StatusHold. ActionServers holds the action servers (one row each in NODE_ACTIONS); the StatePublisher runs the
+ * 10 Hz state tick.
  *
  * Threads: the node handle's queue (the main thread) runs every action callback and the supervisor; the state tick
  * runs on the process's TimerThread and hands each sample to the main thread for the goal's feedback and verdict.
@@ -113,37 +73,12 @@ public:
     return limits_;
   }
 
-  /// Pan and tilt limits and speeds from the URDF (the core's urdfLimits(), kept here for its callers).
-  static Capabilities urdfLimits(const PtzKinematics& kinematics)
-  {
-    return ptz_action_server::urdfLimits(kinematics);
-  }
-
 private:
-  using PtzServer = NodeActionServer<PtzAction>;
-  using PtzRelToServer = NodeActionServer<PtzRelToAction>;
-  using PtzFrameServer = NodeActionServer<PtzFrameAction>;
-  using PtzPresetServer = NodeActionServer<PtzPresetAction>;
-
-  /// The action server of \p kind, not started, with the node's queue sizes and status_list_timeout.
-  template <class Action>
-  std::unique_ptr<NodeActionServer<Action>> makeServer(ActionKind kind);
-  /// Starts the action servers without a status timer each: publishStatuses() publishes their status lists.
-  void startServers();
-  /// On the state thread, every tick: publishes the listened servers' status lists at actionlib_status_frequency;
-  /// returns how many it published.
-  int publishStatuses();
-  /// Runs \p changes (goal status changes, on the main thread) with each server's transitions making one status list,
-  /// published when they are done.
-  void batchStatuses(const std::function<void()>& changes);
-  /// Calls \p call with each action server built so far.
-  template <class Call>
-  void forEachServer(Call&& call);
   template <class Action>
   void onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   template <class Action>
   void onCancel(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
-  /// Hands a goal to the supervisor, which converts, checks and runs it.
+  /// Converts a goal against the device's current state and hands it to the supervisor, which checks and runs it.
   template <class Action>
   void submit(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   /// Aims the optical axis at a clicked point, as a frame goal aims it at a frame's origin: it waits for tf the same
@@ -183,9 +118,6 @@ private:
   };
   std::shared_ptr<ListenerTarget> listener_target_;
   std::atomic<bool> verdict_check_queued_{ false };  ///< an early verdict check waits on the main queue
-  std::atomic<bool> servers_started_{ false };       ///< the action servers are started: their status may go out
-  int status_period_ticks_ = 0;                      ///< state ticks between status lists; 0: none (set before start)
-  int status_ticks_ = 0;                             ///< state ticks so far (state thread)
   TickCosts* tick_costs_ = nullptr;                  ///< the benchmark's, or null
 
   // Frame lookups for position_abs_tf and frame goals; the listener feeds the buffer from the main queue.
@@ -193,15 +125,9 @@ private:
   std::unique_ptr<FrameGoalHold> frame_hold_;   ///< a frame goal waiting for tf; built by start()
   std::unique_ptr<GoalTranslator> translator_;  ///< goals to commands; built by start()
 
-  std::unique_ptr<PtzServer> position_abs_server_;
-  std::unique_ptr<PtzServer> position_rel_server_;
-  std::unique_ptr<PtzServer> velocity_server_;
-  std::unique_ptr<PtzRelToServer> position_abs_tf_server_;
-  std::unique_ptr<PtzFrameServer> frame_server_;
-  std::unique_ptr<PtzFrameServer> track_frame_server_;
-  std::unique_ptr<FrameTracking> frame_tracking_;  ///< steers track_frame goals; built by start()
-  std::unique_ptr<PresetServices> presets_;        ///< the preset services and lookups; built by start()
-  std::unique_ptr<PtzPresetServer> preset_server_;
+  ActionServers servers_;                                      ///< one per action; started by start()
+  std::unique_ptr<FrameTracking> frame_tracking_;              ///< steers track_frame goals; built by start()
+  std::unique_ptr<PresetServices> presets_;                    ///< the preset services and lookups; built by start()
   std::unique_ptr<LookAtClickedPoint> look_at_clicked_point_;  ///< the switch; built by start()
   std::uint64_t clicked_points_ = 0;                           ///< clicked points so far, for their ids
 };

@@ -15,9 +15,11 @@
 
 namespace ptz_action_server
 {
+class SimCameraPublisher;
+
 /**
- * \brief Owns what a running ptz_action_server is made of, in the order it must go: the server, the backend, then
- * the plugin library the backend's code lives in.
+ * \brief Owns what a running ptz_action_server is made of, in the order it must go: the simulated camera's picture,
+ * the server, the backend, then the plugin library the backend's code lives in.
  */
 class PtzNode
 {
@@ -25,7 +27,7 @@ public:
   /// Lets a caller wrap the loaded backend (the benchmark stamps every command).
   using BackendWrapper = std::function<std::shared_ptr<PtzBackend>(std::shared_ptr<PtzBackend>)>;
 
-  PtzNode() = default;
+  PtzNode();  // defined where SimCameraPublisher is complete
   ~PtzNode();
   PtzNode(const PtzNode&) = delete;
   PtzNode& operator=(const PtzNode&) = delete;
@@ -45,6 +47,7 @@ private:
   BackendLoader loader_;  ///< first: destroyed last
   std::shared_ptr<PtzBackend> backend_;
   std::unique_ptr<PtzActionServer> server_;
+  std::unique_ptr<SimCameraPublisher> camera_;  ///< the picture (~camera/enabled), or null
   TickCosts* tick_costs_ = nullptr;
 };
 

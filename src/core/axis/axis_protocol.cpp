@@ -16,17 +16,8 @@ int percentOf(double value, double full)
 }
 }  // namespace
 
-LinkConfig AxisProtocol::defaultLink()
-{
-  LinkConfig link;
-  link.kind = LinkKind::HTTP;
-  link.port = 80;
-  link.reconnect_min = 0.1;
-  return link;
-}
-
 AxisProtocol::AxisProtocol(const AxisSettings& settings, DeviceSession& session)
-  : settings_(settings), session_(session), http_(session.http())
+  : HttpDeviceProtocol(session), settings_(settings)
 {
   if (!settings_.zoom_table.empty() && settings_.zoom_max_factor != 0.0)
   {
@@ -70,31 +61,26 @@ Capabilities AxisProtocol::capabilities() const
 bool AxisProtocol::exchange(const std::string& path, const std::string& what, std::string& body, std::string& problem)
 {
   request_.path = path;
-  const HttpReply& answer = http_.request(request_);
+  const HttpReply* answer = send(request_);
   problem.clear();
-  if (!answer.delivered)
+  if (answer == nullptr)
   {
     return false;  // the link is lost, with its reason
   }
-  switch (answer.status)
+  switch (answer->status)
   {
     case 200:
     case 204:
-      body = answer.body;
+      body = answer->body;
       return true;
-    case 401:
-      problem = "HTTP 401 Unauthorized: the camera refused the credentials of user '" +
-                session_.linkConfig().http.username + "' for " + what;
-      break;
     case 403:
-      problem =
-          "HTTP 403 Forbidden: user '" + session_.linkConfig().http.username + "' may not control PTZ (" + what + ")";
+      problem = "HTTP 403 Forbidden: user '" + httpUser() + "' may not control PTZ (" + what + ")";
       break;
     case 404:
       problem = "HTTP 404 Not Found: " + path.substr(0, path.find('?')) + " (no VAPIX PTZ at this address?)";
       break;
     default:
-      problem = formatText("HTTP %ld answering %s", answer.status, what.c_str());
+      problem = statusProblem(answer->status, what);  // 401 too
       break;
   }
   ++counters_.error_answers;
@@ -123,16 +109,6 @@ bool AxisProtocol::request(const std::string& arguments, vapix::Reply& reply, st
     return false;
   }
   return true;
-}
-
-void AxisProtocol::setupFailed(const std::string& problem)
-{
-  if (problem.empty())
-  {
-    return;  // the link was lost: it reopens and the set-up runs again
-  }
-  session_.failStartup(problem);
-  session_.disconnect(problem);
 }
 
 void AxisProtocol::onConnected()
@@ -252,14 +228,8 @@ void AxisProtocol::command(const std::string& arguments)
   if (!done && !problem.empty())
   {
     ++counters_.refusals;
-    session_.reportFault(problem, serial);
   }
-  if (done || !problem.empty())
-  {
-    // An answer, even a refusal: the camera is alive. A slow camera's command and the next poll, one request at a
-    // time, may leave more than state_timeout between two positions; each answer within it keeps the link up.
-    session_.reportAlive();
-  }
+  commandResult(done, problem, serial);
 }
 
 void AxisProtocol::goTo(const AxisValues& position)
@@ -298,7 +268,7 @@ void AxisProtocol::stop()
 void AxisProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   values.emplace_back("camera", std::to_string(settings_.camera));
-  values.emplace_back("user", session_.linkConfig().http.username);  // never the password
+  values.emplace_back("user", httpUser());  // never the password
   {
     std::lock_guard<std::mutex> lock(facts_mutex_);
     values.emplace_back("zoom X-factor", zoom_text_.empty() ? "not asked yet" : zoom_text_);
@@ -318,10 +288,7 @@ void AxisProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 
 void AxisProtocol::validate(const DeviceConfig<AxisProtocol>& config)
 {
-  if (config.link.kind != LinkKind::HTTP)
-  {
-    throw ConfigError("an Axis camera is reached over HTTP");
-  }
+  requireHttp(config.link, "an Axis camera");
 }
 
 }  // namespace ptz_action_server

@@ -5,23 +5,14 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "ptz_action_server/core/text.h"
+
 namespace ptz_action_server
 {
 namespace flir
 {
 namespace
 {
-std::string trim(const std::string& text)
-{
-  const std::size_t first = text.find_first_not_of(" \t");
-  if (first == std::string::npos)
-  {
-    return {};
-  }
-  const std::size_t last = text.find_last_not_of(" \t");
-  return text.substr(first, last - first + 1);
-}
-
 /// The first number (-12, 3.5, 185.1428) in \p text; false if there is none. Verbose replies put the value first and
 /// may carry other numbers after it (`* Pan acceleration is 2000 positions/sec^2`).
 bool firstNumber(const std::string& text, double& value)
@@ -72,15 +63,15 @@ const char* const RESET_ANSWERS[] = { "!T!T!P!P*", "!T!T*", "!P!P*" };
 /// A limit hit reports each axis once, so two reports of one axis ahead of a bare `*` come from nothing else.
 std::string resetAnswer(const std::string& line)
 {
-  const std::string trimmed = trim(line);
+  const std::string bare = trimmed(line);
   for (const char* answer : RESET_ANSWERS)
   {
     const std::size_t length = std::strlen(answer);
-    if (trimmed.size() < length || trimmed.compare(trimmed.size() - length, length, answer) != 0)
+    if (bare.size() < length || bare.compare(bare.size() - length, length, answer) != 0)
     {
       continue;
     }
-    const std::string echo = trim(trimmed.substr(0, trimmed.size() - length));
+    const std::string echo = trimmed(bare.substr(0, bare.size() - length));
     if (std::all_of(echo.begin(), echo.end(),
                     [](char character) { return std::isalpha(static_cast<unsigned char>(character)) != 0; }))
     {
@@ -105,12 +96,12 @@ std::size_t leadingLimitReports(const std::string& text)
 Reply classifyRest(const std::string& line)
 {
   Reply reply;
-  const std::string trimmed = trim(line);
-  if (isBannerLine(trimmed))
+  const std::string bare = trimmed(line);
+  if (isBannerLine(bare))
   {
     // An E-series unit ends its banner with `Initializing...*` once it is ready, which is no reply to anything.
     reply.kind = Reply::Kind::BANNER;
-    reply.text = trimmed;
+    reply.text = bare;
     return reply;
   }
   const std::size_t start = line.find_first_of("*!");
@@ -119,7 +110,7 @@ Reply classifyRest(const std::string& line)
     reply.text = line;
     return reply;  // TEXT: an echo without a reply, noise
   }
-  const std::string rest = trim(line.substr(start + 1));
+  const std::string rest = trimmed(line.substr(start + 1));
   if (line[start] == '!')
   {
     reply.kind = Reply::Kind::ERROR;
@@ -158,7 +149,7 @@ void classifyLine(const std::string& line, std::vector<Reply>& replies)
     }
     rest.push_back(line[index]);
   }
-  if (!trim(rest).empty())
+  if (!trimmed(rest).empty())
   {
     replies.push_back(classifyRest(rest));
   }

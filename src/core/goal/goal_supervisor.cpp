@@ -12,21 +12,19 @@ GoalSupervisor::GoalSupervisor(std::shared_ptr<PtzBackend> backend, const Capabi
 {
 }
 
-void GoalSupervisor::submit(std::unique_ptr<GoalHandle> goal, const GoalConverter& convert)
+void GoalSupervisor::submit(std::unique_ptr<GoalHandle> goal, const PtzSample& current, const ConvertedGoal& converted)
 {
-  const PtzSample current = backend_->sample();
   if (!current.link_up)
   {
     goal->reject("the " + backend_->name() + " device link is down");
     return;
   }
-  GoalCommand command;
-  const std::string reason = convert(current, command);
-  if (!reason.empty())
+  if (!converted.rejection.empty())
   {
-    goal->reject(reason);
+    goal->reject(converted.rejection);
     return;
   }
+  GoalCommand command = converted.command;
   // A tracked target outside the limits is followed as far as the limits allow.
   const bool clamp = clamp_goals_ || command.track;
   const ValidatedGoal validated = command.velocity ? validateVelocityGoal(command.values, limits_, clamp) :

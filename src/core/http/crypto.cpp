@@ -3,7 +3,6 @@
 #include <openssl/evp.h>
 #include <openssl/rand.h>
 
-#include <cstdio>
 #include <stdexcept>
 
 namespace ptz_action_server
@@ -19,18 +18,23 @@ std::string digest(const EVP_MD* type, const std::string& bytes)
 }
 }  // namespace
 
+std::string hexDigits(const unsigned char* bytes, std::size_t count)
+{
+  static const char* const DIGITS = "0123456789abcdef";
+  std::string hex;
+  hex.reserve(2 * count);
+  for (std::size_t index = 0; index < count; ++index)
+  {
+    hex += DIGITS[bytes[index] >> 4];
+    hex += DIGITS[bytes[index] & 0x0f];
+  }
+  return hex;
+}
+
 std::string md5Hex(const std::string& text)
 {
   const std::string raw = digest(EVP_md5(), text);
-  std::string hex;
-  hex.reserve(2 * raw.size());
-  for (unsigned char byte : raw)
-  {
-    char digits[3];
-    std::snprintf(digits, sizeof(digits), "%02x", byte);
-    hex += digits;
-  }
-  return hex;
+  return hexDigits(reinterpret_cast<const unsigned char*>(raw.data()), raw.size());
 }
 
 std::string sha1(const std::string& bytes)

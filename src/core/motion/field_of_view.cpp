@@ -26,6 +26,11 @@ FieldOfViewAngles anglesOf(const FieldOfViewAngles& focal)
 {
   return { 2.0 * std::atan(1.0 / focal.horizontal), 2.0 * std::atan(1.0 / focal.vertical) };
 }
+
+double fieldOfViewSide(const FieldOfViewAngles& angles, ViewDirection direction)
+{
+  return direction == ViewDirection::HORIZONTAL ? angles.horizontal : angles.vertical;
+}
 }  // namespace
 
 FieldOfViewModel FieldOfViewModel::fromWideEnd(const FieldOfViewAngles& wide_end, ZoomLaw law)
@@ -122,6 +127,48 @@ FocalScale FieldOfViewModel::focalScale(double calibration_zoom, double zoom) co
   const FieldOfViewAngles from = focalAt(calibration_zoom);
   const FieldOfViewAngles to = focalAt(zoom);
   return { to.horizontal / from.horizontal, to.vertical / from.vertical };
+}
+
+double FieldOfViewModel::zoomFor(double angle, ViewDirection direction) const
+{
+  if (!validAngle(angle))
+  {
+    return std::nan("");
+  }
+  if (wide_end_model_)
+  {
+    const double wide = fieldOfViewSide(wide_end_, direction);
+    // LENS: 1 / tan(fov / 2) = X / tan(wide / 2); DIVIDED: fov = wide / X.
+    const double zoom = law_ == ZoomLaw::DIVIDED ? wide / angle : std::tan(wide / 2.0) / std::tan(angle / 2.0);
+    return std::max(zoom, 1.0);
+  }
+  // The focal length grows (or stays) with zoom row by row: find the last row whose focal length is still at most the
+  // wanted one (its view at least as wide), then go linearly in focal length towards the next row.
+  const double focal = 1.0 / std::tan(angle / 2.0);
+  const auto beyond = std::upper_bound(focal_rows_.begin(), focal_rows_.end(), focal,
+                                       [direction](double wanted, const FieldOfViewRow& row) {
+                                         return wanted < fieldOfViewSide(row.angles, direction);
+                                       });
+  if (beyond == focal_rows_.begin())
+  {
+    return focal_rows_.front().zoom;  // wider than the widest row
+  }
+  const FieldOfViewRow& low = *(beyond - 1);
+  if (beyond == focal_rows_.end())
+  {
+    return low.zoom;  // as narrow as the last row or narrower
+  }
+  const FieldOfViewRow& high = *beyond;  // its focal length is larger than the wanted one: no division by zero
+  const double low_focal = fieldOfViewSide(low.angles, direction);
+  const double fraction = (focal - low_focal) / (fieldOfViewSide(high.angles, direction) - low_focal);
+  return low.zoom + fraction * (high.zoom - low.zoom);
+}
+
+double FieldOfViewModel::zoomShowing(const FieldOfViewAngles& span) const
+{
+  // fmin takes the other when one is NaN, and NaN only when both are.
+  return std::fmin(zoomFor(span.horizontal, ViewDirection::HORIZONTAL),
+                   zoomFor(span.vertical, ViewDirection::VERTICAL));
 }
 
 }  // namespace ptz_action_server

@@ -116,16 +116,6 @@ void OnvifProtocol::chooseVelocityTimeout(double min, double max)
                       settings_.velocity_timeout, min, max, velocity_timeout_, 0.5 * velocity_timeout_));
 }
 
-void OnvifProtocol::setupFailed(const std::string& problem)
-{
-  if (problem.empty())
-  {
-    return;
-  }
-  session_.failStartup(problem);
-  session_.disconnect(problem);
-}
-
 bool OnvifProtocol::bringUp(std::string& problem, onvif::Status& status)
 {
   using namespace onvif;

@@ -105,19 +105,11 @@ bool OnvifProtocol::command(const std::string& path, const std::string& body, co
   const std::uint64_t serial = session_.currentCommand();
   std::string problem;
   const bool done = call(path, body, true, problem);
-  if (!done && !problem.empty())
+  commandResult(done, problem, serial);
+  if (!done && !problem.empty() && std::string(operation) == "AbsoluteMove" &&
+      onvif::faultHas(message_, "ActionNotSupported"))
   {
-    session_.reportFault(problem, serial);
-    if (std::string(operation) == "AbsoluteMove" && onvif::faultHas(message_, "ActionNotSupported"))
-    {
-      absoluteMoveRefused(message_.fault_text);
-    }
-  }
-  if (done || !problem.empty())
-  {
-    // An answer, even a fault: the camera is alive (a slow camera's command and the next GetStatus may leave more
-    // than state_timeout between two positions; each answer within it keeps the link up).
-    session_.reportAlive();
+    absoluteMoveRefused(message_.fault_text);
   }
   if (std::string(operation) == "ContinuousMove")
   {

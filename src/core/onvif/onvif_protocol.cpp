@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 
-#include "ptz_action_server/core/text.h"
 #include "ptz_action_server/core/units.h"
 
 namespace ptz_action_server
@@ -17,15 +16,6 @@ AxisRange radians(const onvif::Range& range)
   return AxisRange{ toRadians(std::max(range.min, -180.0)), toRadians(std::min(range.max, 180.0)) };
 }
 }  // namespace
-
-LinkConfig OnvifProtocol::defaultLink()
-{
-  LinkConfig link;
-  link.kind = LinkKind::HTTP;
-  link.port = 80;
-  link.reconnect_min = 0.1;
-  return link;
-}
 
 namespace
 {
@@ -41,9 +31,8 @@ onvif::MotionCheckConfig motionCheckOf(const OnvifSettings& settings, const Devi
 }  // namespace
 
 OnvifProtocol::OnvifProtocol(const OnvifSettings& settings, DeviceSession& session)
-  : settings_(settings)
-  , session_(session)
-  , http_(session.http())
+  : HttpDeviceProtocol(session)
+  , settings_(settings)
   , motion_check_(motionCheckOf(settings, session))
   , velocity_timeout_(settings.velocity_timeout)
 {
@@ -157,14 +146,14 @@ bool OnvifProtocol::call(const std::string& path, const std::string& body, bool 
   {
     request_.body = onvif::envelope(body);
   }
-  const HttpReply& reply = http_.request(request_);
-  if (!reply.delivered)
+  const HttpReply* reply = send(request_);
+  if (reply == nullptr)
   {
     return false;
   }
   const std::string element = body.substr(1, body.find_first_of(" />") - 1);
   const std::string operation = element.substr(element.find(':') + 1);  // "tptz:Stop" -> "Stop"
-  const std::string malformed = onvif::parseSoap(reply.body, message_);
+  const std::string malformed = onvif::parseSoap(reply->body, message_);
   if (malformed.empty() && message_.fault)
   {
     ++counters_.faults;
@@ -172,15 +161,10 @@ bool OnvifProtocol::call(const std::string& path, const std::string& body, bool 
     problem = "the ONVIF camera refused " + operation + ": " + message_.fault_text;
     return false;
   }
-  if (reply.status == 401)
+  if (reply->status >= 400 || reply->status < 200)
   {
-    unauthorized_ = true;
-    problem = "HTTP 401 Unauthorized: the camera refused the credentials of user '" +
-              session_.linkConfig().http.username + "' for " + operation;
-  }
-  else if (reply.status == 403 || reply.status == 404 || reply.status >= 400 || reply.status < 200)
-  {
-    problem = formatText("HTTP %ld answering %s at %s", reply.status, operation.c_str(), path.c_str());
+    unauthorized_ = reply->status == 401;
+    problem = statusProblem(reply->status, operation, path);
   }
   else if (!malformed.empty())
   {
@@ -354,10 +338,7 @@ void OnvifProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 
 void OnvifProtocol::validate(const DeviceConfig<OnvifProtocol>& config)
 {
-  if (config.link.kind != LinkKind::HTTP)
-  {
-    throw ConfigError("an ONVIF camera is reached over HTTP");
-  }
+  requireHttp(config.link, "an ONVIF camera");
   if (config.settings.zoom_max <= 1.0 || config.settings.velocity_timeout < 1)
   {
     throw ConfigError("ONVIF zoom_max must be > 1 and velocity_timeout >= 1 s");

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "ptz_action_server/core/text.h"
+
 namespace ptz_action_server
 {
 namespace onvif
@@ -101,13 +103,7 @@ std::string text(const Element* element)
   {
     return {};
   }
-  std::string trimmed = value;
-  const std::size_t first = trimmed.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos)
-  {
-    return {};
-  }
-  return trimmed.substr(first, trimmed.find_last_not_of(" \t\r\n") - first + 1);
+  return trimmed(value);
 }
 
 std::string parseSoap(const std::string& xml, SoapMessage& message)

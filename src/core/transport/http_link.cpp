@@ -19,6 +19,7 @@
 #include <boost/asio/post.hpp>
 
 #include "links.h"
+#include "ptz_action_server/core/http/crypto.h"
 #include "ptz_action_server/core/text.h"
 
 namespace ptz_action_server
@@ -65,13 +66,7 @@ int checkPinnedCertificate(X509_STORE_CTX* store, void* pin_pointer)
     X509_STORE_CTX_set_error(store, X509_V_ERR_UNSPECIFIED);
     return 0;
   }
-  static const char* const HEX = "0123456789abcdef";
-  std::string presented;
-  for (unsigned int i = 0; i < length; ++i)
-  {
-    presented += HEX[digest[i] >> 4];
-    presented += HEX[digest[i] & 0x0f];
-  }
+  const std::string presented = hexDigits(digest, length);
   if (presented == pin.expected)
   {
     pin.presented.clear();

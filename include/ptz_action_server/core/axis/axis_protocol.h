@@ -14,6 +14,7 @@
 #include "ptz_action_server/core/axis/vapix_codec.h"
 #include "ptz_action_server/core/axis/vapix_queue.h"
 #include "ptz_action_server/core/device/device_backend.h"
+#include "ptz_action_server/core/http/http_device_protocol.h"
 
 namespace ptz_action_server
 {
@@ -90,18 +91,12 @@ enum class AxisZoomSource
  * attributes and param.cgi only inform. A command answered with `Error:` or an HTTP error is a device fault with the
  * camera's words.
  */
-class AxisProtocol : public DeviceProtocol
+class AxisProtocol : public HttpDeviceProtocol
 {
 public:
-  /// DeviceConfig<AxisProtocol> (device_backend.h): these settings, and the defaults of the link and the session.
+  /// DeviceConfig<AxisProtocol> (device_backend.h): these settings, and the defaults of the link and the session
+  /// (HttpDeviceProtocol's: state is `query=position` every 100 ms).
   using Settings = AxisSettings;
-  /// kind HTTP, port 80 (443 with TLS), Digest.
-  static LinkConfig defaultLink();
-  /// State is `query=position` every 100 ms; no answer for 0.5 s drops the link.
-  static DeviceSessionConfig defaultSession()
-  {
-    return { 0.5, 0.1, 10.0, 0.15, 0.5 };
-  }
   /// Throws ConfigError for a config this protocol cannot run (not over HTTP, ...).
   static void validate(const DeviceConfig<AxisProtocol>& config);
 
@@ -118,9 +113,6 @@ public:
   /// Pan, tilt within +-180 / +-90 deg until the camera's limits are read; zoom as the settings say.
   Capabilities capabilities() const override;
   void onConnected() override;
-  void onReceived(const std::uint8_t*, std::size_t) override
-  {
-  }
   /// `query=position`.
   void poll() override;
   /// `pan tilt zoom speed`, fractional degrees, the zoom through the table (left out as NaN); without a table or zoom
@@ -144,15 +136,13 @@ public:
 
 private:
   /// GETs \p path; true and \p body filled on a 200 or 204, otherwise \p problem says why ("" when the link was
-  /// lost: the session has its reason). \p what names the request in the problem.
+  /// lost: the session has its reason). \p what names the request in the problem. Every request goes through it.
   bool exchange(const std::string& path, const std::string& what, std::string& body, std::string& problem);
   /// Sends `ptz.cgi?camera=N&` + \p arguments; true and \p reply filled when the camera answered usably, otherwise
   /// \p problem says why ("" when the link was lost: the session has its reason).
   bool request(const std::string& arguments, vapix::Reply& reply, std::string& problem);
   /// A command: a refusal or error answer is a fault of the current command.
   void command(const std::string& arguments);
-  /// The set-up failed: the start fails with \p problem; after a start, the connection is set up again later.
-  void setupFailed(const std::string& problem);
   /// Finds the zoom X-factor (zoom_table_, zoom_source_); false when the set-up cannot go on (it said why).
   bool findZoomTable(const vapix::Limits& limits);
   Capabilities cameraCapabilities(const vapix::Limits& limits, const vapix::CommandList& commands) const;
@@ -169,8 +159,6 @@ private:
   double zoomFactor(const vapix::Position& position) const;
 
   const AxisSettings settings_;
-  DeviceSession& session_;
-  HttpChannel& http_;
   AxisCounters counters_;
   vapix::ZoomTable configured_table_;  ///< from zoom_table or zoom_max_factor; empty: find out
 

@@ -8,9 +8,9 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/goal/goal_monitor.h"
@@ -47,8 +47,20 @@ struct GoalSample
   PtzSample sample;
 };
 
-/// Converts a goal into \p command, given the device's \p current state; returns "" or the reason to reject it.
-using GoalConverter = std::function<std::string(const PtzSample& current, GoalCommand& command)>;
+/// A goal converted from its action against the device's state (by the ROS layer): its command, or why it is refused.
+struct ConvertedGoal
+{
+  GoalCommand command;
+  std::string rejection;  ///< "": the goal asks for \c command; else why it is rejected (a NaN, an unknown frame)
+
+  /// A goal refused with \p reason.
+  static ConvertedGoal rejected(std::string reason)
+  {
+    ConvertedGoal converted;
+    converted.rejection = std::move(reason);
+    return converted;
+  }
+};
 
 /**
  * \brief A goal of any action, as the supervisor sees it. The ROS layer adapts actionlib's goal handle to it.
@@ -96,11 +108,12 @@ public:
   GoalSupervisor& operator=(const GoalSupervisor&) = delete;
 
   /**
-   * \brief Rejects \p goal while the link is down, or when \p convert or the limits refuse it; otherwise preempts the
+   * \brief Rejects \p goal if the link was down in \p current (the backend's sample \p converted was converted
+   * against), else with the conversion's rejection, or when the limits refuse its command; otherwise preempts the
    * active goal, accepts \p goal, commands the device and judges the goal at once on a fresh sample (a goal the
    * device already satisfies ends here).
    */
-  void submit(std::unique_ptr<GoalHandle> goal, const GoalConverter& convert);
+  void submit(std::unique_ptr<GoalHandle> goal, const PtzSample& current, const ConvertedGoal& converted);
 
   /// Stops the device if the goal \p id of \p action is the active one; it ends once the device rests.
   void cancel(const std::string& action, const std::string& id);

@@ -1,7 +1,7 @@
 /**
  * \file
  * \brief The digests and encodings IP cameras authenticate with (OpenSSL's libcrypto): MD5 for HTTP Digest, SHA-1 and
- * Base64 for WS-Security's UsernameToken PasswordDigest.
+ * Base64 for WS-Security's UsernameToken PasswordDigest, hex digits for digests and certificate fingerprints.
  */
 #pragma once
 
@@ -10,6 +10,8 @@
 
 namespace ptz_action_server
 {
+/// \p count bytes as lower-case hex digits, two a byte.
+std::string hexDigits(const unsigned char* bytes, std::size_t count);
 /// MD5 of \p text as 32 lower-case hex digits.
 std::string md5Hex(const std::string& text);
 /// The 20 raw bytes of SHA-1 of \p bytes.

@@ -36,6 +36,13 @@ enum class ZoomLaw
   DIVIDED,  ///< fov(X) = fov(1) / X, as a virtual camera may define it (DigiView's fov = fov_wide / zoom)
 };
 
+/// One of the two angles of a field of view.
+enum class ViewDirection
+{
+  HORIZONTAL,
+  VERTICAL,
+};
+
 /**
  * \brief Field of view as a function of zoom: a lens model or a measured table.
  *
@@ -64,6 +71,21 @@ public:
   /// fx(\p zoom) / fx(\p calibration_zoom), and the same for fy: a camera_info calibrated at \p calibration_zoom has
   /// fx' = fx * x and fy' = fy * y at \p zoom (the principal point does not move).
   FocalScale focalScale(double calibration_zoom, double zoom) const;
+
+  /**
+   * \brief The inverse of at(): the largest zoom whose field of view in \p direction is still at least \p angle (full
+   * angle, rad).
+   *
+   * Within the model's zooms that is the zoom whose angle is \p angle. An angle wider than the wide end gives the
+   * smallest zoom (1, or a table's first row); one narrower than a table's last row that row's zoom (the table knows
+   * no narrower view); the lens and divided laws narrow without end. Where a table's angle stays flat over a span of
+   * zooms, the span's largest. NaN unless \p angle is in (0, pi).
+   */
+  double zoomFor(double angle, ViewDirection direction) const;
+
+  /// The largest zoom whose field of view still holds \p span in both directions: the smaller of the two zoomFor().
+  /// A direction whose angle is not in (0, pi) (NaN: no constraint) does not count; NaN when neither is.
+  double zoomShowing(const FieldOfViewAngles& span) const;
 
 private:
   FieldOfViewModel() = default;

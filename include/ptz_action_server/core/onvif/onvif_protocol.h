@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ptz_action_server/core/device/device_backend.h"
+#include "ptz_action_server/core/http/http_device_protocol.h"
 #include "ptz_action_server/core/onvif/onvif_codec.h"
 #include "ptz_action_server/core/onvif/onvif_motion_check.h"
 
@@ -90,16 +91,12 @@ struct OnvifCounters
  * then steers it); a zoom that stops short of the range the node lists faults the goal and is not sent beyond again.
  * Each is told once (warnings()).
  */
-class OnvifProtocol : public DeviceProtocol
+class OnvifProtocol : public HttpDeviceProtocol
 {
 public:
-  /// DeviceConfig<OnvifProtocol> (device_backend.h): these settings, and the defaults of the link and the session.
+  /// DeviceConfig<OnvifProtocol> (device_backend.h): these settings, and the defaults of the link and the session
+  /// (HttpDeviceProtocol's).
   using Settings = OnvifSettings;
-  static LinkConfig defaultLink();
-  static DeviceSessionConfig defaultSession()
-  {
-    return { 0.5, 0.1, 10.0, 0.15, 0.5 };
-  }
   /// Throws ConfigError for a config this protocol cannot run (not over HTTP, ...).
   static void validate(const DeviceConfig<OnvifProtocol>& config);
 
@@ -115,9 +112,6 @@ public:
   }
   Capabilities capabilities() const override;
   void onConnected() override;
-  void onReceived(const std::uint8_t*, std::size_t) override
-  {
-  }
   void poll() override;
   void goTo(const AxisValues& position) override;
   void moveAtVelocity(const AxisValues& velocity) override;
@@ -163,7 +157,7 @@ private:
   };
 
   /// POSTs \p body (an operation) to \p path; true with message_.content the response, else \p problem ("" when
-  /// the link was lost).
+  /// the link was lost). Every request goes through it.
   bool call(const std::string& path, const std::string& body, bool secure, std::string& problem);
   /// Sends a command; true if the camera took it. A fault is the current command's.
   bool command(const std::string& path, const std::string& body, const char* operation);
@@ -178,7 +172,6 @@ private:
   bool readClock(std::string& problem);
   /// The ContinuousMove Timeout within the camera's PTZTimeout range [\p min, \p max] (s; max 0 = no range).
   void chooseVelocityTimeout(double min, double max);
-  void setupFailed(const std::string& problem);
   /// Everything a (re)connection asks, up to the first GetStatus (\p status).
   bool bringUp(std::string& problem, onvif::Status& status);
   /// Decides the plans from the node, the profile and the first status.
@@ -197,8 +190,6 @@ private:
   double cameraTime() const;
 
   const OnvifSettings settings_;
-  DeviceSession& session_;
-  HttpChannel& http_;
   OnvifCounters counters_;
   mutable std::mutex report_mutex_;
   Report report_;
