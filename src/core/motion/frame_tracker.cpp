@@ -37,11 +37,23 @@ std::string FrameTracker::observe(const Eigen::Vector3d& point, double stamp, Ti
   {
     return {};  // nothing new
   }
-  AimSample aim{ stamp, 0.0, 0.0 };
-  if (!kinematics_.aimAt(point, aim.pan, aim.tilt))
+  double pan = 0.0;
+  double tilt = 0.0;
+  if (!kinematics_.aimAt(point, pan, tilt))
   {
     return "cannot point at the frame's origin: it is too close to the camera";
   }
+  observeAim(pan, tilt, stamp, now);
+  return {};
+}
+
+bool FrameTracker::observeAim(double pan, double tilt, double stamp, TimePoint now)
+{
+  if (!history_.empty() && stamp <= history_.back().stamp)
+  {
+    return false;  // nothing new
+  }
+  AimSample aim{ stamp, pan, tilt };
   if (!history_.empty())
   {
     aim.pan = nearestTurn(aim.pan, history_.back().pan);  // continuous along the history
@@ -52,7 +64,7 @@ std::string FrameTracker::observe(const Eigen::Vector3d& point, double stamp, Ti
     history_.pop_front();
   }
   last_new_at_ = now;
-  return {};
+  return true;
 }
 
 AxisValues FrameTracker::aimRate() const

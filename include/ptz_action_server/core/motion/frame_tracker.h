@@ -46,6 +46,9 @@ public:
   /// A position of the point in the base frame, measured at \p stamp (s, the transform's time), seen at \p now.
   /// A stamp already seen is ignored. Returns "" or why the point cannot be aimed at (too close to the camera).
   std::string observe(const Eigen::Vector3d& point, double stamp, TimePoint now);
+  /// An aim at the point (pan, tilt in rad), measured at \p stamp (s), seen at \p now: for a target known by its
+  /// direction alone (a detection in an image). A stamp not newer than the newest is ignored: false; true if taken.
+  bool observeAim(double pan, double tilt, double stamp, TimePoint now);
 
   bool hasPosition() const
   {
