@@ -117,9 +117,9 @@ void PtzActionServer::start()
   frame_tracking_ = std::make_unique<FrameTracking>(node_handle_, kinematics_, limits_, config_.track, *supervisor_,
                                                     *frame_listener_, *backend_);
   detection_tracking_ = std::make_unique<DetectionTracking>(
-      node_handle_, DetectionTracking::Parts{ kinematics_, limits_, config_.track, config_.detection_tracking,
-                                              config_.monitor, config_.pixel, calibration, *supervisor_, *backend_,
-                                              *poses_, *presets_ });
+      node_handle_,
+      DetectionTracking::Parts{ kinematics_, limits_, config_.track, config_.detection_tracking, config_.monitor,
+                                config_.pixel, calibration, *supervisor_, *backend_, *poses_, *presets_ });
 
   servers_.start([this](auto handle, ActionKind kind) { onGoal(handle, kind); },
                  [this](auto handle, ActionKind kind) { onCancel(handle, kind); });

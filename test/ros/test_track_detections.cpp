@@ -30,14 +30,19 @@ using TrackClient = actionlib::SimpleActionClient<PtzTrackDetectionsAction>;
 // track_detections.test lists this frame first (magenta, ptz_blob_detector's default colour).
 const char* const TARGET = "track_detections_target";
 constexpr std::uint8_t TARGET_COLOUR[3] = { 255, 0, 255 };
-constexpr double START_PAN = -0.45;   // rad: where the target starts, the camera looking at it
-constexpr double END_PAN = 0.45;      // rad: where it stops
-constexpr double SPEED = 0.2;         // rad/s across the view (the sim's 60 degree view: 1.05 rad)
-constexpr double ELEVATION = 0.1;     // rad, seen from the base's origin
-constexpr double DISTANCE = 10.0;     // m
-constexpr double CATCH_UP = 1.5;      // s after the target starts before its error counts
-constexpr double PIXEL_ERROR = 10.0;  // px from the image centre (0.018 rad at 1 X): most images are within it
-constexpr double MOST = 0.8;          // the part of the images of the run that must be within PIXEL_ERROR
+constexpr double START_PAN = -0.45;  // rad: where the target starts, the camera looking at it
+constexpr double END_PAN = 0.45;     // rad: where it stops
+constexpr double SPEED = 0.2;        // rad/s across the view (the sim's 60 degree view: 1.05 rad)
+constexpr double ELEVATION = 0.1;    // rad, seen from the base's origin
+constexpr double DISTANCE = 10.0;    // m
+constexpr double CATCH_UP = 1.5;     // s after the target starts before its error counts
+/// px from the image centre most images are within: 10 (0.018 rad at 1 X), or the test's ~pixel_error (position
+/// commands trail a moving target by the device's own settling).
+double pixelError()
+{
+  return ros::NodeHandle("~").param("pixel_error", 10.0);
+}
+constexpr double MOST = 0.8;          // the part of the images of the run that must be within pixelError()
 constexpr double LOST_TIMEOUT = 1.0;  // s
 constexpr double AT_HOME = 0.01;      // rad: config/sim.yaml's home is pan 0, tilt 0
 
@@ -216,8 +221,9 @@ TEST_F(TrackDetectionsTest, ATargetCrossingTheViewIsKeptNearTheCentreThenLostAnd
   const std::vector<TargetInImages::Seen> seen = images_->between(started_at + CATCH_UP, target.arrivedAt());
   ASSERT_GE(seen.size(), 10u) << "images while the target crossed (10 Hz for "
                               << target.arrivedAt() - started_at - CATCH_UP << " s)";
-  const auto within = std::count_if(seen.begin(), seen.end(), [](const TargetInImages::Seen& image) {
-    return image.found && image.error < PIXEL_ERROR;
+  const double pixel_error = pixelError();
+  const auto within = std::count_if(seen.begin(), seen.end(), [&](const TargetInImages::Seen& image) {
+    return image.found && image.error < pixel_error;
   });
   std::vector<double> errors;
   for (const TargetInImages::Seen& image : seen)
@@ -228,7 +234,7 @@ TEST_F(TrackDetectionsTest, ATargetCrossingTheViewIsKeptNearTheCentreThenLostAnd
   std::printf("pixel error over %zu images: p50 %.1f px, p80 %.1f px, max %.1f px\n", errors.size(),
               errors[errors.size() / 2], errors[errors.size() * 4 / 5], errors.back());
   EXPECT_GE(static_cast<double>(within), MOST * seen.size())
-      << within << " of " << seen.size() << " images show the target within " << PIXEL_ERROR << " px of the centre";
+      << within << " of " << seen.size() << " images show the target within " << pixel_error << " px of the centre";
   const std::vector<PtzTrackDetectionsFeedback> feedback = feedback_->all();
   ASSERT_FALSE(feedback.empty());
   EXPECT_EQ(feedback.back().target_id, "blob");

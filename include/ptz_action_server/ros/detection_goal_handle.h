@@ -60,9 +60,7 @@ public:
   using Result = PtzTrackDetectionsResult;
 
   explicit DetectionGoalHandle(std::shared_ptr<DetectionGoalState> state)
-    : state_(std::move(state))
-    , action_(actionName(ActionKind::TRACK_DETECTIONS))
-    , id_(state_->handle.getGoalID().id)
+    : state_(std::move(state)), action_(actionName(ActionKind::TRACK_DETECTIONS)), id_(state_->handle.getGoalID().id)
   {
   }
   const std::string& action() const override

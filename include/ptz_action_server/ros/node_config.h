@@ -33,8 +33,8 @@ struct NodeConfig
   double frame_wait = 1.0;           ///< s a frame goal may wait for tf once the node starts listening
   FrameTrackerConfig track;          ///< how track_frame and track_detections goals steer
   DetectionTrackingSettings detection_tracking;  ///< track_detections' lost timeout and pose history
-  double status_hold = 0.02;         ///< s goal status changes wait after a new goal (StatusHold); 0: off
-  MountConfig mount;                 ///< how the device is mounted; PtzNode wraps the backend with it
+  double status_hold = 0.02;                     ///< s goal status changes wait after a new goal (StatusHold); 0: off
+  MountConfig mount;                             ///< how the device is mounted; PtzNode wraps the backend with it
   /// The field_of_view topic and the zoomed camera_info.
   FieldOfViewSettings field_of_view;
   PresetConfig presets;                            ///< the presets file and home
