@@ -30,6 +30,7 @@ NodeConfig NodeConfig::load(const ParamReader& params)
   config.track.gain = params.number("track/gain", config.track.gain, 0.0, 50.0);
   config.track.feed_forward = params.flag("track/feed_forward", config.track.feed_forward);
   config.track.timeout = params.number("track_timeout", config.track.timeout, 0.05, 3600.0);
+  config.detection_tracking = DetectionTrackingSettings::load(params);
   config.frame_listen_time =
       params.number("frame_listen_time", config.frame_listen_time, std::max(config.frame_wait, 0.1), 1e6);
   config.mount = loadMountConfig(params);

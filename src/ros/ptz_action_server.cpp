@@ -117,6 +117,10 @@ void PtzActionServer::start()
   translator_ = std::make_unique<GoalTranslator>(kinematics_, limits_, *frame_listener_, *presets_, *pixel_goals_);
   frame_tracking_ = std::make_unique<FrameTracking>(node_handle_, kinematics_, limits_, config_.track, *supervisor_,
                                                     *frame_listener_, *backend_);
+  detection_tracking_ = std::make_unique<DetectionTracking>(
+      node_handle_,
+      DetectionTracking::Parts{ kinematics_, limits_, config_.track, config_.detection_tracking, config_.monitor,
+                                config_.pixel, calibration, *supervisor_, *backend_, *poses_, *presets_ });
 
   servers_.start([this](auto handle, ActionKind kind) { onGoal(handle, kind); },
                  [this](auto handle, ActionKind kind) { onCancel(handle, kind); });
@@ -205,19 +209,27 @@ void PtzActionServer::onGoal(actionlib::ServerGoalHandle<Action> handle, ActionK
 template <class Action>
 void PtzActionServer::submit(actionlib::ServerGoalHandle<Action> handle, ActionKind kind)
 {
-  const auto goal = handle.getGoal();
   const PtzSample current = backend_->sample();
-  const ConvertedGoal converted = translator_->convert(*goal, kind, current);
-  typename GoalHandleAdapter<Action>::Result result;
-  GoalTranslator::fillResult(result, converted);
-  supervisor_->submit(std::make_unique<GoalHandleAdapter<Action>>(handle, kind, statusPoster(), result), current,
-                      converted);
-  if constexpr (std::is_same_v<Action, PtzFrameAction>)
+  if constexpr (std::is_same_v<Action, PtzTrackDetectionsAction>)
   {
-    const std::string& id = handle.getGoalID().id;
-    if (kind == ActionKind::TRACK_FRAME && supervisor_->isRunning(actionName(kind), id))
+    // Its result and feedback are not Ptz's: DetectionTracking converts, submits and runs it.
+    detection_tracking_->submit(handle, statusPoster(), current);
+  }
+  else
+  {
+    const auto goal = handle.getGoal();
+    const ConvertedGoal converted = translator_->convert(*goal, kind, current);
+    typename GoalHandleAdapter<Action>::Result result;
+    GoalTranslator::fillResult(result, converted);
+    supervisor_->submit(std::make_unique<GoalHandleAdapter<Action>>(handle, kind, statusPoster(), result), current,
+                        converted);
+    if constexpr (std::is_same_v<Action, PtzFrameAction>)
     {
-      frame_tracking_->start(actionName(kind), id, goal->frame_id, goal->zoom);
+      const std::string& id = handle.getGoalID().id;
+      if (kind == ActionKind::TRACK_FRAME && supervisor_->isRunning(actionName(kind), id))
+      {
+        frame_tracking_->start(actionName(kind), id, goal->frame_id, goal->zoom);
+      }
     }
   }
 }

@@ -38,6 +38,12 @@ Commands (angles in rad, or degrees with --degrees; zoom as X-factor):
   pixel  U V [W H]                 centre pixel (U, V) of the camera's latest image (camera_info's pixels: (0, 0)
                                    is the centre of the top-left pixel); with a W x H box around it, also zoom
                                    until the box fills the view. The image's stamp and size come from --camera-info
+  track-detections TOPIC [OPTIONS] keep the target a detector finds (ptz_action_server/Detections on TOPIC; a
+                                   relative name is in the node's namespace) near the image centre until Ctrl-C,
+                                   --for, or it is lost; OPTIONS: --id ID (only detections of ID), --zoom-fraction F
+                                   (zoom so the box spans F of the view), --dead-zone F (of the half image),
+                                   --max-speed S (rad/s, deg/s with --degrees), --lost-timeout S, --lost-preset NAME
+                                   (go there when lost); exits 0 when cancelled or lost
   state                            print the current PtzState once
   capabilities                     print what the device can do (the node's latched capabilities)
   teleop                           drive the camera from the keyboard: hold an arrow to pan and tilt, + or - to
@@ -301,6 +307,10 @@ int main(int argc, char** argv)
   if (command == "pixel")
   {
     return pixel(options);
+  }
+  if (command == "track-detections")
+  {
+    return trackDetections(options);
   }
   fail("unknown command '" + command + "'");
 }

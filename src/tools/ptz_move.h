@@ -1,7 +1,8 @@
 /**
  * \file
  * \brief What ptz_move's files share: its options, the Ctrl-C flag, its errors, the keyboard teleop
- * (ptz_move_teleop.cpp) and the pixel command (ptz_move_pixel.cpp).
+ * (ptz_move_teleop.cpp), the pixel command (ptz_move_pixel.cpp) and the track-detections command
+ * (ptz_move_track.cpp).
  */
 #pragma once
 
@@ -33,6 +34,9 @@ int teleop(const Options& options);
 
 /// `pixel U V [W H]`: centres a pixel (and zooms to a box) of the latest image of --camera-info; the exit code.
 int pixel(const Options& options);
+
+/// `track-detections TOPIC [--id ID] [--zoom-fraction F] ...`: keeps a detector's target in view; the exit code.
+int trackDetections(const Options& options);
 
 /// True if all of \p text is a number, then in \p value.
 bool parseNumber(const std::string& text, double& value);

@@ -8,14 +8,34 @@
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <type_traits>
 
 #include <actionlib/client/simple_action_client.h>
 #include <ros/ros.h>
 
+#include "ptz_action_server/PtzTrackDetectionsAction.h"
 #include "ptz_move.h"
 
 namespace ptz_action_server::ptz_move
 {
+/// Prints \p feedback on one line: the remaining distance, or a tracking goal's errors.
+template <class Feedback>
+void printFeedback(const Feedback& feedback, double scale, const char* unit)
+{
+  if constexpr (std::is_same_v<Feedback, PtzTrackDetectionsFeedback>)
+  {
+    std::printf("\r  error: pan %+8.4f %s  tilt %+8.4f %s  (%+6.1f, %+6.1f) px  age %5.3f s  %s   ",
+                feedback.pan_error * scale, unit, feedback.tilt_error * scale, unit, feedback.u_error, feedback.v_error,
+                feedback.detection_age, feedback.target_id.c_str());
+  }
+  else
+  {
+    std::printf("\r  remaining: pan %+9.4f %s  tilt %+9.4f %s  zoom %+7.2f   ", feedback.pan_remaining * scale, unit,
+                feedback.tilt_remaining * scale, unit, feedback.zoom_remaining);
+  }
+  std::fflush(stdout);
+}
+
 /// Sends \p goal, prints each feedback on one line, cancels on Ctrl-C or after --for, prints the final state (and
 /// what \p describe_result says of the result, if given); returns the exit code.
 template <class Action, class Goal>
@@ -34,10 +54,7 @@ int run(const Options& options, const std::string& action, const Goal& goal,
   client.sendGoal(goal, typename actionlib::SimpleActionClient<Action>::SimpleDoneCallback(),
                   typename actionlib::SimpleActionClient<Action>::SimpleActiveCallback(),
                   [&](const typename Action::_action_feedback_type::_feedback_type::ConstPtr& feedback) {
-                    std::printf("\r  remaining: pan %+9.4f %s  tilt %+9.4f %s  zoom %+7.2f   ",
-                                feedback->pan_remaining * scale, unit, feedback->tilt_remaining * scale, unit,
-                                feedback->zoom_remaining);
-                    std::fflush(stdout);
+                    printFeedback(*feedback, scale, unit);
                   });
   const ros::WallTime started = ros::WallTime::now();
   bool cancelled = false;

@@ -20,6 +20,7 @@
 #include "ptz_action_server/PtzPixelAction.h"
 #include "ptz_action_server/PtzPresetAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
+#include "ptz_action_server/PtzTrackDetectionsAction.h"
 #include "ptz_action_server/ros/action_kind.h"
 #include "ptz_action_server/ros/node_action_server.h"
 
@@ -39,7 +40,8 @@ struct ActionRow
  *
  * Adding an action is its value of ActionKind, its row here and the conversion of its goal
  * (GoalTranslator::convert(), and GoalTranslator::frameOf() if the goal waits for a tf frame; for a result with more
- * than `success`, GoalTranslator::fillResult()).
+ * than `success`, GoalTranslator::fillResult()). track_detections, whose result and feedback are not Ptz's, is
+ * converted and handled by DetectionTracking.
  */
 inline constexpr std::tuple NODE_ACTIONS{
   ActionRow<PtzAction>{ ActionKind::POSITION_ABS, "position_abs" },
@@ -50,6 +52,7 @@ inline constexpr std::tuple NODE_ACTIONS{
   ActionRow<PtzFrameAction>{ ActionKind::TRACK_FRAME, "track_frame" },
   ActionRow<PtzPresetAction>{ ActionKind::PRESET, "preset" },
   ActionRow<PtzPixelAction>{ ActionKind::PIXEL, "pixel" },
+  ActionRow<PtzTrackDetectionsAction>{ ActionKind::TRACK_DETECTIONS, "track_detections" },
 };
 
 /// How many actions the node serves.

@@ -10,6 +10,7 @@
 #include "ptz_action_server/core/motion/frame_tracker.h"
 #include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/core/mounted_backend.h"
+#include "ptz_action_server/ros/detection_tracking.h"
 #include "ptz_action_server/ros/look_at_clicked_point.h"
 #include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/pixel_goals.h"
@@ -30,9 +31,10 @@ struct NodeConfig
   double status_list_timeout = 1.0;  ///< s a finished goal stays in actionlib's status list (actionlib: 5)
   double frame_listen_time = 10.0;   ///< s the node keeps listening to tf after the last frame goal
   double frame_wait = 1.0;           ///< s a frame goal may wait for tf once the node starts listening
-  FrameTrackerConfig track;          ///< how track_frame goals steer
-  double status_hold = 0.02;         ///< s goal status changes wait after a new goal (StatusHold); 0: off
-  MountConfig mount;                 ///< how the device is mounted; PtzNode wraps the backend with it
+  FrameTrackerConfig track;          ///< how track_frame and track_detections goals steer
+  DetectionTrackingSettings detection_tracking;  ///< track_detections' lost timeout and pose history
+  double status_hold = 0.02;                     ///< s goal status changes wait after a new goal (StatusHold); 0: off
+  MountConfig mount;                             ///< how the device is mounted; PtzNode wraps the backend with it
   /// The field_of_view topic and the zoomed camera_info.
   FieldOfViewSettings field_of_view;
   PresetConfig presets;                            ///< the presets file and home
@@ -44,9 +46,9 @@ struct NodeConfig
   /// Reads ~backend, ~clamp_goals, ~publish_tf, ~pan_joint, ~tilt_joint, ~camera_link, ~tolerance/*, ~stall_timeout,
   /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,
   /// ~status_list_timeout, ~frame_listen_time, ~frame_wait, ~track/rate, ~track/gain, ~track/feed_forward,
-  /// ~track_timeout, ~status_hold, ~mount, ~pan_offset, ~field_of_view/*, ~camera_info_topic, ~camera_info_zoom,
-  /// ~look_at_clicked_point, ~clicked_point_topic, ~image_upside_down, ~image_topic and the presets' (see
-  /// PresetConfig::load).
+  /// ~track_timeout, ~track/lost_timeout, ~track/pose_history, ~status_hold, ~mount, ~pan_offset, ~field_of_view/*,
+  /// ~camera_info_topic, ~camera_info_zoom, ~look_at_clicked_point, ~clicked_point_topic, ~image_upside_down,
+  /// ~image_topic and the presets' (see PresetConfig::load).
   static NodeConfig load(const ParamReader& params);
 };
 

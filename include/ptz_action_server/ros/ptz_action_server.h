@@ -19,6 +19,7 @@
 #include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/ros/action_kind.h"
 #include "ptz_action_server/ros/action_servers.h"
+#include "ptz_action_server/ros/detection_tracking.h"
 #include "ptz_action_server/ros/frame_goal_hold.h"
 #include "ptz_action_server/ros/frame_listener.h"
 #include "ptz_action_server/ros/frame_tracking.h"
@@ -151,6 +152,7 @@ private:
 
   ActionServers servers_;                                      ///< one per action; started by start()
   std::unique_ptr<FrameTracking> frame_tracking_;              ///< steers track_frame goals; built by start()
+  std::unique_ptr<DetectionTracking> detection_tracking_;      ///< runs track_detections goals; built by start()
   std::unique_ptr<PresetServices> presets_;                    ///< the preset services and lookups; built by start()
   std::unique_ptr<LookAtClickedPoint> look_at_clicked_point_;  ///< the switch; built by start()
   std::uint64_t clicked_points_ = 0;                           ///< clicked points so far, for their ids
