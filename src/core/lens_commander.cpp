@@ -48,7 +48,7 @@ std::vector<LensFunction> LensCommander::expire(TimePoint now)
   for (LensFunction function : ALL_LENS_FUNCTIONS)
   {
     const std::size_t index = static_cast<std::size_t>(function);
-    if (deadline_[index] <= now)
+    if (deadline_[index] != TimePoint::max() && deadline_[index] <= now)
     {
       deadline_[index] = TimePoint::max();
       velocity_[index] = 0.0;

@@ -30,7 +30,8 @@ public:
 
   /// Sends \p command (or only renews a running velocity); returns "" or why it was refused (then nothing is sent).
   std::string command(const LensCommand& command, TimePoint now);
-  /// Stops every velocity not renewed within velocity_timeout of \p now; returns the functions it stopped.
+  /// Stops every velocity not renewed within velocity_timeout of \p now (TimePoint::max(): every one running);
+  /// returns the functions it stopped.
   std::vector<LensFunction> expire(TimePoint now);
   /// When the next velocity runs out (TimePoint::max(): none runs).
   TimePoint nextDeadline() const;

@@ -151,6 +151,7 @@ void SimBackend::lens(const LensCommand& command)
       lens_model_.setAuto(command.function, command.automatic(), now);
       break;
     case LensCommand::Kind::ONE_PUSH:
+      lens_model_.setAuto(command.function, false, now);  // it focusses once and stays manual
       lens_model_.onePush(now);
       break;
     case LensCommand::Kind::VELOCITY:
@@ -168,18 +169,7 @@ void SimBackend::lens(const LensCommand& command)
 LensState SimBackend::lensState() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  LensState state;
-  const TimePoint now = clock_->now();
-  for (LensFunction function : ALL_LENS_FUNCTIONS)
-  {
-    if (lens_model_.present(function))
-    {
-      const std::size_t index = static_cast<std::size_t>(function);
-      state.mode[index] = lens_model_.isAuto(function) ? LensMode::AUTO : LensMode::MANUAL;
-      state.position[index] = lens_model_.position(function, now);
-    }
-  }
-  return state;
+  return lensStateOf(lens_model_, clock_->now());
 }
 
 std::string SimBackend::lastFault() const

@@ -14,8 +14,8 @@ LensCapabilities simLensCapabilities(const SimLensConfig& config)
     LensControl& control = lens.of(function);
     control.present = config.of(function).present;
     control.auto_mode = control.velocity = control.absolute = control.feedback = control.present;
-    control.limitation = control.present ? "" : std::string("the simulated lens is configured without ") +
-                                                    lensFunctionName(function);
+    control.limitation =
+        control.present ? "" : std::string("the simulated lens is configured without ") + lensFunctionName(function);
   }
   lens.focus.one_push = lens.focus.present;
   return lens;
@@ -93,6 +93,21 @@ void SimLensModel::goTo(LensFunction function, double position, TimePoint now)
 void SimLensModel::onePush(TimePoint now)
 {
   goTo(LensFunction::FOCUS, config_.focus.auto_value, now);
+}
+
+LensState lensStateOf(const SimLensModel& model, TimePoint now)
+{
+  LensState state;
+  for (LensFunction function : ALL_LENS_FUNCTIONS)
+  {
+    if (model.present(function))
+    {
+      const auto index = static_cast<std::size_t>(function);
+      state.mode[index] = model.isAuto(function) ? LensMode::AUTO : LensMode::MANUAL;
+      state.position[index] = model.position(function, now);
+    }
+  }
+  return state;
 }
 
 }  // namespace ptz_action_server

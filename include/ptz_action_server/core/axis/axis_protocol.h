@@ -12,6 +12,7 @@
 #include <string>
 
 #include "ptz_action_server/core/axis/vapix_codec.h"
+#include "ptz_action_server/core/axis/vapix_lens.h"
 #include "ptz_action_server/core/axis/vapix_queue.h"
 #include "ptz_action_server/core/device/device_backend.h"
 #include "ptz_action_server/core/http/http_device_protocol.h"
@@ -157,6 +158,8 @@ private:
   std::string withoutControl() const;
   /// The X-factor of a position reply (1 when it cannot be known: the zoom's feedback is false then).
   double zoomFactor(const vapix::Position& position) const;
+  /// The lens modes and positions of a position answer, to the session's LensReport.
+  void reportLens(const vapix::LensReading& reading);
 
   const AxisSettings settings_;
   AxisCounters counters_;
@@ -164,6 +167,7 @@ private:
 
   // I/O thread only.
   vapix::ZoomTable zoom_table_;  ///< empty: zoom X unknown (or no zoom)
+  vapix::LensLimits lens_limits_;
   AxisZoomSource zoom_source_ = AxisZoomSource::NO_ZOOM;
   bool zoom_feedback_ = false;  ///< the position reply carries zoom= and zoom_table_ maps it
   bool zoom_velocity_ = false;  ///< the camera has a zoom it moves with continuouszoommove

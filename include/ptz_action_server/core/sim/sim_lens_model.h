@@ -101,4 +101,7 @@ private:
   std::array<Motion, LENS_FUNCTION_COUNT> axes_;
 };
 
+/// \p model's modes and positions at \p now, as a backend reports them (the functions it lacks: unknown, NaN).
+LensState lensStateOf(const SimLensModel& model, TimePoint now);
+
 }  // namespace ptz_action_server
