@@ -4,6 +4,7 @@
 #include <mutex>
 #include <vector>
 
+#include "ptz_action_server/core/axis/vapix_lens.h"
 #include "ptz_action_server/core/parse_number.h"
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/emulators/axis_camera_emulator.h"

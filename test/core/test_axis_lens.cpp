@@ -80,7 +80,7 @@ TEST_F(AxisLensTest, FocusAndIrisCommandsReachTheCameraInVapixWords)
 {
   start(AxisCameraEmulatorConfig());
   ASSERT_EQ(commander_->command(LensCommand::position(FOCUS, 0.25), SteadyClock::now()), "");
-  ASSERT_TRUE(requested("focus=2500"));
+  ASSERT_TRUE(requested("focus=2501"));  // 1 + 0.25 x 9998, rounded
   ASSERT_TRUE(waitUntil([&] { return camera_->lensState().modeOf(FOCUS) == LensMode::MANUAL; }, WAIT));
   // Read back: the backend's lens state follows the camera's position answers.
   ASSERT_TRUE(waitUntil([&] { return std::abs(backend_->lensState().positionOf(FOCUS) - 0.25) < 1e-3; }, WAIT));

@@ -123,6 +123,8 @@ public:
   void moveAtVelocity(const AxisValues& velocity) override;
   /// `move=stop` (the camera decelerates).
   void stop() override;
+  /// Focus and iris (vapix::lensArguments()), as a request of its own: a refusal is a lens fault, never the goal's.
+  void lens(const LensCommand& command) override;
   /// Drops PTZ control when it held it (control queue).
   void shutdown() override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
