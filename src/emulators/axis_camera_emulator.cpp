@@ -317,7 +317,7 @@ HttpAnswer AxisCameraEmulator::query(const std::string& what, const std::string&
     {
       body += formatText("zoom=%.0f\r\n", std::round(zoom_table_.toValue(state.position[ZOOM])));
     }
-    return HttpAnswer{ 200, "text/plain", body + lensLines(now) + "brightness=5000\r\n" };
+    return HttpAnswer{ 200, "text/plain", body + lensLines(now) };
   }
   if (what == "limits")
   {

@@ -118,17 +118,18 @@ std::optional<HttpAnswer> AxisCameraEmulator::lensCommand(const std::map<std::st
 
 std::string AxisCameraEmulator::lensLines(TimePoint now) const
 {
+  // In the field camera's order: iris, focus, brightness, autofocus, autoiris.
   std::string lines;
-  for (LensFunction function : ALL_LENS_FUNCTIONS)
-  {
-    if (lens_.present(function))
-    {
-      const bool focus = function == LensFunction::FOCUS;
-      lines += formatText("%s=%.0f\r\n%s=%s\r\n", focus ? "focus" : "iris",
-                          AXIS_EMULATOR_LENS_RANGE.toValue(lens_.position(function, now)),
-                          focus ? "autofocus" : "autoiris", lens_.isAuto(function) ? "on" : "off");
-    }
-  }
+  const bool focus = lens_.present(LensFunction::FOCUS);
+  const bool iris = lens_.present(LensFunction::IRIS);
+  const auto value = [&](LensFunction function) {
+    return AXIS_EMULATOR_LENS_RANGE.toValue(lens_.position(function, now));
+  };
+  lines += iris ? formatText("iris=%.0f\r\n", value(LensFunction::IRIS)) : "";
+  lines += focus ? formatText("focus=%.0f\r\n", value(LensFunction::FOCUS)) : "";
+  lines += "brightness=5000\r\n";
+  lines += focus ? formatText("autofocus=%s\r\n", lens_.isAuto(LensFunction::FOCUS) ? "on" : "off") : "";
+  lines += iris ? formatText("autoiris=%s\r\n", lens_.isAuto(LensFunction::IRIS) ? "on" : "off") : "";
   return lines;
 }
 

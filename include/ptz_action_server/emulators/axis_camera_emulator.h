@@ -112,7 +112,8 @@ private:
   /// A request with a lens argument: its answer (only lens arguments and camera= may come with it); else nothing.
   std::optional<HttpAnswer> lensCommand(const std::map<std::string, std::string>& values, const std::string& client,
                                         TimePoint now);
-  /// The `focus=`, `iris=`, `autofocus=`, `autoiris=` lines of a position answer, for the functions it has.
+  /// The lens lines of a position answer (`iris=`, `focus=`, `brightness=`, `autofocus=`, `autoiris=`; those of the
+  /// functions it has), in the field camera's order.
   std::string lensLines(TimePoint now) const;
   HttpAnswer parameters(const std::string& action, const std::string& group) const;
   // PTZ control queue (axis_camera_emulator_queue.cpp); mutex_ held.
