@@ -68,38 +68,6 @@ void ImageClicks::onClick(const geometry_msgs::Point::ConstPtr& click)
   centre_(stamp, goal);
 }
 
-const char* ImageClickGoal::ACTION = "image_click";
-
-ImageClickGoal::ImageClickGoal(std::string id, std::string where)
-  : action_(ACTION), id_(std::move(id)), where_(std::move(where))
-{
-}
-
-void ImageClickGoal::accept(const std::string& text)
-{
-  ROS_INFO("image click: centring %s%s%s", where_.c_str(), text.empty() ? "" : ": ", text.c_str());
-}
-
-void ImageClickGoal::reject(const std::string& text)
-{
-  ROS_WARN("image click: not centring %s: %s", where_.c_str(), text.c_str());
-}
-
-void ImageClickGoal::succeed(const std::string& text)
-{
-  ROS_DEBUG("image click: centred %s: %s", where_.c_str(), text.c_str());
-}
-
-void ImageClickGoal::abort(const std::string& text)
-{
-  ROS_WARN("image click: centring %s aborted: %s", where_.c_str(), text.c_str());
-}
-
-void ImageClickGoal::preempt(const std::string& text)
-{
-  ROS_DEBUG("image click: centring %s preempted: %s", where_.c_str(), text.c_str());
-}
-
 std::string describePixel(const PixelGoal& goal, const ros::Time& stamp)
 {
   return formatText("pixel (%.1f, %.1f) of the %d x %d image at %.3f s", goal.u, goal.v, goal.image_width,

@@ -61,38 +61,6 @@ bool LookAtClickedPoint::onSwitch(std_srvs::SetBool::Request& request, std_srvs:
   return true;
 }
 
-const char* ClickedPointGoal::ACTION = "look_at_clicked_point";
-
-ClickedPointGoal::ClickedPointGoal(std::string id, std::string where)
-  : action_(ACTION), id_(std::move(id)), where_(std::move(where))
-{
-}
-
-void ClickedPointGoal::accept(const std::string& text)
-{
-  ROS_INFO("look_at_clicked_point: aiming at %s%s%s", where_.c_str(), text.empty() ? "" : ": ", text.c_str());
-}
-
-void ClickedPointGoal::reject(const std::string& text)
-{
-  ROS_WARN("look_at_clicked_point: not aiming at %s: %s", where_.c_str(), text.c_str());
-}
-
-void ClickedPointGoal::succeed(const std::string& text)
-{
-  ROS_DEBUG("look_at_clicked_point: aimed at %s: %s", where_.c_str(), text.c_str());
-}
-
-void ClickedPointGoal::abort(const std::string& text)
-{
-  ROS_WARN("look_at_clicked_point: aiming at %s aborted: %s", where_.c_str(), text.c_str());
-}
-
-void ClickedPointGoal::preempt(const std::string& text)
-{
-  ROS_DEBUG("look_at_clicked_point: aiming at %s preempted: %s", where_.c_str(), text.c_str());
-}
-
 std::string describePoint(const geometry_msgs::PointStamped& point)
 {
   return formatText("(%.3f, %.3f, %.3f) in '%s'", point.point.x, point.point.y, point.point.z,

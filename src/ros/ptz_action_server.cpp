@@ -12,6 +12,7 @@
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/ros/capabilities_message.h"
 #include "ptz_action_server/ros/function_callback.h"
+#include "ptz_action_server/ros/logged_goal.h"
 #include "ptz_action_server/ros/state_publisher.h"
 
 namespace ptz_action_server
@@ -238,10 +239,10 @@ void PtzActionServer::lookAt(const geometry_msgs::PointStamped& point)
 {
   // No status hold: a clicked point has no actionlib client that could miss its status.
   frame_hold_->supersede(ActionKind::CLICKED_POINT);
-  const std::string id = std::string(ClickedPointGoal::ACTION) + "_" + std::to_string(++clicked_points_);
+  const std::string id = std::string(CLICKED_POINT_GOAL.action) + "_" + std::to_string(++clicked_points_);
   const auto submit_point = [this, point, id] {
     const PtzSample current = backend_->sample();
-    supervisor_->submit(std::make_unique<ClickedPointGoal>(id, describePoint(point)), current,
+    supervisor_->submit(std::make_unique<LoggedGoal>(CLICKED_POINT_GOAL, id, describePoint(point)), current,
                         translator_->convert(point, current));
   };
   if (frame_hold_->mustWait(point.header.frame_id))
@@ -261,9 +262,9 @@ void PtzActionServer::centrePixel(const ros::Time& stamp, const PixelGoal& goal)
 {
   // No status hold: a click has no actionlib client that could miss its status.
   frame_hold_->supersede(ActionKind::IMAGE_CLICK);
-  const std::string id = std::string(ImageClickGoal::ACTION) + "_" + std::to_string(++image_clicks_count_);
+  const std::string id = std::string(IMAGE_CLICK_GOAL.action) + "_" + std::to_string(++image_clicks_count_);
   const PtzSample current = backend_->sample();
-  supervisor_->submit(std::make_unique<ImageClickGoal>(id, describePixel(goal, stamp)), current,
+  supervisor_->submit(std::make_unique<LoggedGoal>(IMAGE_CLICK_GOAL, id, describePixel(goal, stamp)), current,
                       pixel_goals_->convert(goal, stamp, current));
 }
 

@@ -88,42 +88,6 @@ private:
   ros::Subscriber info_subscriber_;
 };
 
-/**
- * \brief A click on an image as the GoalSupervisor sees a goal. It has no client to answer, so its end is logged: a
- * rejection (a stamp outside the pose history, no field of view, a pixel off the image) as a warning with the reason.
- */
-class ImageClickGoal : public GoalHandle
-{
-public:
-  /// \p id: unique among clicks; \p where: the pixel and the image as the log shows them.
-  ImageClickGoal(std::string id, std::string where);
-
-  const std::string& action() const override
-  {
-    return action_;
-  }
-  const std::string& id() const override
-  {
-    return id_;
-  }
-  void accept(const std::string& text) override;
-  void reject(const std::string& text) override;
-  void publishFeedback(const AxisValues&) override
-  {
-  }
-  void succeed(const std::string& text) override;
-  void abort(const std::string& text) override;
-  void preempt(const std::string& text) override;
-
-  /// The action name clicks go by in the supervisor and the log.
-  static const char* ACTION;
-
-private:
-  const std::string action_;
-  const std::string id_;
-  const std::string where_;
-};
-
 /// "pixel (319.5, 179.5) of the 640 x 360 image at 12.345 s".
 std::string describePixel(const PixelGoal& goal, const ros::Time& stamp);
 

@@ -60,42 +60,6 @@ private:
   ros::Subscriber point_subscriber_;  ///< only while enabled
 };
 
-/**
- * \brief A clicked point as the GoalSupervisor sees a goal. It has no client to answer, so its end is logged: a
- * rejection (an unknown frame, a point the camera cannot aim at or outside the limits) as a warning with the reason.
- */
-class ClickedPointGoal : public GoalHandle
-{
-public:
-  /// \p id: unique among clicked points; \p where: the point as the log shows it.
-  ClickedPointGoal(std::string id, std::string where);
-
-  const std::string& action() const override
-  {
-    return action_;
-  }
-  const std::string& id() const override
-  {
-    return id_;
-  }
-  void accept(const std::string& text) override;
-  void reject(const std::string& text) override;
-  void publishFeedback(const AxisValues&) override
-  {
-  }
-  void succeed(const std::string& text) override;
-  void abort(const std::string& text) override;
-  void preempt(const std::string& text) override;
-
-  /// The action name clicked points go by in the supervisor and the log.
-  static const char* ACTION;
-
-private:
-  const std::string action_;
-  const std::string id_;
-  const std::string where_;
-};
-
 /// "(1.000, -2.000, 0.500) in 'map'".
 std::string describePoint(const geometry_msgs::PointStamped& point);
 
