@@ -31,11 +31,13 @@ ptz_protocol(flir
 
 ptz_protocol(pelco_d
   CORE src/core/pelco_d/pelco_d_codec.cpp src/core/pelco_d/pelco_d_protocol.cpp src/core/pelco_d/set_position_check.cpp
+    src/core/pelco_d/pelco_d_protocol_lens.cpp
   PLUGIN src/plugins/pelco_d_backend_plugin.cpp
   EMULATOR src/emulators/pelco_d_emulator.cpp src/emulators/pelco_d_emulator_classify.cpp
   PROGRAM pelco_d_emulator src/emulators/programs/pelco_d_emulator_main.cpp
   HARNESS pelcoDHarnesses test/harness/pelco_d_harness.cpp
   TESTS test/core/test_pelco_d_codec.cpp test/core/test_pelco_d_protocol.cpp test/core/test_pelco_d_set_position.cpp
+    test/core/test_pelco_d_lens.cpp
     test/core/contract/pelco_d_fixtures.cpp
   FUZZ pelco_d src/core/pelco_d/pelco_d_codec.cpp
   ROSTESTS test/ros/serial_pelco_node.test test/ros/pelco_no_set_position_node.test
@@ -43,13 +45,15 @@ ptz_protocol(pelco_d
 
 ptz_protocol(visca
   CORE src/core/visca/visca_codec.cpp src/core/visca/visca_model.cpp src/core/visca/visca_presets.cpp
-    src/core/visca/visca_protocol.cpp src/core/visca/visca_replies.cpp
+    src/core/visca/visca_lens.cpp src/core/visca/visca_protocol.cpp src/core/visca/visca_protocol_lens.cpp
+    src/core/visca/visca_replies.cpp
   PLUGIN src/plugins/visca_backend_plugin.cpp
   EMULATOR src/emulators/visca_emulator.cpp src/emulators/visca_emulator_answers.cpp
-    src/emulators/visca_emulator_classify.cpp
+    src/emulators/visca_emulator_classify.cpp src/emulators/visca_emulator_lens.cpp
   PROGRAM visca_emulator src/emulators/programs/visca_emulator_main.cpp
   HARNESS viscaHarnesses test/harness/visca_harness.cpp
-  TESTS test/core/test_visca_codec.cpp test/core/test_visca_dialects.cpp test/core/test_visca_protocol.cpp
+  TESTS test/core/test_visca_codec.cpp test/core/test_visca_dialects.cpp test/core/test_visca_lens.cpp
+    test/core/test_visca_protocol.cpp
     test/core/contract/visca_fixtures.cpp
   FUZZ visca_reply src/core/visca/visca_codec.cpp
   ROSTESTS test/ros/serial_visca_node.test test/ros/visca_ip_node.test test/ros/visca_sony_reply_port.test
@@ -98,13 +102,15 @@ set_source_files_properties(src/emulators/mavlink_gimbal_emulator_commands.cpp
 ptz_protocol(axis
   CORE src/core/axis/axis_protocol.cpp src/core/axis/axis_zoom_setup.cpp src/core/axis/axis_control_queue.cpp
     src/core/axis/vapix_codec.cpp src/core/axis/vapix_queue.cpp src/core/axis/vapix_zoom.cpp
+    src/core/axis/axis_protocol_lens.cpp src/core/axis/vapix_lens.cpp
   PLUGIN src/plugins/axis_backend_plugin.cpp
   EMULATOR src/emulators/axis_camera_emulator.cpp src/emulators/axis_camera_emulator_queue.cpp
-    src/emulators/axis_camera_classify.cpp
+    src/emulators/axis_camera_classify.cpp src/emulators/axis_camera_emulator_lens.cpp
   PROGRAM axis_camera_emulator src/emulators/programs/axis_camera_emulator_main.cpp
   HARNESS axisHarnesses test/harness/axis_harness.cpp
   TESTS test/core/test_axis_protocol.cpp test/core/test_axis_zoom.cpp test/core/test_axis_emulator.cpp
     test/core/test_axis_control_queue.cpp test/core/test_vapix_codec.cpp test/core/contract/axis_fixtures.cpp
+    test/core/test_axis_lens.cpp
   FUZZ vapix_reply src/core/axis/vapix_codec.cpp src/core/axis/vapix_queue.cpp src/core/axis/vapix_zoom.cpp
     src/core/types.cpp
   ROSTESTS test/ros/axis_node.test test/ros/axis_field_node.test

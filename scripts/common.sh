@@ -35,7 +35,7 @@ PTZ_APT_PACKAGES=(
   libyaml-cpp-dev
   librviz-dev rviz xvfb libinteractive-markers-dev libstd-srvs-dev libvisualization-msgs-dev
   libnodelet-dev libnodeletlib-dev libnodeletlib-tools
-  python3-diagnostic-msgs python3-sensor-msgs
+  python3-diagnostic-msgs python3-sensor-msgs python3-std-srvs
 )
 
 # A step's heading, with the time of day, so a CI log shows where its time went.

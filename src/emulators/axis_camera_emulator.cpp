@@ -120,6 +120,7 @@ AxisCameraEmulator::AxisCameraEmulator(const AxisCameraEmulatorConfig& config, s
   : HttpCameraEmulator(withLens(config.device, lensOf(config.zoom_table)), std::move(clock))
   , config_(config)
   , zoom_table_(lensOf(config.zoom_table))
+  , lens_(config.lens, clock_->now())
 {
   if (config_.model.empty() || config_.model.find_first_of("\r\n") != std::string::npos)
   {
@@ -182,6 +183,10 @@ HttpAnswer AxisCameraEmulator::command(const std::string& path, std::map<std::st
   if (values.count("query"))
   {
     return query(values["query"], values.count("group") ? values["group"] : "", now);
+  }
+  if (std::optional<HttpAnswer> lens = lensCommand(values, client, now))
+  {
+    return *lens;
   }
   // Check every argument before acting on any, as the CGI does.
   struct Move
@@ -312,8 +317,7 @@ HttpAnswer AxisCameraEmulator::query(const std::string& what, const std::string&
     {
       body += formatText("zoom=%.0f\r\n", std::round(zoom_table_.toValue(state.position[ZOOM])));
     }
-    return HttpAnswer{ 200, "text/plain",
-                       body + "iris=2500\r\nfocus=7000\r\nbrightness=5000\r\nautofocus=on\r\nautoiris=on\r\n" };
+    return HttpAnswer{ 200, "text/plain", body + lensLines(now) };
   }
   if (what == "limits")
   {
@@ -374,6 +378,11 @@ HttpAnswer AxisCameraEmulator::info() const
   body += zoom ? "rzoom=[offset]\r\n" : "";
   body += "continuouspantiltmove=[x-speed],[y-speed]\r\n";
   body += zoom ? "continuouszoommove=[speed]\r\n" : "";
+  body += lens_.present(LensFunction::FOCUS) ? "autofocus={ on | off "
+                                               "}\r\nfocus=[n]\r\ncontinuousfocusmove=[speed]\r\n" :
+                                               "";
+  body +=
+      lens_.present(LensFunction::IRIS) ? "autoiris={ on | off }\r\niris=[n]\r\ncontinuousirismove=[speed]\r\n" : "";
   body += "speed=[n]\r\nimagerotation=[n]\r\nquery={ speed | position | limits | presetposcam | presetposall";
   body += config_.attributes ? " | attributes }\r\n" : " }\r\n";
   return HttpAnswer{ 200, "text/plain", body };

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
+#include <utility>
 
 #include "ptz_action_server/core/units.h"
 
@@ -29,7 +31,10 @@ bool PelcoDEmulatorConfig::applyMode(const std::string& mode)
 }
 
 PelcoDEmulator::PelcoDEmulator(const PelcoDEmulatorConfig& config)
-  : LineEmulator(modelConfig(config)), config_(config), parser_(config.address, false)
+  : LineEmulator(modelConfig(config))
+  , config_(config)
+  , parser_(config.address, false)
+  , lens_(config.lens, SteadyClock::now())
 {
   openPort(
       config.port,
@@ -156,6 +161,13 @@ std::vector<std::uint8_t> PelcoDEmulator::execute(const pelco::Frame& frame, Tim
       const double tilt_speed = speed(frame.data2, config_.device.axes[TILT].motion.max_speed);
       const double zoom_rate = config_.device.axes[ZOOM].motion.max_speed;
       const std::uint8_t bits = frame.command2;
+      driveLens(frame, at);
+      const std::uint8_t lens_bits = frame.command1 & (pelco::FOCUS_NEAR | pelco::IRIS_OPEN | pelco::IRIS_CLOSE);
+      if ((bits & ~pelco::FOCUS_FAR) == 0 && frame.data1 == 0 && frame.data2 == 0 &&
+          (lens_bits != 0 || (bits & pelco::FOCUS_FAR) != 0))
+      {
+        break;  // the lens bits alone: the pan, tilt and zoom go on as they were (a set-position goes on)
+      }
       model_.moveAxisAtVelocity(PAN, bits & pelco::RIGHT ? pan_speed : (bits & pelco::LEFT ? -pan_speed : 0.0), at);
       model_.moveAxisAtVelocity(TILT, bits & pelco::UP ? tilt_speed : (bits & pelco::DOWN ? -tilt_speed : 0.0), at);
       model_.moveAxisAtVelocity(ZOOM,
@@ -164,6 +176,35 @@ std::vector<std::uint8_t> PelcoDEmulator::execute(const pelco::Frame& frame, Tim
     }
   }
   return acknowledge();
+}
+
+void PelcoDEmulator::driveLens(const pelco::Frame& frame, TimePoint at)
+{
+  const int focus = frame.command2 & pelco::FOCUS_FAR ? 1 : (frame.command1 & pelco::FOCUS_NEAR ? -1 : 0);
+  const int iris = frame.command1 & pelco::IRIS_OPEN ? 1 : (frame.command1 & pelco::IRIS_CLOSE ? -1 : 0);
+  for (const auto& [function, drive] : { std::pair<LensFunction, int>{ LensFunction::FOCUS, focus },
+                                         std::pair<LensFunction, int>{ LensFunction::IRIS, iris } })
+  {
+    if (!lens_.present(function))
+    {
+      continue;  // a camera without it ignores the bit
+    }
+    if (drive != 0)
+    {
+      lens_.setAuto(function, false, at);  // driven by hand: out of auto, as such cameras do
+      lens_.drive(function, drive, at);
+    }
+    else if (!lens_.isAuto(function))
+    {
+      lens_.drive(function, 0.0, at);
+    }
+  }
+}
+
+LensState PelcoDEmulator::lensState() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return lensStateOf(lens_, SteadyClock::now());
 }
 
 }  // namespace ptz_action_server

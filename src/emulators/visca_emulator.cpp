@@ -85,7 +85,7 @@ bool ViscaEmulatorConfig::applyMode(const std::string& mode)
 }
 
 ViscaEmulator::ViscaEmulator(const ViscaEmulatorConfig& config)
-  : LineEmulator(modelConfig(config.model)), config_(config)
+  : LineEmulator(modelConfig(config.model)), config_(config), lens_model_(lensModelConfig(config), SteadyClock::now())
 {
   openPort(config.port, DevicePort::Handlers{ [this](const std::uint8_t* data, std::size_t size, TimePoint at) {
                                                onBytes(data, size, at);

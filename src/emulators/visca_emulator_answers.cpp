@@ -118,7 +118,8 @@ void ViscaEmulator::answerInquiry(const visca::Packet& packet, TimePoint at, Rep
 void ViscaEmulator::executeCommand(const visca::Packet& packet, TimePoint at, std::uint32_t sequence, Replies& replies)
 {
   // A command of the same group replaces the one still running; any other busy socket stays taken.
-  const Group group = packet[2] == 0x04 ? Group::ZOOM : Group::PAN_TILT;
+  const bool lens = isLensPacket(packet);
+  const Group group = lens ? Group::LENS : (packet[2] == 0x04 ? Group::ZOOM : Group::PAN_TILT);
   std::size_t free_socket = 0;
   for (std::size_t socket = 1; socket < sockets_.size() && free_socket == 0; ++socket)
   {
@@ -131,7 +132,13 @@ void ViscaEmulator::executeCommand(const visca::Packet& packet, TimePoint at, st
     return;
   }
   bool until_rest = false;
-  if (!run(packet, at, until_rest))
+  const std::uint8_t lens_error = lens ? runLens(packet, at) : 0;
+  if (lens_error == visca::NOT_EXECUTABLE)
+  {
+    replies.push_back(reply(ERROR, { visca::NOT_EXECUTABLE }));
+    return;
+  }
+  if (lens_error != 0 || (!lens && !run(packet, at, until_rest)))
   {
     ++counters_.syntax_errors;  // illegal parameters: nothing moved, no socket taken
     replies.push_back(reply(ERROR, { visca::SYNTAX }));

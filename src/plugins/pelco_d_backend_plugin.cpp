@@ -41,6 +41,8 @@ struct PelcoDPlugin
     settings.general_reply = pelco.flag("general_reply", settings.general_reply);
     settings.set_position = readSetPosition(pelco);
     settings.set_position_wait = pelco.number("set_position_wait", settings.set_position_wait, 0.05, 10.0);
+    settings.focus = pelco.flag("focus", settings.focus);
+    settings.iris = pelco.flag("iris", settings.iris);
     settings.zoom_position_max =
         static_cast<std::uint16_t>(pelco.integer("zoom_position_max", settings.zoom_position_max, 1, 0xFFFF));
     readAxis(pelco.child("pan"), context.urdf_limits.axes[PAN].range, M_PI, settings.axes[PAN]);

@@ -33,7 +33,13 @@ public:
     zoom.motion.max_speed = zoom.motion.base_speed = zoom_params.number("rate", zoom.motion.max_speed, 1e-3, 1000.0);
     zoom.initial_position = zoom.range.min;
 
-    auto backend = std::make_shared<SimBackend>(config, context.clock);
+    SimLensConfig lens;
+    lens.focus.present = params.flag("focus/present", lens.focus.present);
+    lens.focus.travel_time = params.number("focus/travel_time", lens.focus.travel_time, 0.01, 600.0);
+    lens.iris.present = params.flag("iris/present", lens.iris.present);
+    lens.iris.travel_time = params.number("iris/travel_time", lens.iris.travel_time, 0.01, 600.0);
+
+    auto backend = std::make_shared<SimBackend>(config, context.clock, lens);
     backend_ = backend;
     ros::NodeHandle node_handle = params.nodeHandle();
     fault_service_ = node_handle.advertiseService("set_faults", &SimBackendPlugin::setFaults, this);

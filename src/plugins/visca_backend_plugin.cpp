@@ -120,6 +120,14 @@ void readViscaSettings(const ParamReader& params, ViscaSettings& visca)
   parseViscaZoomDrive(zoom.choice("drive", toString(visca.zoom_drive), { "auto", "variable", "standard" }),
                       visca.zoom_drive);
   visca.inquiries = params.flag("inquiries", visca.inquiries);
+  const ParamReader focus = params.child("focus");
+  visca.lens.focus = focus.flag("present", visca.lens.focus);
+  visca.lens.focus_near = static_cast<std::uint16_t>(focus.integer("near", visca.lens.focus_near, 0, 0xFFFF));
+  visca.lens.focus_far = static_cast<std::uint16_t>(focus.integer("far", visca.lens.focus_far, 0, 0xFFFF));
+  const ParamReader iris = params.child("iris");
+  visca.lens.iris = iris.flag("present", visca.lens.iris);
+  visca.lens.iris_closed = static_cast<std::uint8_t>(iris.integer("closed", visca.lens.iris_closed, 0, 0xFF));
+  visca.lens.iris_open = static_cast<std::uint8_t>(iris.integer("open", visca.lens.iris_open, 0, 0xFF));
   visca.sequence_cycle = static_cast<std::uint32_t>(params.integer("sequence_cycle", 0, 0, 1 << 30));
   const std::string problem = visca.model.check();
   if (!problem.empty())

@@ -102,6 +102,7 @@ void PtzActionServer::start()
   state_publisher_->start();
 
   presets_ = std::make_unique<PresetServices>(node_handle_, config_.presets, limits_, backend_);
+  lens_ = std::make_unique<LensInterface>(node_handle_, backend_, limits_.lens, backend_->name(), config_.lens);
   frame_listener_ = std::make_unique<FrameListener>(node_handle_, config_.frame_listen_time, config_.frame_wait);
   frame_hold_ = std::make_unique<FrameGoalHold>(node_handle_, *frame_listener_, kinematics_.baseFrame());
   PixelGoals::CalibrationSource calibration;
@@ -136,6 +137,9 @@ void PtzActionServer::start()
   ROS_INFO("ptz_action_server ready with backend '%s': pan %s; tilt %s; zoom %s; device extras: %s",
            backend_->name().c_str(), describeAxis(limits_, PAN).c_str(), describeAxis(limits_, TILT).c_str(),
            describeAxis(limits_, ZOOM).c_str(), describeExtras(limits_).c_str());
+  ROS_INFO("%s: focus %s; iris %s", backend_->name().c_str(),
+           describeLens(limits_.lens, LensFunction::FOCUS, backend_->name()).c_str(),
+           describeLens(limits_.lens, LensFunction::IRIS, backend_->name()).c_str());
 }
 
 void PtzActionServer::postStatus(StatusHold::Change change)

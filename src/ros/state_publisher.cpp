@@ -280,6 +280,7 @@ void StatePublisher::diagnoseBackend(diagnostic_updater::DiagnosticStatusWrapper
   }
   std::vector<DiagnosticValue> values;
   backend_->diagnostics(values);
+  lensDiagnostics(limits_.lens, backend_->lensState(), backend_->lastLensFault(), values);
   for (const DiagnosticValue& value : values)
   {
     status.add(value.first, value.second);

@@ -70,6 +70,23 @@ public:
   /// The latest state of the device. Never blocks on I/O.
   virtual PtzSample sample() const = 0;
 
+  /// Focus and iris (capabilities().lens says what the device has; the node checks a command with
+  /// checkLensCommand() first). Never blocks on I/O; any thread. A lens command never ends or changes a goal.
+  virtual void lens(const LensCommand& command)
+  {
+    (void)command;
+  }
+  /// The lens' latest modes, positions and fault count. Never blocks on I/O.
+  virtual LensState lensState() const
+  {
+    return {};
+  }
+  /// Why the device last refused a lens command (the one that last incremented LensState::fault_count), or "".
+  virtual std::string lastLensFault() const
+  {
+    return {};
+  }
+
   /// Text of the most recent device fault (the one that last incremented PtzSample::fault_count).
   virtual std::string lastFault() const = 0;
 

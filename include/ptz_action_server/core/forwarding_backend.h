@@ -63,6 +63,18 @@ public:
   {
     return inner_->lastFault();
   }
+  void lens(const LensCommand& command) override
+  {
+    inner_->lens(command);
+  }
+  LensState lensState() const override
+  {
+    return inner_->lensState();
+  }
+  std::string lastLensFault() const override
+  {
+    return inner_->lastLensFault();
+  }
   std::string lastLinkLoss() const override
   {
     return inner_->lastLinkLoss();

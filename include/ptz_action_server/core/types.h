@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "ptz_action_server/core/lens.h"
+
 namespace ptz_action_server
 {
 /// Index of an axis in every per-axis array of the core.
@@ -162,6 +164,7 @@ struct Capabilities
   bool relative_moves = false;  ///< the device moves by an offset of its own (VAPIX rpan, ONVIF RelativeMove)
   bool device_presets = false;  ///< the device stores presets of its own
   bool device_home = false;     ///< the device has a home position of its own
+  LensCapabilities lens;        ///< focus and iris (none by default)
 };
 
 /// \brief One snapshot of the device, as a backend last knew it.

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -13,6 +14,7 @@
 #include "ptz_action_server/core/axis/vapix_codec.h"
 #include "ptz_action_server/core/axis/vapix_queue.h"
 #include "ptz_action_server/core/sim/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_lens_model.h"
 #include "ptz_action_server/emulators/http_camera_emulator.h"
 #include "ptz_action_server/emulators/http_camera_server.h"
 
@@ -45,6 +47,8 @@ struct AxisCameraEmulatorConfig
   double control_time = 60.0;     ///< TimeoutTime: s of control after the holder's last move or request
   double queue_period = 5.0;      ///< the period ptzqueue.cgi recommends, s
   double queue_poll_time = 20.0;  ///< CtlQueuePollTime, s
+  /// Its focus and iris (SimLensAxisConfig::present: whether it has them; values 1..9999, 1 near and closed).
+  SimLensConfig lens;
 
   static SimDeviceConfig defaultDevice();
   /// An 18X optical zoom listed per X as Axis cameras list their zoomSteps: VAPIX values step evenly per X.
@@ -91,6 +95,8 @@ public:
   void holdControlElsewhere(double seconds);
   /// control_queue: the client (cookie value) that holds control now; "" for none, "other" for holdControlElsewhere().
   std::string controlHolder() const;
+  /// The lens now: focus and iris modes and positions (shares 0..1), for tests.
+  LensState lensState() const;
 
   /// The camera's words when it refuses a move under setRefuse().
   static constexpr const char* REFUSAL = "PTZ control is locked by another user";
@@ -102,6 +108,13 @@ private:
                      TimePoint now);
   HttpAnswer query(const std::string& what, const std::string& group, TimePoint now);
   HttpAnswer info() const;
+  // Focus and iris (axis_camera_emulator_lens.cpp); mutex_ held.
+  /// A request with a lens argument: its answer (only lens arguments and camera= may come with it); else nothing.
+  std::optional<HttpAnswer> lensCommand(const std::map<std::string, std::string>& values, const std::string& client,
+                                        TimePoint now);
+  /// The lens lines of a position answer (`iris=`, `focus=`, `brightness=`, `autofocus=`, `autoiris=`; those of the
+  /// functions it has), in the field camera's order.
+  std::string lensLines(TimePoint now) const;
   HttpAnswer parameters(const std::string& action, const std::string& group) const;
   // PTZ control queue (axis_camera_emulator_queue.cpp); mutex_ held.
   /// The client the request's cookie names; a new one (and \p set_cookie) when it names none.
@@ -119,6 +132,7 @@ private:
   bool held_for_good_ = false;
   unsigned clients_ = 0;  ///< cookies handed out
   int speed_ = 100;
+  SimLensModel lens_;
   std::unique_ptr<HttpCameraServer> server_;  ///< last: its thread calls handle()
 };
 

@@ -13,6 +13,7 @@
 
 #include "ptz_action_server/core/pelco_d/pelco_d_codec.h"
 #include "ptz_action_server/core/sim/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_lens_model.h"
 #include "ptz_action_server/emulators/line_emulator.h"
 
 namespace ptz_action_server
@@ -33,6 +34,8 @@ struct PelcoDEmulatorConfig
   /// command tables list the position queries and no 0x4B, 0x4D, 0x4F): it ignores them like any command it does
   /// not know (it stays where it is), and still answers the queries and moves at the speeds it is given.
   bool set_position = true;
+  /// Its focus and iris (SimLensAxisConfig::present: whether it has them), driven by the standard command's bits.
+  SimLensConfig lens;
 
   /// The emulator's --mode names: "standard", "no-set-position".
   static constexpr const char* MODES = "standard, no-set-position";
@@ -62,6 +65,8 @@ public:
   /// What the device received, classified (pelco_d_emulator_classify.cpp): position queries, the stop frame, the set
   /// position frames (pan, tilt, zoom) and the rest (drives, presets); each 7 bytes on the wire.
   std::vector<ClassifiedCommand> classify() const;
+  /// The lens now: focus and iris modes and positions (shares 0..1), for tests.
+  LensState lensState() const;
 
 private:
   /// A partial frame is lost with the power.
@@ -69,11 +74,14 @@ private:
   void onBytes(const std::uint8_t* data, std::size_t size, TimePoint arrived_at);
   /// Executes a frame; returns the reply bytes (empty: none).
   std::vector<std::uint8_t> execute(const pelco::Frame& frame, TimePoint at);
+  /// The focus near/far and iris open/close bits of a standard movement command (none: the drive stops).
+  void driveLens(const pelco::Frame& frame, TimePoint at);
 
   const PelcoDEmulatorConfig config_;
   // Guarded by mutex_.
   pelco::FrameParser parser_;
   std::map<int, AxisValues> presets_;
+  SimLensModel lens_;
 };
 
 }  // namespace ptz_action_server

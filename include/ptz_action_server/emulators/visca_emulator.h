@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "ptz_action_server/core/sim/sim_lens_model.h"
 #include "ptz_action_server/core/visca/visca_codec.h"
+#include "ptz_action_server/core/visca/visca_lens.h"
 #include "ptz_action_server/core/visca/visca_model.h"
 #include "ptz_action_server/core/visca/visca_protocol.h"
 #include "ptz_action_server/emulators/line_emulator.h"
@@ -44,6 +46,8 @@ struct ViscaEmulatorConfig
   std::uint8_t address = 1;
   visca::ViscaModel model;  ///< units, ranges, speeds, how positions are written; the motion model follows them
   ViscaEmulatorModes modes;
+  visca::ViscaLens lens;     ///< which of focus and iris it has, and their numbers
+  SimLensConfig lens_model;  ///< how its focus and iris move (present follows lens)
 
   /// Turns on the mode \p mode (one of MODES); false for another name.
   bool applyMode(const std::string& mode);
@@ -94,6 +98,8 @@ public:
   std::vector<ClassifiedCommand> classify() const;
   /// As if another controller had used the camera up to \p sequence: the next lower number is a sequence error.
   void skipSequence(std::uint32_t sequence);
+  /// The lens now: focus and iris modes and positions (shares 0..1), for tests.
+  LensState lensState() const;
 
   /// The s a G2 takes to answer \p packet (ViscaEmulatorModes::g2_latency), drawn from \p random: 0 for what it
   /// does not answer (a control message).
@@ -104,6 +110,7 @@ private:
   {
     PAN_TILT,
     ZOOM,
+    LENS,
   };
   struct Socket
   {
@@ -128,6 +135,13 @@ private:
   bool run(const visca::Packet& packet, TimePoint at, bool& until_rest);
   bool runPosition(const visca::Packet& packet, TimePoint at);
   bool runZoomDrive(std::uint8_t drive, TimePoint at);
+  /// A CAM_Focus, CAM_Iris or CAM_AE packet (visca_lens.h).
+  static bool isLensPacket(const visca::Packet& packet);
+  /// config.lens_model, with the functions config.lens has.
+  static SimLensConfig lensModelConfig(const ViscaEmulatorConfig& config);
+  /// Runs one on the lens model: 0, or the error it answers (syntax; not executable: a manual focus command in auto
+  /// focus, an iris position in automatic exposure, as Sony's cameras refuse them).
+  std::uint8_t runLens(const visca::Packet& packet, TimePoint at);
   void answerInquiry(const visca::Packet& packet, TimePoint at, Replies& replies);
   visca::Packet reply(std::uint8_t kind, std::initializer_list<std::uint8_t> rest = {}) const;
   /// Sends raw VISCA replies (wrapped as replies to \p sequence over VISCA over IP).
@@ -141,6 +155,7 @@ private:
   std::uint32_t last_sequence_ = 0;
   std::string reply_host_;  ///< udp: the host of the last sender, for reply_port
   ViscaEmulatorCounters counters_;
+  SimLensModel lens_model_;
 };
 
 }  // namespace ptz_action_server

@@ -11,6 +11,7 @@
 #include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/core/mounted_backend.h"
 #include "ptz_action_server/ros/detection_tracking.h"
+#include "ptz_action_server/ros/lens_interface.h"
 #include "ptz_action_server/ros/look_at_clicked_point.h"
 #include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/pixel_goals.h"
@@ -38,6 +39,7 @@ struct NodeConfig
   /// The field_of_view topic and the zoomed camera_info.
   FieldOfViewSettings field_of_view;
   PresetConfig presets;                            ///< the presets file and home
+  LensInterfaceConfig lens;                        ///< the focus and iris topics
   LookAtClickedPointConfig look_at_clicked_point;  ///< "look here" from rviz
   PixelConfig pixel;                               ///< aiming at pixels: the picture's lens, clicks on it
   /// The node's private namespace (/left/ptz_action_server): its name in the diagnostics, as a process or a nodelet.

@@ -26,6 +26,7 @@
 #include "ptz_action_server/ros/goal_handle_adapter.h"
 #include "ptz_action_server/ros/goal_translator.h"
 #include "ptz_action_server/ros/image_clicks.h"
+#include "ptz_action_server/ros/lens_interface.h"
 #include "ptz_action_server/ros/look_at_clicked_point.h"
 #include "ptz_action_server/ros/node_config.h"
 #include "ptz_action_server/ros/pixel_goals.h"
@@ -154,6 +155,7 @@ private:
   std::unique_ptr<FrameTracking> frame_tracking_;              ///< steers track_frame goals; built by start()
   std::unique_ptr<DetectionTracking> detection_tracking_;      ///< runs track_detections goals; built by start()
   std::unique_ptr<PresetServices> presets_;                    ///< the preset services and lookups; built by start()
+  std::unique_ptr<LensInterface> lens_;                        ///< focus and iris; built by start()
   std::unique_ptr<LookAtClickedPoint> look_at_clicked_point_;  ///< the switch; built by start()
   std::uint64_t clicked_points_ = 0;                           ///< clicked points so far, for their ids
   std::shared_ptr<LatestImage> local_images_;                  ///< the simulated camera's, or null

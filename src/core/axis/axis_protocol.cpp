@@ -127,6 +127,7 @@ void AxisProtocol::onConnected()
     setupFailed("query=limits: " + problem);
     return;
   }
+  lens_limits_ = vapix::readLensLimits(reply_);
   // What the camera offers: informative only (a camera that does not answer it gets VAPIX's documented commands).
   vapix::CommandList commands;
   const std::string info_path = formatText("%s?camera=%d&info=1", vapix::PTZ_PATH, settings_.camera);
@@ -169,6 +170,9 @@ void AxisProtocol::onConnected()
   widest_view_ = limits.has_zoom && !zoom_feedback_ && (commands.empty() || commands.has("zoom"));
   widest_zoom_value_ = limits.min_zoom;
   Capabilities capabilities = cameraCapabilities(limits, commands);
+  const vapix::LensReading lens = vapix::readLens(reply_);
+  capabilities.lens = vapix::lensCapabilities(lens_limits_, lens, commands);
+  reportLens(lens);
   if (zoom_source_ != AxisZoomSource::NO_ZOOM && !zoom_table_.empty() && !position.has_zoom)
   {
     session_.warn("this Axis camera reports no zoom position (query=position has no zoom=): zoom goals other than 1 "
@@ -205,6 +209,7 @@ void AxisProtocol::poll()
     return;
   }
   ++counters_.positions;
+  reportLens(vapix::readLens(reply_));
   session_.reportState({ toRadians(position.pan), toRadians(position.tilt), zoomFactor(position) });
   if (control_queue_ && secondsBetween(control_asked_at_, session_.now()) >= renew_after_)
   {

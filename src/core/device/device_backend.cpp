@@ -29,6 +29,11 @@ void DeviceBackend::stop()
   session_->command([this] { protocol_->stop(); });
 }
 
+void DeviceBackend::lens(const LensCommand& command)
+{
+  session_->post([this, command] { protocol_->lens(command); });
+}
+
 void DeviceBackend::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   values.emplace_back("protocol", protocol_->name());

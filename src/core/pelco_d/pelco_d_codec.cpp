@@ -71,6 +71,15 @@ Frame move(std::uint8_t address, int pan_speed, int tilt_speed, int zoom_directi
   return frame;
 }
 
+Frame withLens(Frame frame, int focus, int iris)
+{
+  frame.command1 = static_cast<std::uint8_t>((frame.command1 & ~(FOCUS_NEAR | IRIS_OPEN | IRIS_CLOSE)) |
+                                             (focus < 0 ? FOCUS_NEAR : 0) | (iris > 0 ? IRIS_OPEN : 0) |
+                                             (iris < 0 ? IRIS_CLOSE : 0));
+  frame.command2 = static_cast<std::uint8_t>((frame.command2 & ~FOCUS_FAR) | (focus > 0 ? FOCUS_FAR : 0));
+  return frame;
+}
+
 std::uint16_t encodePan(double degrees)
 {
   return static_cast<std::uint16_t>(wrap(std::lround(degrees * 100.0)));

@@ -80,6 +80,7 @@ PelcoProtocol::PelcoProtocol(const PelcoSettings& settings, DeviceSession& sessi
   , round_(settings.axes[ZOOM].present ? 3 : 2)
   , set_position_check_(checkConfig(settings))
 {
+  motion_ = pelco::stop(settings_.address);
 }
 
 std::string PelcoProtocol::deviceName() const
@@ -108,6 +109,7 @@ Capabilities PelcoProtocol::capabilities() const
       axis.remedy = configured ? "" : "set pelco_d/set_position: false to say so from the start";
     }
   }
+  capabilities.lens = pelcoLens(settings_);
   if (!capabilities.axes[ZOOM].present)
   {
     capabilities.axes[ZOOM] = absentAxis("this Pelco-D device is configured without zoom");
@@ -157,6 +159,7 @@ void PelcoProtocol::goTo(const AxisValues& position)
     queueFrame(pelco::stop(settings_.address), COMMAND);
   }
   set_position_check_.cancel();
+  motion_ = pelco::stop(settings_.address);  // a lens command from now on goes with no drive
   const bool zoom = settings_.axes[ZOOM].present && !std::isnan(position[ZOOM]);
   if (!takesSetPosition())
   {
@@ -209,9 +212,9 @@ void PelcoProtocol::moveAtVelocity(const AxisValues& velocity)
                      std::abs(velocity[PAN]) > 0.5 * (settings_.axes[PAN].max_speed + settings_.turbo_speed);
   const int pan = turbo ? (velocity[PAN] > 0.0 ? pelco::MAX_SPEED + 1 : -(pelco::MAX_SPEED + 1)) :
                           speedByte(velocity[PAN], settings_.axes[PAN].max_speed);
-  queueFrame(pelco::move(settings_.address, pan, speedByte(velocity[TILT], settings_.axes[TILT].max_speed), zoom,
-                         settings_.turbo_byte),
-             COMMAND);
+  motion_ = pelco::move(settings_.address, pan, speedByte(velocity[TILT], settings_.axes[TILT].max_speed), zoom,
+                        settings_.turbo_byte);
+  queueFrame(pelco::withLens(motion_, focus_drive_, iris_drive_), COMMAND);
 }
 
 void PelcoProtocol::stop()
@@ -227,7 +230,9 @@ void PelcoProtocol::stop()
 void PelcoProtocol::stopNow()
 {
   channel_.clearQueue();  // what the previous command had not sent yet
-  const pelco::Bytes bytes = pelco::encode(pelco::stop(settings_.address));
+  motion_ = pelco::stop(settings_.address);
+  focus_drive_ = iris_drive_ = 0;  // the all-zero frame stops the lens too
+  const pelco::Bytes bytes = pelco::encode(motion_);
   channel_.sendUrgent(TransactionChannel::Request{ std::string(bytes.begin(), bytes.end()), COMMAND,
                                                    settings_.general_reply, session_.currentCommand() });
 }

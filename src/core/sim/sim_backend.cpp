@@ -6,10 +6,21 @@
 
 namespace ptz_action_server
 {
-SimBackend::SimBackend(const SimDeviceConfig& config, std::shared_ptr<const Clock> clock)
+namespace
+{
+Capabilities simCapabilities(const SimDeviceConfig& config, const SimLensConfig& lens)
+{
+  Capabilities capabilities = config.capabilities();
+  capabilities.lens = simLensCapabilities(lens);
+  return capabilities;
+}
+}  // namespace
+
+SimBackend::SimBackend(const SimDeviceConfig& config, std::shared_ptr<const Clock> clock, const SimLensConfig& lens)
   : clock_(std::move(clock))
-  , capabilities_(config.capabilities())
+  , capabilities_(simCapabilities(config, lens))
   , model_(config, clock_->now())
+  , lens_model_(lens, clock_->now())
   , supervisor_(std::numeric_limits<double>::infinity(), clock_)  // the model never falls silent by itself
 {
   answers();
@@ -124,6 +135,41 @@ PtzSample SimBackend::sample() const
   PtzSample sample = model_.sample(clock_->now());
   sample.link_losses = supervisor_.losses();
   return sample;
+}
+
+void SimBackend::lens(const LensCommand& command)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (dropCommand() || !lens_model_.present(command.function))
+  {
+    return;
+  }
+  const TimePoint now = clock_->now();
+  switch (command.kind)
+  {
+    case LensCommand::Kind::MODE:
+      lens_model_.setAuto(command.function, command.automatic(), now);
+      break;
+    case LensCommand::Kind::ONE_PUSH:
+      lens_model_.setAuto(command.function, false, now);  // it focusses once and stays manual
+      lens_model_.onePush(now);
+      break;
+    case LensCommand::Kind::VELOCITY:
+      // A manual command takes the function out of auto, as most cameras do when asked to drive it by hand.
+      lens_model_.setAuto(command.function, false, now);
+      lens_model_.drive(command.function, command.value, now);
+      break;
+    default:
+      lens_model_.setAuto(command.function, false, now);
+      lens_model_.goTo(command.function, command.value, now);
+      break;
+  }
+}
+
+LensState SimBackend::lensState() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return lensStateOf(lens_model_, clock_->now());
 }
 
 std::string SimBackend::lastFault() const

@@ -103,11 +103,17 @@ Capabilities ViscaProtocol::capabilities() const
   capabilities.relative_moves = true;  // 8x 01 06 03
   capabilities.device_presets = true;  // memory set / recall (8x 01 04 3F)
   capabilities.device_home = true;     // 8x 01 06 04
+  capabilities.lens = settings_.lens.capabilities();
   return capabilities;
 }
 
 void ViscaProtocol::onConnected()
 {
+  // A camera that was away may have restarted in its own modes: the next manual lens command sets manual again.
+  for (LensFunction function : ALL_LENS_FUNCTIONS)
+  {
+    session_.lens().setMode(function, LensMode::UNKNOWN);
+  }
   channel_.reset();
   splitter_.reset();
   sockets_.fill(std::nullopt);

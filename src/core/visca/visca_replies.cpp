@@ -127,7 +127,7 @@ void ViscaProtocol::handle(const visca::Packet& packet)
     switch (reply.kind)
     {
       case Kind::ACK:
-        return on_wire.tag == COMMAND || on_wire.tag == PROBE;
+        return on_wire.tag == COMMAND || on_wire.tag == PROBE || on_wire.tag == LENS;
       case Kind::ANSWER:
         return on_wire.tag == PAN_TILT_INQUIRY ? visca::decodePanTiltAnswer(reply, layout, pan, tilt) :
                                                  on_wire.tag == ZOOM_INQUIRY && visca::decodeZoomAnswer(reply, zoom);
@@ -146,7 +146,7 @@ void ViscaProtocol::handle(const visca::Packet& packet)
   switch (reply.kind)
   {
     case Kind::ACK:
-      sockets_[reply.socket] = SocketUse{ answered->command, answered->bytes };
+      sockets_[reply.socket] = SocketUse{ answered->command, answered->bytes, answered->tag == LENS };
       session_.reportAlive();
       if (answered->tag == PROBE && feedback_ && inquiry_answers_ == 0)
       {
@@ -210,13 +210,25 @@ void ViscaProtocol::handleError(const visca::Reply& reply)
   if (reply.socket != 0 && socket)
   {
     // A command that had its socket: refused or cancelled while it ran.
-    session_.reportFault(refusal(socket->bytes, reply.error), socket->command);
+    if (socket->lens)
+    {
+      session_.lens().fault(refusal(socket->bytes, reply.error));
+    }
+    else
+    {
+      session_.reportFault(refusal(socket->bytes, reply.error), socket->command);
+    }
     socket.reset();
     return;
   }
   // No socket (yet): the reply to the request on the wire.
   const std::optional<TransactionChannel::Request> answered =
       completeRequest([](const TransactionChannel::Request&) { return true; });
+  if (answered && answered->tag == LENS)
+  {
+    session_.lens().fault(refusal(answered->bytes, reply.error));
+    return;
+  }
   if (!answered || answered->tag != COMMAND)
   {
     return;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "ptz_action_server/core/axis/vapix_codec.h"
+#include "ptz_action_server/core/axis/vapix_lens.h"
 #include "ptz_action_server/core/axis/vapix_queue.h"
 #include "ptz_action_server/core/device/device_backend.h"
 #include "ptz_action_server/core/http/http_device_protocol.h"
@@ -122,6 +123,8 @@ public:
   void moveAtVelocity(const AxisValues& velocity) override;
   /// `move=stop` (the camera decelerates).
   void stop() override;
+  /// Focus and iris (vapix::lensArguments()), as a request of its own: a refusal is a lens fault, never the goal's.
+  void lens(const LensCommand& command) override;
   /// Drops PTZ control when it held it (control queue).
   void shutdown() override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
@@ -157,6 +160,8 @@ private:
   std::string withoutControl() const;
   /// The X-factor of a position reply (1 when it cannot be known: the zoom's feedback is false then).
   double zoomFactor(const vapix::Position& position) const;
+  /// The lens modes and positions of a position answer, to the session's LensReport.
+  void reportLens(const vapix::LensReading& reading);
 
   const AxisSettings settings_;
   AxisCounters counters_;
@@ -164,6 +169,7 @@ private:
 
   // I/O thread only.
   vapix::ZoomTable zoom_table_;  ///< empty: zoom X unknown (or no zoom)
+  vapix::LensLimits lens_limits_;
   AxisZoomSource zoom_source_ = AxisZoomSource::NO_ZOOM;
   bool zoom_feedback_ = false;  ///< the position reply carries zoom= and zoom_table_ maps it
   bool zoom_velocity_ = false;  ///< the camera has a zoom it moves with continuouszoommove

@@ -54,6 +54,16 @@ public:
   {
     return session_->sample();
   }
+  /// Queued to the I/O thread beside the commands (DeviceSession::post()): the protocol's lens().
+  void lens(const LensCommand& command) override;
+  LensState lensState() const override
+  {
+    return session_->lens().state();
+  }
+  std::string lastLensFault() const override
+  {
+    return session_->lens().lastFault();
+  }
   std::string lastFault() const override
   {
     return session_->lastFault();

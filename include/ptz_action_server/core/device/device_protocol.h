@@ -56,6 +56,13 @@ public:
   virtual void goTo(const AxisValues& position) = 0;
   virtual void moveAtVelocity(const AxisValues& velocity) = 0;
   virtual void stop() = 0;
+  /// Focus and iris (see PtzBackend::lens(); the node checked it against capabilities().lens). Not a node command:
+  /// it leaves DeviceSession::currentCommand() as it was, and its refusals go to DeviceSession::lens(), never to the
+  /// goal's faults. By default ignored (a device without a lens).
+  virtual void lens(const LensCommand& command)
+  {
+    (void)command;
+  }
   /// The device answers again after a loss: whatever it still does belongs to a goal that has ended. Keep it
   /// where it is (by default, stop()).
   virtual void hold()

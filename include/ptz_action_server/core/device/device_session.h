@@ -20,6 +20,7 @@
 #include "ptz_action_server/core/device/device_io_pool.h"
 #include "ptz_action_server/core/device/link_supervisor.h"
 #include "ptz_action_server/core/device/state_plausibility.h"
+#include "ptz_action_server/core/lens.h"
 #include "ptz_action_server/core/motion/motion_estimator.h"
 #include "ptz_action_server/core/transport/http_channel.h"
 #include "ptz_action_server/core/transport/link.h"
@@ -111,6 +112,9 @@ public:
   /// Runs \p work (one of the protocol's commands) on the I/O thread, after every earlier command. From then on,
   /// faults reported for earlier commands no longer count. Dropped once stop() has begun.
   void command(std::function<void()> work);
+  /// Runs \p work on the I/O thread after every earlier command, without making it a command of its own: faults of
+  /// the command running still count (a lens command beside a goal). Dropped once stop() has begun.
+  void post(std::function<void()> work);
 
   PtzSample sample() const;
   Capabilities capabilities() const;
@@ -221,6 +225,15 @@ public:
   PtzSample estimate() const;
   /// What the protocol learnt of the device (limits, speeds).
   void setCapabilities(const Capabilities& capabilities);
+  /// The lens' modes, positions and refusals, as the protocol learns them (any thread; the node reads them).
+  LensReport& lens()
+  {
+    return lens_;
+  }
+  const LensReport& lens() const
+  {
+    return lens_;
+  }
   /// The protocol knows the device on this connection (its set-up is done): the link may count as up.
   void ready();
   /// The device cannot be used as configured (e.g. a camera it does not have): start() fails with \p reason.
@@ -277,6 +290,7 @@ private:
   std::uint64_t fault_count_ = 0;
   std::string last_fault_;
   mutable DeviceSessionCounters counters_;
+  LensReport lens_;  ///< thread-safe on its own
 };
 
 }  // namespace ptz_action_server

@@ -29,6 +29,11 @@ constexpr std::uint8_t ZOOM_WIDE = 0x40;
 /// The highest speed byte every published Pelco-D client sends. Turbo is device-specific (0x40 on some, 0xFF on
 /// others, ignored by many): a setting of the backend, never sent unless configured.
 constexpr std::uint8_t MAX_SPEED = 0x3F;
+// The lens bits of the standard movement command: focus far in command 2, the others in command 1.
+constexpr std::uint8_t FOCUS_FAR = 0x80;   ///< command 2, bit 7
+constexpr std::uint8_t FOCUS_NEAR = 0x01;  ///< command 1, bit 0
+constexpr std::uint8_t IRIS_OPEN = 0x02;   ///< command 1, bit 1
+constexpr std::uint8_t IRIS_CLOSE = 0x04;  ///< command 1, bit 2
 
 /// Extended commands (cmd2) and their replies.
 constexpr std::uint8_t SET_PAN = 0x4B;
@@ -81,6 +86,10 @@ Frame stop(std::uint8_t address);
 Frame move(std::uint8_t address, int pan_speed, int tilt_speed, int zoom_direction, std::uint8_t pan_turbo = 0);
 
 /// How a device encodes tilt angles in 0..35999 hundredths of a degree.
+/// \p frame (a standard movement command) with the lens bits: \p focus > 0 far, < 0 near; \p iris > 0 open, < 0
+/// close; 0 neither. The lens moves at the device's own speed.
+Frame withLens(Frame frame, int focus, int iris);
+
 enum class TiltEncoding
 {
   /// The Pelco manual's, as its published clients quote it: 0 is horizontal, "45 degrees below the horizon is 4500",

@@ -43,11 +43,16 @@ struct PelcoSettings
   PelcoSetPosition set_position = PelcoSetPosition::AUTO;
   /// s a set-position has to move the device before a speed command checks it (AUTO), and that check after it
   double set_position_wait = 0.5;
+  bool focus = true;  ///< the camera has a focus the standard command's near/far bits drive (pelco_d/focus)
+  bool iris = true;   ///< the camera has an iris the open/close bits drive (pelco_d/iris)
 
   /// Zoom X-factor <-> the device's zoom position value.
   std::uint16_t zoomToPosition(double zoom) const;
   double positionToZoom(std::uint16_t position) const;
 };
+
+/// The lens \p settings declare: focus near/far and iris open/close drives at the device's speed, nothing more.
+LensCapabilities pelcoLens(const PelcoSettings& settings);
 
 /// Counters for diagnostics (reply timeouts and late replies are the channel's).
 struct PelcoCounters
@@ -114,6 +119,9 @@ public:
   void moveAtVelocity(const AxisValues& velocity) override;
   /// The all-zero frame at once, ahead of anything queued.
   void stop() override;
+  /// Focus near/far and iris open/close: the bits of the standard movement command, sent with the drive running
+  /// (Pelco-D's movement command says everything that moves). A stop ends them too.
+  void lens(const LensCommand& command) override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 
   const PelcoCounters& counters() const
@@ -159,6 +167,9 @@ private:
   std::uint64_t checked_command_ = 0;              ///< the command whose goal the check watches
   bool set_position_ignored_ = false;              ///< found out: the device ignores set-position
   std::vector<pelco::FrameParser::Event> events_;  ///< reused for every read
+  pelco::Frame motion_;  ///< the last standard movement command, without its lens bits (a stop at first)
+  int focus_drive_ = 0;  ///< the lens bits sent with it: 1 far (open), -1 near (close), 0 none
+  int iris_drive_ = 0;
 };
 
 }  // namespace ptz_action_server

@@ -12,6 +12,7 @@
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/device/link_supervisor.h"
 #include "ptz_action_server/core/sim/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_lens_model.h"
 #include "ptz_action_server/core/timer_thread.h"
 
 namespace ptz_action_server
@@ -28,7 +29,8 @@ class SimBackend : public PtzBackend
 {
 public:
   explicit SimBackend(const SimDeviceConfig& config,
-                      std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>());
+                      std::shared_ptr<const Clock> clock = std::make_shared<SystemClock>(),
+                      const SimLensConfig& lens = SimLensConfig());
   /// Cancels the event deadline: once it returns, the listener is not running and will not be called.
   ~SimBackend() override;
 
@@ -42,6 +44,9 @@ public:
   void moveAtVelocity(const AxisValues& velocity) override;
   void stop() override;
   PtzSample sample() const override;
+  /// Focus and iris of the simulated lens (lost in a dropout, as the other commands).
+  void lens(const LensCommand& command) override;
+  LensState lensState() const override;
   std::string lastFault() const override;
   std::string lastLinkLoss() const override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
@@ -69,6 +74,7 @@ private:
   const Capabilities capabilities_;
   mutable std::mutex mutex_;      ///< guards everything below
   mutable SimDeviceModel model_;  ///< mutable: sampling applies commands whose lag has passed
+  SimLensModel lens_model_;
   bool dropout_ = false;
   TimePoint next_event_ = TimePoint::max();  ///< the model's next event, as last planned
   LinkSupervisor supervisor_;                ///< a dropout is a loss; no deadline (the model never falls silent)

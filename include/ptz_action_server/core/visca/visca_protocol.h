@@ -15,6 +15,7 @@
 #include "ptz_action_server/core/device/poll_round.h"
 #include "ptz_action_server/core/device/transaction_channel.h"
 #include "ptz_action_server/core/visca/visca_codec.h"
+#include "ptz_action_server/core/visca/visca_lens.h"
 #include "ptz_action_server/core/visca/visca_model.h"
 
 namespace ptz_action_server
@@ -60,6 +61,7 @@ struct ViscaSettings
   /// Sony's count, which goes on up (and is cut to the numbers a camera answers once it answers no more, see the
   /// backend's page).
   std::uint32_t sequence_cycle = 0;
+  visca::ViscaLens lens;  ///< focus and iris (lens/... parameters)
 };
 
 /// Counters for diagnostics (reply timeouts and late replies are the channel's).
@@ -132,6 +134,8 @@ public:
   void moveAtVelocity(const AxisValues& velocity) override;
   /// The pan-tilt drive stop at once, ahead of anything queued, then the zoom stop.
   void stop() override;
+  /// Focus and iris (visca::lensPackets()), queued behind the goal's commands; their refusals are lens faults.
+  void lens(const LensCommand& command) override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 
   const ViscaCounters& counters() const
@@ -149,12 +153,14 @@ private:
     ZOOM_INQUIRY,
     COMMAND,
     PROBE,  ///< a command sent to learn whether a camera that answers no inquiry answers commands
+    LENS,   ///< a focus or iris command: its refusal is a lens fault, never the goal's
   };
   /// The command a socket runs: the node command it serves, and its bytes (for messages).
   struct SocketUse
   {
     std::uint64_t command = 0;
     std::string bytes;
+    bool lens = false;  ///< a lens command's (LENS)
   };
 
   void queueSetup();
