@@ -95,8 +95,9 @@ void ImageView::takeFrame()
     return;
   }
   frame_ = std::move(newest);
-  // A view of the frame's memory, which frame_ keeps alive and the client does not reuse while anyone holds it.
-  image_ = frame_ ? QImage(frame_->rgb.data(), frame_->width, frame_->height, frame_->stride, QImage::Format_RGB888) :
+  // A view of the frame's memory, which frame_ keeps alive (and nobody writes to).
+  image_ = frame_ ? QImage(frame_->rgb.data, frame_->width, frame_->height, static_cast<int>(frame_->rgb.step),
+                           QImage::Format_RGB888) :
                     QImage();
   update();
 }

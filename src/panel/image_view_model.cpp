@@ -24,10 +24,9 @@ std::vector<std::string> imageTopics(const std::vector<TopicInfo>& topics, const
   return names;
 }
 
-std::string defaultImageTopic(const std::vector<std::string>& image_topics, const std::string& ns)
+std::string defaultImageTopic(const std::string& ns)
 {
-  const std::string wanted = inNamespace(ns, DEFAULT_IMAGE);
-  return std::find(image_topics.begin(), image_topics.end(), wanted) != image_topics.end() ? wanted : "";
+  return ns.empty() ? "" : inNamespace(ns, DEFAULT_IMAGE);
 }
 
 Letterbox letterbox(int image_width, int image_height, int widget_width, int widget_height)

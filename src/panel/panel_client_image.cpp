@@ -1,7 +1,7 @@
 /**
  * \file
- * \brief PanelClient's picture: the image view's subscription (image_transport), each image converted once into a
- * frame of a small pool, the camera's recent views for drawing the aim, and the pixel goals (move_ptz/pixel) it sends
+ * \brief PanelClient's picture: the image view's subscription (image_transport), each image converted once for
+ * display (cv_bridge), the camera's recent views for drawing the aim, and the pixel goals (move_ptz/pixel) it sends
  * and those it hears.
  */
 #include "ptz_action_server/panel/panel_client.h"
@@ -10,11 +10,14 @@
 
 namespace ptz_action_server::panel
 {
-namespace
+void PanelClient::subscribeImageParts(ros::NodeHandle& node, std::uint64_t generation)
 {
-/// Frames converted into: the one shown, the newest, and one to convert into; more only while the widget lags.
-constexpr std::size_t FRAME_POOL = 4;
-}  // namespace
+  subscribers_.push_back(node.subscribe<FieldOfView>(
+      "field_of_view", 10, [this, generation](const FieldOfView::ConstPtr& view) { onFieldOfView(generation, view); }));
+  subscribers_.push_back(node.subscribe<PtzPixelActionGoal>(
+      "move_ptz/pixel/goal", 10,
+      [this, generation](const PtzPixelActionGoal::ConstPtr& goal) { onPixelGoal(generation, goal); }));
+}
 
 void PanelClient::setImageTopic(const std::string& topic)
 {
@@ -28,7 +31,7 @@ void PanelClient::setImageTopic(const std::string& topic)
     const std::uint64_t generation = ++image_generation_;
     image_topic_ = topic;
     latest_frame_.reset();
-    image_message_ = topic.empty() ? "" : "waiting for " + topic;
+    image_message_ = topic.empty() ? "no image" : "waiting for " + topic;
     old_subscriber = image_subscriber_;
     image_subscriber_ = image_transport::Subscriber();
     if (!topic.empty())
@@ -61,50 +64,13 @@ std::optional<View> PanelClient::viewAt(double stamp) const
   return views_.at(stamp);
 }
 
-void PanelClient::onImage(std::uint64_t generation, const sensor_msgs::ImageConstPtr& image)
+void PanelClient::onImage(std::uint64_t image_generation, const sensor_msgs::ImageConstPtr& image)
 {
-  std::shared_ptr<ImageFrame> frame;
+  auto frame = std::make_shared<ImageFrame>();
+  const std::string error = toFrame(image, *frame);  // off the lock: the widget never waits for a conversion
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (generation != image_generation_)
-    {
-      return;
-    }
-    // A frame nobody else holds (not the newest, not shown): only latest_frame_ hands out frames, under this lock, so
-    // none can be taken while it is converted into.
-    for (const std::shared_ptr<ImageFrame>& candidate : frame_pool_)
-    {
-      if (candidate.use_count() == 1)
-      {
-        frame = candidate;
-        break;
-      }
-    }
-    if (!frame)
-    {
-      if (frame_pool_.size() >= FRAME_POOL)
-      {
-        return;  // the widget holds them all: this image is dropped
-      }
-      frame_pool_.push_back(frame = std::make_shared<ImageFrame>());
-    }
-  }
-  ImageData data;
-  data.encoding = image->encoding;
-  data.big_endian = image->is_bigendian != 0;
-  data.width = static_cast<int>(image->width);
-  data.height = static_cast<int>(image->height);
-  data.step = image->step;
-  data.data = image->data.data();
-  data.size = image->data.size();
-  const std::string error = convertImage(data, *frame);  // off the lock: the widget reads the frame before
-  frame->seq = image->header.seq;
-  frame->stamp_sec = image->header.stamp.sec;
-  frame->stamp_nsec = image->header.stamp.nsec;
-  frame->frame_id = image->header.frame_id;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (generation != image_generation_)
+    if (image_generation != image_generation_)
     {
       return;
     }

@@ -102,6 +102,7 @@ void PtzPanel::build()
   state->addRow("Goal", goal_ = valueLabel("state_goal"));
   goal_->setWordWrap(true);
   layout->addLayout(state);
+  buildImage(layout);
 
   look_ = new QCheckBox("Look at clicked point");
   look_->setObjectName("look_at_clicked_point");
@@ -310,6 +311,7 @@ void PtzPanel::setNamespace(const QString& ns)
     camera_->addItem(ns);
   }
   camera_->setCurrentText(ns);
+  updateImageSubscription();  // the camera's own image follows the camera
   refresh();
   Q_EMIT configChanged();
 }
@@ -378,6 +380,7 @@ void PtzPanel::refresh()
     widget->setEnabled(e.presets);
   }
   look_->setEnabled(e.look_switch);
+  refreshImage(inputs.fresh && s.link != Link::DOWN);
   if (look_->isChecked() != s.look_enabled)
   {
     look_->setChecked(s.look_enabled);  // setChecked emits no clicked: no service call
@@ -418,22 +421,6 @@ void PtzPanel::refresh()
       }
     }
   }
-}
-
-void PtzPanel::load(const rviz::Config& config)
-{
-  rviz::Panel::load(config);
-  QString ns;
-  if (config.mapGetString("Namespace", &ns) && !ns.isEmpty())
-  {
-    setNamespace(ns);
-  }
-}
-
-void PtzPanel::save(rviz::Config config) const
-{
-  rviz::Panel::save(config);
-  config.mapSetValue("Namespace", ns_);
 }
 
 }  // namespace ptz_action_server::panel

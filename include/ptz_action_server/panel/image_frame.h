@@ -1,18 +1,21 @@
 /**
  * \file
- * \brief An image as the panel's view draws it: packed 8-bit RGB rows, converted once per image from the encodings
- * cameras publish, into memory reused from one image to the next. No Qt, no ROS (test_core tests it).
+ * \brief An image as the panel's view draws it: 8-bit RGB, converted once per image by cv_bridge's
+ * cvtColorForDisplay (any encoding it reads: colour, grey, Bayer, YUV, 16-bit and float depths scaled), with the
+ * header fields a pixel goal on it carries. No Qt (test_core tests it).
  */
 #pragma once
 
-#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
-#include <vector>
+
+#include <opencv2/core.hpp>
+#include <sensor_msgs/Image.h>
 
 namespace ptz_action_server::panel
 {
-/// One image converted for display, with the header fields a pixel goal on it carries.
+/// One image converted for display.
 struct ImageFrame
 {
   std::uint32_t seq = 0;         ///< the image header's
@@ -21,8 +24,10 @@ struct ImageFrame
   std::string frame_id;          ///< the image header's
   int width = 0;                 ///< px
   int height = 0;                ///< px
-  int stride = 0;                ///< bytes per row: width * 3 rounded up to a multiple of 4, as QImage wants
-  std::vector<std::uint8_t> rgb;  ///< height rows of `stride` bytes, R, G, B per pixel
+  /// CV_8UC3, R, G, B; may point into the message's memory (an rgb8 image is not copied).
+  cv::Mat rgb;
+  /// Keeps the memory rgb points into alive (cv_bridge's image, which holds the message).
+  std::shared_ptr<const void> owner;
 
   /// The stamp in seconds.
   double stamp() const
@@ -32,29 +37,13 @@ struct ImageFrame
   /// The pixel (column, row) as R, G, B.
   const std::uint8_t* pixel(int column, int row) const
   {
-    return rgb.data() + static_cast<std::size_t>(row) * stride + static_cast<std::size_t>(column) * 3;
+    return rgb.ptr<std::uint8_t>(row) + static_cast<std::size_t>(column) * 3;
   }
 };
 
-/// The encodings convertImage reads, in words for the view's message.
-inline constexpr const char* SHOWN_ENCODINGS = "rgb8, bgr8, rgba8, bgra8, mono8, mono16, yuv422, yuv422_yuy2";
-
-/// One image as sensor_msgs/Image has it.
-struct ImageData
-{
-  std::string encoding;  ///< sensor_msgs/image_encodings' name
-  bool big_endian = false;
-  int width = 0;   ///< px
-  int height = 0;  ///< px
-  std::size_t step = 0;  ///< bytes per row
-  const std::uint8_t* data = nullptr;
-  std::size_t size = 0;  ///< bytes at data
-};
-
-/// Converts `image` into `frame`'s size and pixels (its header fields untouched), reusing `frame`'s memory whenever it
-/// is large enough: rgb8, bgr8, rgba8, bgra8, mono8, mono16 (the high byte), yuv422 (UYVY) and yuv422_yuy2 (YUYV).
-/// Returns "" or why the image cannot be shown (another encoding, a row step or a data size too short for the size);
-/// `frame` is then left as it was.
-std::string convertImage(const ImageData& image, ImageFrame& frame);
+/// Converts `image` for display into `frame` (its header fields, size and pixels). Returns "" or why the image cannot
+/// be shown (an encoding cv_bridge does not read, an empty image, a data size too short for its size); `frame` is
+/// then left as it was.
+std::string toFrame(const sensor_msgs::ImageConstPtr& image, ImageFrame& frame);
 
 }  // namespace ptz_action_server::panel

@@ -21,15 +21,15 @@
 
 namespace ptz_action_server::panel
 {
-/// The type of the topics the image view offers, and the image it picks by default in the camera's namespace.
+/// The type of the topics the image view offers, and the image it shows by default in the camera's namespace.
 inline constexpr const char* IMAGE_TYPE = "sensor_msgs/Image";
 inline constexpr const char* DEFAULT_IMAGE = "image_raw";
 
 /// The topics of type sensor_msgs/Image in `ns` and below ("/ptz": /ptz/image_raw, /ptz/left/image; "/": all),
 /// sorted, each once.
 std::vector<std::string> imageTopics(const std::vector<TopicInfo>& topics, const std::string& ns);
-/// The camera's own image: `<ns>/image_raw` when `image_topics` lists it, else "".
-std::string defaultImageTopic(const std::vector<std::string>& image_topics, const std::string& ns);
+/// The camera's own image, `<ns>/image_raw` (the simulated camera's; "" for no camera).
+std::string defaultImageTopic(const std::string& ns);
 
 /// A pixel of an image, in camera_info's convention.
 struct Pixel
