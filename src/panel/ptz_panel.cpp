@@ -18,6 +18,8 @@
 
 #include <pluginlib/class_list_macros.hpp>
 
+#include "ptz_action_server/panel/image_view.h"
+
 namespace ptz_action_server::panel
 {
 namespace
@@ -67,6 +69,10 @@ PtzPanel::PtzPanel(QWidget* parent) : rviz::Panel(parent), client_(std::make_uni
 
 PtzPanel::~PtzPanel()
 {
+  // The view outlives client_ (QWidget deletes its children after the members): it must not reach it from here on,
+  // neither through its hide event nor through a new image.
+  image_view_->setVisibilityListener(nullptr);
+  client_->setFrameListener(nullptr);
   if (pressed_)
   {
     client_->stopJog();
