@@ -42,7 +42,10 @@ ImageView::ImageView(PanelClient& client, QWidget* parent) : QWidget(parent), cl
   setMinimumSize(160, 90);
   setToolTip("click: centre that point (move_ptz/pixel); drag a box: centre it and zoom until it fills the view");
   // Each new image posts a repaint to the GUI thread; the client calls this on its spinner.
-  client_.setFrameListener([this] { QMetaObject::invokeMethod(this, [this] { takeFrame(); }, Qt::QueuedConnection); });
+  client_.setFrameListener([this] {
+    QMetaObject::invokeMethod(
+        this, [this] { takeFrame(); }, Qt::QueuedConnection);
+  });
 }
 
 ImageView::~ImageView() = default;

@@ -38,7 +38,8 @@ Letterbox letterbox(int image_width, int image_height, int widget_width, int wid
   {
     return box;
   }
-  box.scale = std::min(static_cast<double>(widget_width) / image_width, static_cast<double>(widget_height) / image_height);
+  box.scale =
+      std::min(static_cast<double>(widget_width) / image_width, static_cast<double>(widget_height) / image_height);
   box.left = 0.5 * (widget_width - box.width());
   box.top = 0.5 * (widget_height - box.height());
   return box;
@@ -164,8 +165,8 @@ std::optional<View> ViewTrack::at(double stamp) const
     return std::nullopt;
   }
   View result{ pose->a, pose->b, view->a, view->b };
-  if (!std::isfinite(result.pan) || !std::isfinite(result.tilt) || !(result.horizontal > 0.0 && result.horizontal < M_PI) ||
-      !(result.vertical > 0.0 && result.vertical < M_PI))
+  if (!std::isfinite(result.pan) || !std::isfinite(result.tilt) ||
+      !(result.horizontal > 0.0 && result.horizontal < M_PI) || !(result.vertical > 0.0 && result.vertical < M_PI))
   {
     return std::nullopt;
   }
@@ -199,7 +200,8 @@ struct Pinhole
 /// then tilt about the turned -y).
 Eigen::Matrix3d linkInBase(const View& view)
 {
-  return (Eigen::AngleAxisd(-view.pan, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(-view.tilt, Eigen::Vector3d::UnitY()))
+  return (Eigen::AngleAxisd(-view.pan, Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(-view.tilt, Eigen::Vector3d::UnitY()))
       .toRotationMatrix();
 }
 
@@ -289,8 +291,8 @@ void PixelGoalWatch::status(const std::vector<GoalStatusEntry>& goals)
     if (goal.id == aim_->goal_id)
     {
       listed_ = true;
-      running_ = goal.status == PENDING || goal.status == ACTIVE || goal.status == PREEMPTING ||
-                 goal.status == RECALLING;
+      running_ =
+          goal.status == PENDING || goal.status == ACTIVE || goal.status == PREEMPTING || goal.status == RECALLING;
       return;
     }
   }

@@ -96,13 +96,17 @@ TEST(PanelModelFrame, ConvertsBgrAlphaGreyAndDeepImages)
   }
   // Grey: the same value in R, G and B.
   ImageFrame frame;
-  ASSERT_EQ(toFrame(makeImage("mono8", 4, 2, 1, 4, [](int i) { return std::vector<std::uint8_t>{ std::uint8_t(i * 30) }; }),
-                    frame),
-            "");
+  ASSERT_EQ(
+      toFrame(makeImage("mono8", 4, 2, 1, 4, [](int i) { return std::vector<std::uint8_t>{ std::uint8_t(i * 30) }; }),
+              frame),
+      "");
   EXPECT_EQ(frame.pixel(3, 1)[0], 7 * 30);
   EXPECT_EQ(frame.pixel(3, 1)[2], 7 * 30);
   // 16 bits: brighter stays brighter in 8.
-  ASSERT_EQ(toFrame(makeImage("mono16", 2, 1, 2, 4, [](int i) { return std::vector<std::uint8_t>{ 0, std::uint8_t(i ? 200 : 20) }; }),
+  ASSERT_EQ(toFrame(makeImage("mono16", 2, 1, 2, 4,
+                              [](int i) {
+                                return std::vector<std::uint8_t>{ 0, std::uint8_t(i ? 200 : 20) };
+                              }),
                     frame),
             "");
   EXPECT_GT(frame.pixel(1, 0)[0], frame.pixel(0, 0)[0]);

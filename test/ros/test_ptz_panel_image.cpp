@@ -40,10 +40,10 @@ using ptz_action_server::panel::WidgetPoint;
 // ptz_panel.test lists this frame first: the camera draws it magenta, 100 m away in the direction MARKER_PAN,
 // MARKER_TILT from the tilt axis (0.12 m above the base).
 const char* const MARKER = "panel_image_marker";
-constexpr double MARKER_PAN = 0.25;   // rad, right
-constexpr double MARKER_TILT = 0.1;   // rad, up
-constexpr double CENTRED = 3.0;       // image px, beside the click's own rounding to a widget pixel
-constexpr double CENTRE_U = 319.5;    // the sim's 640 x 360 picture's centre
+constexpr double MARKER_PAN = 0.25;  // rad, right
+constexpr double MARKER_TILT = 0.1;  // rad, up
+constexpr double CENTRED = 3.0;      // image px, beside the click's own rounding to a widget pixel
+constexpr double CENTRE_U = 319.5;   // the sim's 640 x 360 picture's centre
 constexpr double CENTRE_V = 179.5;
 
 /// The marker's centroid in `frame`; false when fewer than 20 of its pixels are in view or it touches an edge.

@@ -128,11 +128,11 @@ private:
 /// What a pixel goal aims at: a pixel (and a box around it) of an image of the given size.
 struct PixelAim
 {
-  PixelBox target;        ///< width and height 0: a click, no box
-  int image_width = 0;    ///< px
-  int image_height = 0;   ///< px
-  double stamp = 0.0;     ///< s, ROS time: the image's stamp, which picks the view the pixel was seen from
-  std::string goal_id;    ///< the action goal's id
+  PixelBox target;       ///< width and height 0: a click, no box
+  int image_width = 0;   ///< px
+  int image_height = 0;  ///< px
+  double stamp = 0.0;    ///< s, ROS time: the image's stamp, which picks the view the pixel was seen from
+  std::string goal_id;   ///< the action goal's id
   bool operator==(const PixelAim& other) const;
 };
 
@@ -145,10 +145,10 @@ struct AimInImage
   bool tracked = false;  ///< re-projected for the image's view; false: drawn where it was clicked
 };
 
-/// Where `aim`, seen from `aim_view`, lies in an image of `width` x `height` px seen from `view`: each point re-projected
-/// as a direction far away (the camera turning about its axes; its optical centre's offset from them neglected) when
-/// both views are known; otherwise at the same place of the image, scaled to its size. nullopt for a point behind the
-/// camera, or an empty size.
+/// Where `aim`, seen from `aim_view`, lies in an image of `width` x `height` px seen from `view`: each point
+/// re-projected as a direction far away (the camera turning about its axes; its optical centre's offset from them
+/// neglected) when both views are known; otherwise at the same place of the image, scaled to its size. nullopt for a
+/// point behind the camera, or an empty size.
 std::optional<AimInImage> aimInImage(const PixelAim& aim, const std::optional<View>& aim_view, int width, int height,
                                      const std::optional<View>& view);
 
@@ -170,7 +170,7 @@ public:
 private:
   std::optional<PixelAim> aim_;
   double heard_ = 0.0;
-  bool listed_ = false;  ///< a status list has named it
+  bool listed_ = false;   ///< a status list has named it
   bool running_ = false;  ///< pending, active, preempting or recalling in the newest list that names it
 };
 

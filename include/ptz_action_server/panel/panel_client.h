@@ -77,8 +77,8 @@ struct PanelSnapshot
   bool look_available = false;     ///< the look_at_clicked_point service exists
   bool look_enabled = false;       ///< its latched state (false until heard)
   std::vector<Preset> presets;
-  std::uint64_t presets_serial = 0;  ///< counts preset list replies, so the widget refills only on news
-  std::string message;               ///< the outcome of the last service call, or why it failed
+  std::uint64_t presets_serial = 0;       ///< counts preset list replies, so the widget refills only on news
+  std::string message;                    ///< the outcome of the last service call, or why it failed
   std::vector<std::string> image_topics;  ///< every sensor_msgs/Image topic on the master
   std::string image_topic;                ///< the image subscribed to, "" for none
   std::string image_message;              ///< "" while images arrive and show, else what the view says instead
@@ -176,7 +176,7 @@ private:
   /// The newest goal seen to end: the node drops finished goals from its status lists after a second, the panel keeps
   /// showing how the last one ended.
   std::optional<GoalStatusEntry> last_finished_;
-  ViewTrack views_;            ///< the camera's recent views, for drawing the aim on later images
+  ViewTrack views_;             ///< the camera's recent views, for drawing the aim on later images
   PixelGoalWatch pixel_goals_;  ///< the pixel goal to draw
 
   std::uint64_t image_generation_ = 0;  ///< counts setImageTopic calls: images of an earlier topic are dropped
