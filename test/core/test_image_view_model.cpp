@@ -182,8 +182,10 @@ TEST(PanelModelImage, TheViewTrackInterpolatesPoseAndFieldOfView)
   // Pan the shorter way round, across +-pi.
   ViewTrack wrap;
   wrap.addFieldOfView(0.0, 1.0, 0.6);
+  wrap.addFieldOfView(1.0, 1.0, 0.6);
   wrap.addPose(0.0, M_PI - 0.1, 0.0);
   wrap.addPose(1.0, -M_PI + 0.1, 0.0);
+  ASSERT_TRUE(wrap.at(0.5));
   EXPECT_NEAR(std::remainder(wrap.at(0.5)->pan - M_PI, 2.0 * M_PI), 0.0, 1e-12);
 
   // A NaN axis (a device that does not report it): no view.
