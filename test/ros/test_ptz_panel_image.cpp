@@ -230,9 +230,10 @@ TEST_F(PanelImageTest, AClickCentresThePixelOfTheImageShown)
   const std::shared_ptr<const ImageFrame> shown = markerShown(home_time_, u, v);
   ASSERT_NE(shown, nullptr) << "no image with the marker in the view: " << text("banner");
   ASSERT_GT(std::hypot(u - CENTRE_U, v - CENTRE_V), 50.0) << "the marker must start away from the centre";
+  ASSERT_TRUE(waitFor([&] { return view_->cursor().shape() == Qt::CrossCursor; })) << "the view does not aim";
+  // Where the image lies now: the panel's layout may have changed while events ran, none run until the click.
   const Letterbox box = view_->layout();
   ASSERT_GT(box.scale, 0.3) << "the view is too small to click in";
-  ASSERT_TRUE(waitFor([&] { return view_->cursor().shape() == Qt::CrossCursor; })) << "the view does not aim";
   std::size_t before = 0;
   {
     std::lock_guard<std::mutex> lock(goals_.mutex);
@@ -267,13 +268,13 @@ TEST_F(PanelImageTest, ADraggedBoxCentresAndZooms)
 {
   double u = 0.0, v = 0.0;
   ASSERT_NE(markerShown(home_time_, u, v), nullptr) << "no image with the marker in the view";
-  const Letterbox box = view_->layout();
   ASSERT_TRUE(waitFor([&] { return view_->cursor().shape() == Qt::CrossCursor; })) << "the view does not aim";
   std::size_t before = 0;
   {
     std::lock_guard<std::mutex> lock(goals_.mutex);
     before = goals_.goals.size();
   }
+  const Letterbox box = view_->layout();  // as it lies now: no events run until the release
   const QPoint from = widgetPoint(box, { u - 40.0, v - 25.0 });
   const QPoint to = widgetPoint(box, { u + 40.0, v + 25.0 });
   const std::shared_ptr<const ImageFrame> pressed = view_->frame();
