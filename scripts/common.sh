@@ -27,7 +27,7 @@ PTZ_APT_PACKAGES=(
   liburdfdom-dev liburdfdom-tools libeigen3-dev
   libdiagnostic-updater-dev pluginlib-dev
   libsensor-msgs-dev libgeometry-msgs-dev
-  libimage-transport-dev libopencv-core-dev libopencv-imgproc-dev
+  libimage-transport-dev libopencv-core-dev libopencv-imgproc-dev libcv-bridge-dev
   ros-robot-state-publisher
   googletest libgtest-dev libbenchmark-dev
   nlohmann-json3-dev

@@ -6,7 +6,7 @@ namespace
 {
 /// The node's actions whose status topics feed the goal line.
 const char* const STATUS_ACTIONS[] = { "position_abs", "position_rel", "velocity", "position_abs_tf",
-                                       "frame",        "track_frame",  "preset" };
+                                       "frame",        "track_frame",  "preset",   "pixel" };
 
 AxisAbility toAbility(const PtzAxisCapability& axis)
 {
@@ -48,9 +48,11 @@ PanelClient::~PanelClient()
   spinner_->stop();
   std::lock_guard<std::mutex> lock(mutex_);
   subscribers_.clear();
+  image_subscriber_.shutdown();
   velocity_client_.reset();
   absolute_client_.reset();
   preset_client_.reset();
+  pixel_client_.reset();
 }
 
 double PanelClient::now() const
@@ -66,6 +68,7 @@ void PanelClient::setNamespace(const std::string& ns)
   std::unique_ptr<PtzClient> old_velocity_client;
   std::unique_ptr<PtzClient> old_absolute_client;
   std::unique_ptr<PresetClient> old_preset_client;
+  std::unique_ptr<PixelClient> old_pixel_client;
   std::uint64_t generation = 0;
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -79,13 +82,18 @@ void PanelClient::setNamespace(const std::string& ns)
     old_velocity_client = std::move(velocity_client_);
     old_absolute_client = std::move(absolute_client_);
     old_preset_client = std::move(preset_client_);
+    old_pixel_client = std::move(pixel_client_);
     jogging_ = false;
     watch_.reset();
     statuses_.clear();
     last_finished_.reset();
+    views_.clear();
+    pixel_goals_.clear();
     const std::vector<std::string> namespaces = snapshot_.namespaces;
+    const std::vector<std::string> image_topics = snapshot_.image_topics;
     snapshot_ = PanelSnapshot();
     snapshot_.namespaces = namespaces;
+    snapshot_.image_topics = image_topics;
     snapshot_.ns = ns;
     if (ns.empty())
     {
@@ -120,6 +128,8 @@ void PanelClient::setNamespace(const std::string& ns)
     velocity_client_ = std::make_unique<PtzClient>(node, "move_ptz/velocity", false);
     absolute_client_ = std::make_unique<PtzClient>(node, "move_ptz/position_abs", false);
     preset_client_ = std::make_unique<PresetClient>(node, "move_ptz/preset", false);
+    pixel_client_ = std::make_unique<PixelClient>(node, "move_ptz/pixel", false);
+    subscribeImageParts(node, generation);
   }
   discovery_wake_.notify_all();
 }
@@ -148,6 +158,10 @@ PanelSnapshot PanelClient::snapshot() const
     goals.push_back(*last_finished_);
   }
   copy.goal = goalText(goals);
+  copy.image_topic = image_topic_;
+  copy.image_message = image_message_;
+  copy.pixel_connected = pixel_client_ && pixel_client_->isServerConnected();
+  copy.pixel_aim = pixel_goals_.active(t);
   return copy;
 }
 
@@ -171,6 +185,8 @@ void PanelClient::onState(std::uint64_t generation, const PtzState::ConstPtr& st
   snapshot_.pan = state->pan;
   snapshot_.tilt = state->tilt;
   snapshot_.zoom = state->zoom;
+  // PtzState has no stamp: its arrival stands for it (the node publishes it as it takes it, at 10 Hz).
+  views_.addPose(ros::Time::now().toSec(), state->pan, state->tilt);
 }
 
 void PanelClient::onCapabilities(std::uint64_t generation, const PtzCapabilities::ConstPtr& capabilities)
@@ -221,7 +237,7 @@ void PanelClient::onStatus(std::uint64_t generation, const std::string& action,
   entries.clear();
   for (const actionlib_msgs::GoalStatus& goal : status->status_list)
   {
-    entries.push_back({ action, goal.status, goal.text, goal.goal_id.stamp.toSec() });
+    entries.push_back({ action, goal.status, goal.text, goal.goal_id.stamp.toSec(), goal.goal_id.id });
     const bool finished =
         goal.status != actionlib_msgs::GoalStatus::PENDING && goal.status != actionlib_msgs::GoalStatus::ACTIVE &&
         goal.status != actionlib_msgs::GoalStatus::PREEMPTING && goal.status != actionlib_msgs::GoalStatus::RECALLING;
@@ -229,6 +245,10 @@ void PanelClient::onStatus(std::uint64_t generation, const std::string& action,
     {
       last_finished_ = entries.back();
     }
+  }
+  if (action == "pixel")
+  {
+    pixel_goals_.status(entries);
   }
 }
 

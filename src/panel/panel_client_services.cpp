@@ -153,6 +153,7 @@ void PanelClient::discoveryLoop()
     // Both calls may wait (the master's topic list for a master that is gone): off the widget's thread, unlocked.
     ros::master::V_TopicInfo master_topics;
     std::vector<std::string> namespaces;
+    std::vector<std::string> image_topics;
     // check() never waits; getTopics waits for a master that is gone, which would hold the destructor's join.
     if (ros::master::check() && ros::master::getTopics(master_topics))
     {
@@ -162,6 +163,7 @@ void PanelClient::discoveryLoop()
         topics.push_back({ topic.name, topic.datatype });
       }
       namespaces = cameraNamespaces(topics);
+      image_topics = imageTopics(topics, "/");
     }
     std::string ns;
     std::uint64_t generation = 0;
@@ -174,6 +176,7 @@ void PanelClient::discoveryLoop()
     {
       std::lock_guard<std::mutex> lock(mutex_);
       snapshot_.namespaces = namespaces;
+      snapshot_.image_topics = image_topics;
       if (generation == generation_)
       {
         snapshot_.look_available = look;

@@ -18,6 +18,8 @@
 
 #include <pluginlib/class_list_macros.hpp>
 
+#include "ptz_action_server/panel/image_view.h"
+
 namespace ptz_action_server::panel
 {
 namespace
@@ -67,6 +69,10 @@ PtzPanel::PtzPanel(QWidget* parent) : rviz::Panel(parent), client_(std::make_uni
 
 PtzPanel::~PtzPanel()
 {
+  // The view outlives client_ (QWidget deletes its children after the members): it must not reach it from here on,
+  // neither through its hide event nor through a new image.
+  image_view_->setVisibilityListener(nullptr);
+  client_->setFrameListener(nullptr);
   if (pressed_)
   {
     client_->stopJog();
@@ -102,6 +108,7 @@ void PtzPanel::build()
   state->addRow("Goal", goal_ = valueLabel("state_goal"));
   goal_->setWordWrap(true);
   layout->addLayout(state);
+  buildImage(layout);
 
   look_ = new QCheckBox("Look at clicked point");
   look_->setObjectName("look_at_clicked_point");
@@ -310,6 +317,7 @@ void PtzPanel::setNamespace(const QString& ns)
     camera_->addItem(ns);
   }
   camera_->setCurrentText(ns);
+  updateImageSubscription();  // the camera's own image follows the camera
   refresh();
   Q_EMIT configChanged();
 }
@@ -378,6 +386,7 @@ void PtzPanel::refresh()
     widget->setEnabled(e.presets);
   }
   look_->setEnabled(e.look_switch);
+  refreshImage(inputs.fresh && s.link != Link::DOWN);
   if (look_->isChecked() != s.look_enabled)
   {
     look_->setChecked(s.look_enabled);  // setChecked emits no clicked: no service call
@@ -418,22 +427,6 @@ void PtzPanel::refresh()
       }
     }
   }
-}
-
-void PtzPanel::load(const rviz::Config& config)
-{
-  rviz::Panel::load(config);
-  QString ns;
-  if (config.mapGetString("Namespace", &ns) && !ns.isEmpty())
-  {
-    setNamespace(ns);
-  }
-}
-
-void PtzPanel::save(rviz::Config config) const
-{
-  rviz::Panel::save(config);
-  config.mapSetValue("Namespace", ns_);
 }
 
 }  // namespace ptz_action_server::panel

@@ -78,9 +78,9 @@ TEST(PanelModel, GoalTextPrefersTheNewestActiveGoal)
 {
   EXPECT_EQ(goalText({}), "no goal");
   std::vector<GoalStatusEntry> goals = {
-    { "position_abs", 4, "stalled: tilt made no progress for 1.00 s", 5.0 },
-    { "velocity", 1, "", 3.0 },
-    { "preset", 3, "", 4.0 },
+    { "position_abs", 4, "stalled: tilt made no progress for 1.00 s", 5.0, "goal-1" },
+    { "velocity", 1, "", 3.0, "goal-2" },
+    { "preset", 3, "", 4.0, "goal-3" },
   };
   EXPECT_EQ(goalText(goals), "velocity: active");
   goals[1].status = 2;  // preempted: now the newest goal of any state wins

@@ -28,14 +28,20 @@
 #include <actionlib/client/simple_action_client.h>
 #include <actionlib_msgs/GoalStatusArray.h>
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <image_transport/subscriber.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
+#include <sensor_msgs/Image.h>
 #include <std_msgs/Bool.h>
 
+#include "ptz_action_server/FieldOfView.h"
 #include "ptz_action_server/PtzAction.h"
 #include "ptz_action_server/PtzCapabilities.h"
+#include "ptz_action_server/PtzPixelAction.h"
 #include "ptz_action_server/PtzPresetAction.h"
 #include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/panel/image_frame.h"
+#include "ptz_action_server/panel/image_view_model.h"
 #include "ptz_action_server/panel/panel_model.h"
 
 namespace ptz_action_server::panel
@@ -71,8 +77,13 @@ struct PanelSnapshot
   bool look_available = false;     ///< the look_at_clicked_point service exists
   bool look_enabled = false;       ///< its latched state (false until heard)
   std::vector<Preset> presets;
-  std::uint64_t presets_serial = 0;  ///< counts preset list replies, so the widget refills only on news
-  std::string message;               ///< the outcome of the last service call, or why it failed
+  std::uint64_t presets_serial = 0;       ///< counts preset list replies, so the widget refills only on news
+  std::string message;                    ///< the outcome of the last service call, or why it failed
+  std::vector<std::string> image_topics;  ///< every sensor_msgs/Image topic on the master
+  std::string image_topic;                ///< the image subscribed to, "" for none
+  std::string image_message;              ///< "" while images arrive and show, else what the view says instead
+  bool pixel_connected = false;           ///< the move_ptz/pixel server is connected
+  std::optional<PixelAim> pixel_aim;      ///< the pixel goal to draw (any client's), while pending or active
 };
 
 class PanelClient
@@ -106,9 +117,22 @@ public:
   void deletePreset(const std::string& name);
   void setLookAt(bool enabled);
 
+  /// Subscribes to the image `topic` through image_transport ("" for none), dropping the previous one and its image.
+  void setImageTopic(const std::string& topic);
+  /// The newest image converted for display; null before the first of the topic.
+  std::shared_ptr<const ImageFrame> latestFrame() const;
+  /// Called on the client's spinner after each new frame (the widget posts itself a repaint); set before the first
+  /// image topic and cleared (empty) before the listener's owner goes.
+  void setFrameListener(std::function<void()> listener);
+  /// The camera's view at ROS time `stamp` (s), from its ptz_state and field_of_view; nullopt when not known then.
+  std::optional<View> viewAt(double stamp) const;
+  /// A move_ptz/pixel goal on `frame` (its header and size): centre `target`, and with a box zoom to it.
+  void aimAtPixel(const ImageFrame& frame, const PixelBox& target);
+
 private:
   using PtzClient = actionlib::SimpleActionClient<PtzAction>;
   using PresetClient = actionlib::SimpleActionClient<PtzPresetAction>;
+  using PixelClient = actionlib::SimpleActionClient<PtzPixelAction>;
 
   void onState(std::uint64_t generation, const PtzState::ConstPtr& state);
   void onCapabilities(std::uint64_t generation, const PtzCapabilities::ConstPtr& capabilities);
@@ -116,6 +140,11 @@ private:
   void onStatus(std::uint64_t generation, const std::string& action,
                 const actionlib_msgs::GoalStatusArray::ConstPtr& status);
   void onLookState(std::uint64_t generation, const std_msgs::Bool::ConstPtr& enabled);
+  void onImage(std::uint64_t image_generation, const sensor_msgs::ImageConstPtr& image);
+  void onFieldOfView(std::uint64_t generation, const FieldOfView::ConstPtr& view);
+  void onPixelGoal(std::uint64_t generation, const PtzPixelActionGoal::ConstPtr& goal);
+  /// The picture's subscriptions of the camera in ns_ (field_of_view, the pixel goals), under mutex_.
+  void subscribeImageParts(ros::NodeHandle& node, std::uint64_t generation);
   /// Queues a job for the worker thread.
   void post(std::function<void()> job);
   void workerLoop();
@@ -139,6 +168,7 @@ private:
   std::unique_ptr<PtzClient> velocity_client_;
   std::unique_ptr<PtzClient> absolute_client_;
   std::unique_ptr<PresetClient> preset_client_;
+  std::unique_ptr<PixelClient> pixel_client_;
   bool jogging_ = false;  ///< the panel's velocity goal may still run
   StateWatch watch_;
   PanelSnapshot snapshot_;
@@ -146,6 +176,16 @@ private:
   /// The newest goal seen to end: the node drops finished goals from its status lists after a second, the panel keeps
   /// showing how the last one ended.
   std::optional<GoalStatusEntry> last_finished_;
+  ViewTrack views_;             ///< the camera's recent views, for drawing the aim on later images
+  PixelGoalWatch pixel_goals_;  ///< the pixel goal to draw
+
+  std::uint64_t image_generation_ = 0;  ///< counts setImageTopic calls: images of an earlier topic are dropped
+  std::string image_topic_;
+  std::string image_message_;
+  image_transport::Subscriber image_subscriber_;
+  std::shared_ptr<const ImageFrame> latest_frame_;
+  std::mutex listener_mutex_;  ///< guards frame_listener_ (called without mutex_ held)
+  std::function<void()> frame_listener_;
 
   std::atomic<bool> running_{ true };
   std::mutex jobs_mutex_;

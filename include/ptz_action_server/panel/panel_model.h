@@ -79,6 +79,7 @@ struct GoalStatusEntry
   std::uint8_t status = 0;  ///< actionlib_msgs/GoalStatus constants
   std::string text;         ///< the goal status text (a rejection's or an abort's reason)
   double stamp = 0.0;       ///< the goal id's stamp (when the client sent it), s
+  std::string id;           ///< the goal id's id
 };
 
 /// actionlib's name of a goal status: "pending", "active", "preempted", "succeeded", "aborted", "rejected",

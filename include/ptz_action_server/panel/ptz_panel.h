@@ -23,9 +23,12 @@ class QListWidget;
 class QPushButton;
 class QSlider;
 class QTimer;
+class QVBoxLayout;
 
 namespace ptz_action_server::panel
 {
+class ImageView;
+
 /// The panel. Child widgets carry object names (jog_right, preset_go, state_pan, ...) for tests and style sheets.
 class PtzPanel : public rviz::Panel
 {
@@ -41,6 +44,8 @@ public:
   void setNamespace(const QString& ns);
   /// Copies the client's snapshot into the widgets (the timer's job; tests call it to not wait for the timer).
   void refresh();
+  /// Shows the image `topic` ("" for the camera's own, `<namespace>/image_raw`), as if picked in the list.
+  void setImageTopic(const QString& topic);
 
 private:
   void build();
@@ -50,12 +55,20 @@ private:
   void goToFields();
   void copyStateToFields();
   QString selectedPreset() const;
+  // The image view (ptz_panel_image.cpp).
+  void buildImage(QVBoxLayout* layout);
+  /// The image topic shown: the one picked, else the camera's own.
+  QString imageTopic() const;
+  /// Subscribes to the image while the view is on and visible, to nothing otherwise.
+  void updateImageSubscription();
+  void refreshImage(bool aims);
 
   std::unique_ptr<PanelClient> client_;
   QString ns_;
   std::optional<Jog> pressed_;  ///< the jog control held down
   std::uint64_t presets_serial_ = 0;
   PanelSnapshot last_;
+  QString image_choice_;  ///< the image topic picked, "" for the camera's own
 
   QComboBox* camera_ = nullptr;
   QLabel* banner_ = nullptr;
@@ -89,6 +102,9 @@ private:
   QPushButton* preset_refresh_ = nullptr;
   QCheckBox* look_ = nullptr;
   QLabel* message_ = nullptr;
+  QCheckBox* image_on_ = nullptr;
+  QComboBox* image_topic_ = nullptr;
+  ImageView* image_view_ = nullptr;
   QTimer* timer_ = nullptr;
 };
 
