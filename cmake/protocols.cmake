@@ -91,9 +91,11 @@ ptz_protocol(axis
     src/core/axis/vapix_codec.cpp src/core/axis/vapix_queue.cpp src/core/axis/vapix_zoom.cpp
   PLUGIN src/plugins/axis_backend_plugin.cpp
   EMULATOR src/emulators/axis_camera_emulator.cpp src/emulators/axis_camera_emulator_queue.cpp
+    src/emulators/axis_camera_emulator_picture.cpp
   PROGRAM axis_camera_emulator src/emulators/programs/axis_camera_emulator_main.cpp
   TESTS test/core/test_axis_protocol.cpp test/core/test_axis_zoom.cpp test/core/test_axis_emulator.cpp
-    test/core/test_axis_control_queue.cpp test/core/test_vapix_codec.cpp test/core/contract/axis_fixtures.cpp
+    test/core/test_axis_control_queue.cpp test/core/test_vapix_codec.cpp test/core/test_axis_view_aim.cpp
+    test/core/contract/axis_fixtures.cpp
   FUZZ vapix_reply src/core/axis/vapix_codec.cpp src/core/axis/vapix_queue.cpp src/core/axis/vapix_zoom.cpp
     src/core/types.cpp
   ROSTESTS test/ros/axis_node.test test/ros/axis_field_node.test

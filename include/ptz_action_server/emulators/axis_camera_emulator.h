@@ -45,6 +45,14 @@ struct AxisCameraEmulatorConfig
   double control_time = 60.0;     ///< TimeoutTime: s of control after the holder's last move or request
   double queue_period = 5.0;      ///< the period ptzqueue.cgi recommends, s
   double queue_poll_time = 20.0;  ///< CtlQueuePollTime, s
+  /// The driver takes `center=x,y` and `areazoom=x,y,z` (with `imagewidth`, `imageheight`) and info=1 lists them, as
+  /// the VAPIX documentation's and the field camera's do; false: a driver without them (`Error:` unknown argument).
+  bool area_zoom = true;
+  /// The lens at zoom 1 (full angles, rad), narrowing as an ideal zoom lens with the zoom's X: what `center` and
+  /// `areazoom` aim with.
+  FieldOfViewAngles field_of_view = HttpCameraEmulator::defaultFieldOfView();
+  int image_width = 1280;  ///< px of the picture `center` and `areazoom` count in without `imagewidth` (720p)
+  int image_height = 720;  ///< px, without `imageheight`
 
   static SimDeviceConfig defaultDevice();
   /// An 18X optical zoom listed per X as Axis cameras list their zoomSteps: VAPIX values step evenly per X.
@@ -61,8 +69,9 @@ struct AxisCameraEmulatorConfig
  * \brief A VAPIX PTZ camera on 127.0.0.1.
  *
  * `/axis-cgi/com/ptz.cgi` (GET query or POST form): `pan`, `tilt` (fractional degrees), `zoom` (1..9999), `speed`
- * (1..100), `rpan`, `rtilt`, `rzoom`, `continuouspantiltmove=P,T`, `continuouszoommove=Z`, `move=stop|home` answer
- * 204; `query=position|limits|speed|presetposcam|presetposall` answer `key=value` lines (a position carries pan,
+ * (1..100), `rpan`, `rtilt`, `rzoom`, `continuouspantiltmove=P,T`, `continuouszoommove=Z`, `move=stop|home`, and
+ * `center=X,Y`, `areazoom=X,Y,Z` (whole pixels of an `imagewidth` x `imageheight` picture, turned into angles with the
+ * lens at the current zoom; Z / 100 multiplies the zoom's X) answer 204; `query=position|limits|speed|presetposcam|presetposall` answer `key=value` lines (a position carries pan,
  * tilt, zoom, iris, focus, brightness, autofocus, autoiris), `query=attributes&group=zoom` the documented sections
  * (unless AxisCameraEmulatorConfig::attributes is off), `info=1` the commands it takes; anything else an `Error:`
  * body as the camera words it. `/axis-cgi/param.cgi?action=list&group=root.Brand` answers the brand parameters. Other
@@ -99,6 +108,8 @@ private:
   HttpAnswer command(const std::string& path, std::map<std::string, std::string>& values, const std::string& client,
                      TimePoint now);
   HttpAnswer query(const std::string& what, const std::string& group, TimePoint now);
+  /// `center` / `areazoom` in \p values, checked: "" and the move made, or the `Error:` words; mutex_ held.
+  std::string aimInPicture(std::map<std::string, std::string>& values, bool act, TimePoint now);
   HttpAnswer info() const;
   HttpAnswer parameters(const std::string& action, const std::string& group) const;
   // PTZ control queue (axis_camera_emulator_queue.cpp); mutex_ held.
@@ -111,6 +122,7 @@ private:
 
   const AxisCameraEmulatorConfig config_;
   vapix::ZoomTable zoom_table_;
+  FieldOfViewModel lens_;
   // Guarded by mutex_, with the model.
   std::string holder_;  ///< the client that holds PTZ control ("" none)
   TimePoint held_until_{};

@@ -29,6 +29,11 @@ void DeviceBackend::stop()
   session_->command([this] { protocol_->stop(); });
 }
 
+void DeviceBackend::aimInView(const ViewTarget& target)
+{
+  session_->command([this, target] { protocol_->aimInView(target); });
+}
+
 void DeviceBackend::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   values.emplace_back("protocol", protocol_->name());

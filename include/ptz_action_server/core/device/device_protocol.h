@@ -56,6 +56,11 @@ public:
   virtual void goTo(const AxisValues& position) = 0;
   virtual void moveAtVelocity(const AxisValues& velocity) = 0;
   virtual void stop() = 0;
+  /// A point of the device's own picture (PtzBackend::aimInView()), for protocols whose capabilities say they can.
+  virtual void aimInView(const ViewTarget& target)
+  {
+    (void)target;
+  }
   /// The device answers again after a loss: whatever it still does belongs to a goal that has ended. Keep it
   /// where it is (by default, stop()).
   virtual void hold()
