@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include <ros/ros.h>
@@ -323,24 +324,16 @@ void BenchProcesses::stop()
   node_ = -1;
 }
 
-void setNodeParameters(const DeviceRow& row, const EmulatedDevice* device, const std::string& urdf)
+void setNodeParameters(const DeviceRow& row, const DeviceHarness* device, const std::string& urdf)
 {
   ros::param::del(NODE_NAMESPACE);  // nothing left from the previous row
   ros::param::set(std::string(NODE_NAMESPACE) + "/robot_description", urdf);
   const std::string private_namespace = std::string(NODE_NAMESPACE) + "/" + NODE_NAME + "/";
   ros::param::set(private_namespace + "backend", row.plugin);
-  for (const BenchParam& param : row.params)
+  for (const HarnessParam& param : row.params)
   {
-    XmlRpc::XmlRpcValue value = param.value;
-    if (param.source == BenchParam::Source::EMULATOR_PORT)
-    {
-      value = static_cast<int>(device->port());
-    }
-    else if (param.source == BenchParam::Source::EMULATOR_LINK)
-    {
-      value = device->link();
-    }
-    ros::param::set(private_namespace + param.name, value);
+    std::visit([&](const auto& value) { ros::param::set(private_namespace + param.name, value); },
+               device != nullptr ? param.valueFor(*device) : param.value);
   }
 }
 

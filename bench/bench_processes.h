@@ -60,7 +60,7 @@ private:
 
 /// Sets what a launch file would: the URDF, ~backend and the row's parameters (the emulator's port or link from
 /// \p device, which may be null for a row without one), in NODE_NAMESPACE cleared first.
-void setNodeParameters(const DeviceRow& row, const EmulatedDevice* device, const std::string& urdf);
+void setNodeParameters(const DeviceRow& row, const DeviceHarness* device, const std::string& urdf);
 
 /// A file to remove if a fatal signal (SIGINT, SIGTERM, SIGHUP) ends the parent before its owner can: an
 /// emulator's pseudo-terminal link. One at a time.

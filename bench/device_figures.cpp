@@ -21,13 +21,13 @@ namespace
 {
 using namespace ptz_action_server;
 using PtzActionClient = actionlib::ActionClient<PtzAction>;
-using Arrivals = std::function<std::vector<Arrival>()>;
+using Arrivals = std::function<std::vector<ClassifiedCommand>()>;
 
 /// Waits up to \p timeout s for \p arrivals() to hold an item beyond the first \p before ones; that item, or none.
-bool waitForArrival(const Arrivals& arrivals, std::size_t before, double timeout, Arrival& arrival)
+bool waitForArrival(const Arrivals& arrivals, std::size_t before, double timeout, ClassifiedCommand& arrival)
 {
   const TimePoint deadline = addSeconds(SteadyClock::now(), timeout);
-  std::vector<Arrival> now = arrivals();
+  std::vector<ClassifiedCommand> now = arrivals();
   while (now.size() <= before && SteadyClock::now() < deadline)
   {
     std::this_thread::sleep_for(std::chrono::microseconds(100));
@@ -42,9 +42,9 @@ bool waitForArrival(const Arrivals& arrivals, std::size_t before, double timeout
 }
 
 /// Goal -> first goal command at the emulator (its wire time subtracted), over \p goals goals that preempt each other.
-Row goalFigure(PtzActionClient& client, const EmulatedDevice& device, const EmulatorSpec& emulator, int goals)
+Row goalFigure(PtzActionClient& client, const DeviceHarness& device, const DeviceRow& row, int goals)
 {
-  const Arrivals commands = [&device] { return device.goalCommands(); };
+  const Arrivals commands = [&device, &row] { return countedCommands(device, row, false); };
   std::vector<double> latency_ms;
   std::vector<double> wire_ms;
   std::vector<actionlib::ClientGoalHandle<PtzAction>> handles;
@@ -53,13 +53,13 @@ Row goalFigure(PtzActionClient& client, const EmulatedDevice& device, const Emul
     const std::size_t before = commands().size();
     const TimePoint sent = SteadyClock::now();
     handles.push_back(client.sendGoal(makePtzGoal(index % 2 == 0 ? 0.10 : 0.12, 0.0, 1.0)));
-    Arrival first;
+    ClassifiedCommand first;
     if (waitForArrival(commands, before, 1.0, first))
     {
       latency_ms.push_back((secondsBetween(sent, first.at) - first.wire) * 1e3);
       wire_ms.push_back(first.wire * 1e3);
     }
-    ros::WallDuration(emulator.goal_pause).sleep();  // the goal's remaining commands go out before the next goal
+    ros::WallDuration(row.figures.goal_pause).sleep();  // the goal's remaining commands go out before the next goal
     if (handles.size() > 100)
     {
       handles.erase(handles.begin(), handles.begin() + 50);
@@ -68,7 +68,7 @@ Row goalFigure(PtzActionClient& client, const EmulatedDevice& device, const Emul
   return { "goal -> first command at the emulator",
            formatText("%s (%zu of %d goals; wire time %.2f ms subtracted)", percentiles(latency_ms).c_str(),
                       latency_ms.size(), goals, percentile(wire_ms, 0.5)),
-           emulator.goal_target };
+           row.figures.goal_target };
 }
 
 /**
@@ -76,10 +76,10 @@ Row goalFigure(PtzActionClient& client, const EmulatedDevice& device, const Emul
  * to 90 ms after its first command reached the emulator and the client saw it accepted, so that the cancel meets
  * the goal's own commands and the polls on the line.
  */
-Row cancelFigure(PtzActionClient& client, const EmulatedDevice& device, const EmulatorSpec& emulator, int cancels)
+Row cancelFigure(PtzActionClient& client, const DeviceHarness& device, const DeviceRow& row, int cancels)
 {
-  const Arrivals commands = [&device] { return device.goalCommands(); };
-  const Arrivals stops = [&device] { return device.stopCommands(); };
+  const Arrivals commands = [&device, &row] { return countedCommands(device, row, false); };
+  const Arrivals stops = [&device, &row] { return countedCommands(device, row, true); };
   std::vector<double> latency_ms;
   std::vector<double> wire_ms;
   int not_ended = 0;
@@ -87,7 +87,7 @@ Row cancelFigure(PtzActionClient& client, const EmulatedDevice& device, const Em
   {
     const std::size_t before = commands().size();
     auto handle = client.sendGoal(makePtzGoal(index % 2 == 0 ? 0.6 : -0.6, 0.0, 1.0));
-    Arrival first;
+    ClassifiedCommand first;
     waitForArrival(commands, before, 1.0, first);
     // A cancel the client sends before it has seen the goal accepted may end the goal LOST (actionlib).
     const ros::WallTime accepted_deadline = ros::WallTime::now() + ros::WallDuration(1.0);
@@ -101,7 +101,7 @@ Row cancelFigure(PtzActionClient& client, const EmulatedDevice& device, const Em
     const std::size_t stops_before = stops().size();
     const TimePoint cancelled = SteadyClock::now();
     handle.cancel();
-    Arrival stop;
+    ClassifiedCommand stop;
     if (waitForArrival(stops, stops_before, 2.0, stop))
     {
       latency_ms.push_back((secondsBetween(cancelled, stop.at) - stop.wire) * 1e3);
@@ -120,7 +120,7 @@ Row cancelFigure(PtzActionClient& client, const EmulatedDevice& device, const Em
                       latency_ms.size(), cancels,
                       not_ended > 0 ? formatText(", %d goals not ended within 10 s", not_ended).c_str() : "",
                       percentile(wire_ms, 0.5)),
-           emulator.stop_target };
+           row.figures.stop_target };
 }
 
 /// The ptz_state rate while a goal runs from one side of pan to the other (about 2 s).
@@ -156,7 +156,7 @@ Row stateRateFigure(ros::NodeHandle& node_handle)
 }
 }  // namespace
 
-int runDeviceFigures(const DeviceRow& row, const EmulatedDevice& device, const BenchOptions& options,
+int runDeviceFigures(const DeviceRow& row, const DeviceHarness& device, const BenchOptions& options,
                      BenchProcesses& processes)
 {
   ros::NodeHandle node_handle(NODE_NAMESPACE);
@@ -169,15 +169,15 @@ int runDeviceFigures(const DeviceRow& row, const EmulatedDevice& device, const B
   }
   ros::WallDuration(1.0).sleep();  // the link is up and the setup is done
   std::vector<Row> rows;
-  rows.push_back(goalFigure(client, device, row.emulator, options.goals > 0 ? options.goals : row.goals));
-  rows.push_back(cancelFigure(client, device, row.emulator, options.cancels));
+  rows.push_back(goalFigure(client, device, row, options.goals > 0 ? options.goals : row.figures.goals));
+  rows.push_back(cancelFigure(client, device, row, options.cancels));
   rows.push_back(stateRateFigure(node_handle));
   if (device.connectionsOpened() >= 0)
   {
     rows.push_back({ "TCP connections the camera accepted (start-up, every goal and cancel)",
                      std::to_string(device.connectionsOpened()), "1" });
   }
-  printTable(row.name + " (" + row.plugin + " backend, " + row.emulator.summary + ")", rows);
+  printTable(row.name + " (" + row.plugin + " backend, " + row.figures.summary + ")", rows);
   return 0;
 }
 

@@ -62,7 +62,7 @@ Row teleopFigure(SharedCounters* counters);
  * own wire time subtracted), and the ptz_state rate while a goal runs. Prints a table; returns 0, or 1 if the node
  * did not come up.
  */
-int runDeviceFigures(const DeviceRow& row, const EmulatedDevice& device, const BenchOptions& options,
+int runDeviceFigures(const DeviceRow& row, const DeviceHarness& device, const BenchOptions& options,
                      BenchProcesses& processes);
 
 }  // namespace ptz_bench

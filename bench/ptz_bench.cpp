@@ -202,7 +202,7 @@ int main(int argc, char** argv)
   new (counters) SharedCounters();
   int status = 1;
   // The children fork before this process starts any thread.
-  BenchProcesses processes(counters, !row.emulator.start);
+  BenchProcesses processes(counters, !row.start);
   ros::init(ros::M_string(), "ptz_bench", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
   if (!ros::master::check())
   {
@@ -211,10 +211,10 @@ int main(int argc, char** argv)
   }
   try
   {
-    std::unique_ptr<EmulatedDevice> device;
-    if (row.emulator.start)
+    std::unique_ptr<DeviceHarness> device;
+    if (row.start)
     {
-      device = row.emulator.start(row.name);
+      device = startDevice(row);
     }
     setNodeParameters(row, device.get(), urdf.str());
     processes.release();

@@ -5,7 +5,7 @@
  * and the ptz_state rate; asserts nothing, but exits 1 if a goal never ended or the node died.
  *
  * The node is forked as ptz_bench forks it (BenchProcesses: the ptz_action_server executable's BackendLoader); the
- * emulator (the row's, in this process) takes its faults through EmulatedDevice::setFault(). A rosmaster must be
+ * emulator (the row's harness, in this process) takes its faults through DeviceHarness::setFault(). A rosmaster must be
  * running: bench/soak starts one in a network namespace of its own.
  */
 #include <dirent.h>
@@ -259,11 +259,10 @@ int main(int argc, char** argv)
   int status = 0;
   try
   {
-    std::unique_ptr<EmulatedDevice> device;
-    if (row.emulator.start)
+    std::unique_ptr<DeviceHarness> device;
+    if (row.start)
     {
-      device = row.emulator.start(row.name);
-      removeOnFatalSignal(device->link());
+      device = startDevice(row);
     }
     setNodeParameters(row, device.get(), urdf.str());
     ros::param::set(std::string(NODE_NAMESPACE) + "/" + NODE_NAME + "/presets_file", presets_file);

@@ -93,6 +93,8 @@ public:
   }
   // sample(), setFaults() and setRefuse() are HttpCameraEmulator's: under setRefuse() every move is answered with
   // `Error:` REFUSAL.
+  /// What the camera was asked, classified (axis_camera_classify.cpp); challenged requests left out.
+  std::vector<ClassifiedCommand> classify() const;
   /// control_queue: another client (a browser, a guard tour) holds PTZ control for \p seconds from now (-1: for good,
   /// as a client with TimeoutType infinity); 0 lets it go.
   void holdControlElsewhere(double seconds);

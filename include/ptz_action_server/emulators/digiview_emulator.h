@@ -101,6 +101,10 @@ public:
   {
     return received_;
   }
+  /// What DigiView received, classified (digiview_emulator_classify.cpp): GETs and subscriptions, and the SETs of
+  /// CAM_TARGETING that aim a view (with the yaw they aim at; DigiView has no stop: a hold aims the view where it is);
+  /// the rest (the optics, the system status, what did not unpack) is other.
+  std::vector<ClassifiedCommand> classify() const;
   std::size_t connections() const;
 
   /// The view's state: yaw, pitch (rad) and field of view (rad, in the zoom slot). Throws for an unknown view.

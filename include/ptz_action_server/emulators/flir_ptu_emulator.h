@@ -63,6 +63,11 @@ public:
   explicit FlirPtuEmulator(const FlirPtuEmulatorConfig& config);
   ~FlirPtuEmulator() override;
 
+  /// What the unit received, classified (flir_ptu_emulator_classify.cpp): halts, questions (PP, TP, PR, ...), the
+  /// mode, speed, offset and position commands that move it, set-up; each with its characters' and delimiter's wire
+  /// time.
+  std::vector<ClassifiedCommand> classify() const;
+
 private:
   /// One leg of the reset calibration: \p axis runs to \p target, then the unit says \p report.
   struct CalibrationStep

@@ -165,6 +165,10 @@ public:
   {
     return received_;
   }
+  /// What the manager received, classified (mavlink_gimbal_emulator_classify.cpp): SET_PITCHYAW with angles (with
+  /// the yaw they aim at) or with zero rates and no angle (the stop), DO_GIMBAL_MANAGER_CONFIGURE and rate setpoints
+  /// (other), and every other message a query (heartbeats, requests, intervals).
+  std::vector<ClassifiedCommand> classify() const;
 
 private:
   // No DROP fault: UDP has no connection.

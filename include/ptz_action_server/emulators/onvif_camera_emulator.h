@@ -149,6 +149,8 @@ public:
   }
   // sample(), setFaults() and setRefuse() are HttpCameraEmulator's: under setRefuse() every move is refused with a
   // fault carrying REFUSAL.
+  /// What the camera was asked, classified (onvif_camera_classify.cpp); challenged requests left out.
+  std::vector<ClassifiedCommand> classify() const;
   static constexpr const char* REFUSAL = "PTZ is locked by another user";
 
   /// Tokens the camera refused (a wrong password, a stale Created).

@@ -109,6 +109,10 @@ public:
   {
     return received_;
   }
+  /// What the device received, classified (pantilt_emulator_classify.cpp): state requests (params frames), STOP, the
+  /// parameters and commands that move it (angles, positions, speeds, go-to and move commands), the rest (RESTART,
+  /// frames that do not decode in its format).
+  std::vector<ClassifiedCommand> classify() const;
 
   /// udp: sends raw bytes from the device's own socket to \p to ("host:port"; tests: garbage from the device's
   /// address).

@@ -59,6 +59,9 @@ public:
   ~PelcoDEmulator() override;
 
   pelco::ParserCounters parserCounters() const;
+  /// What the device received, classified (pelco_d_emulator_classify.cpp): position queries, the stop frame, the set
+  /// position frames (pan, tilt, zoom) and the rest (drives, presets); each 7 bytes on the wire.
+  std::vector<ClassifiedCommand> classify() const;
 
 private:
   /// A partial frame is lost with the power.

@@ -88,6 +88,10 @@ public:
 
   ViscaEmulatorCounters counters() const;
   visca::SplitterCounters splitterCounters() const;
+  /// What the camera received, classified (visca_emulator_classify.cpp): inquiries, the pan-tilt drive's stop, the
+  /// pan-tilt and zoom commands that move it, and the rest (broadcasts, IF_Clear, cancels, the zoom's stop, VISCA over
+  /// IP control messages); each with its bytes' wire time.
+  std::vector<ClassifiedCommand> classify() const;
   /// As if another controller had used the camera up to \p sequence: the next lower number is a sequence error.
   void skipSequence(std::uint32_t sequence);
 

@@ -1,63 +1,57 @@
 #include "device_fixtures.h"
 
-#include <gtest/gtest.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cstdio>
-#include <sstream>
 
 #include "device_fixtures_internal.h"
 
 namespace ptz_action_server
 {
-std::string hex(const std::vector<std::uint8_t>& bytes)
+std::vector<ClassifiedCommand> withoutQueries(const std::vector<ClassifiedCommand>& commands)
 {
-  std::ostringstream text;
-  for (std::uint8_t byte : bytes)
-  {
-    char digits[4];
-    std::snprintf(digits, sizeof(digits), "%02X ", byte);
-    text << digits;
-  }
-  return text.str();
-}
-
-std::string uniqueLink(const char* name)
-{
-  static int counter = 0;
-  return ::testing::TempDir() + "ptz_" + name + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
-}
-
-std::vector<DeviceCommand> withoutQueries(const std::vector<DeviceCommand>& commands)
-{
-  std::vector<DeviceCommand> kept;
+  std::vector<ClassifiedCommand> kept;
   std::copy_if(commands.begin(), commands.end(), std::back_inserter(kept),
-               [](const DeviceCommand& command) { return command.kind != DeviceCommand::Kind::QUERY; });
+               [](const ClassifiedCommand& command) { return command.kind != ClassifiedCommand::Kind::QUERY; });
   return kept;
 }
 
-std::string describe(const std::vector<DeviceCommand>& commands)
+std::vector<std::string> texts(const std::vector<ClassifiedCommand>& commands)
+{
+  std::vector<std::string> result;
+  std::transform(commands.begin(), commands.end(), std::back_inserter(result),
+                 [](const ClassifiedCommand& command) { return command.text; });
+  return result;
+}
+
+std::string transportLossWords(const DeviceHarness& harness, const std::string& silence_words)
+{
+  if (!harness.link().empty())
+  {
+    return harness.link();
+  }
+  return harness.breaksAtOnce() ? "connection to 127.0.0.1" : silence_words;
+}
+
+std::string describe(const std::vector<ClassifiedCommand>& commands)
 {
   std::string text;
-  for (const DeviceCommand& command : commands)
+  for (const ClassifiedCommand& command : commands)
   {
     text += (text.empty() ? "" : " | ") + command.text;
   }
   return text.empty() ? "(none)" : text;
 }
 
-bool DeviceFixture::ignoreAxis(Axis axis, bool ignore)
+void DeviceFixture::ignoreAxis(Axis axis, bool ignore)
 {
   SimFaults faults;
   faults.stalled[axis] = ignore;
-  return setFaults(faults);
+  harness().setFaults(faults);
 }
 
-std::size_t DeviceFixture::holds(const std::vector<DeviceCommand>& commands, const AxisValues&) const
+std::size_t DeviceFixture::holds(const std::vector<ClassifiedCommand>& commands, const AxisValues&) const
 {
-  return static_cast<std::size_t>(std::count_if(commands.begin(), commands.end(), [](const DeviceCommand& command) {
-    return command.kind == DeviceCommand::Kind::STOP;
+  return static_cast<std::size_t>(std::count_if(commands.begin(), commands.end(), [](const ClassifiedCommand& command) {
+    return command.kind == ClassifiedCommand::Kind::STOP;
   }));
 }
 

@@ -4,124 +4,40 @@
 #include <cmath>
 
 #include "device_fixtures_internal.h"
-#include "ptz_action_server/core/digiview/digiview_protocol.h"
-#include "ptz_action_server/core/units.h"
-#include "ptz_action_server/emulators/digiview_emulator.h"
+#include "harness/digiview_harness.h"
 
 namespace ptz_action_server
 {
 namespace
 {
-using Kind = DeviceCommand::Kind;
+using Kind = ClassifiedCommand::Kind;
 
 // ---------------------------------------------------------------- DigiView: TCP and UDP, every format
 
-class DigiViewFixture : public DeviceFixture
+/// DigiView over \p transport in \p format, its angles in the format's documented unit (as the backend's).
+DigiViewEmulatorConfig digiView(LinkKind transport, digiview::Format format)
+{
+  DigiViewEmulatorConfig config;
+  config.transport = transport;
+  config.wire = digiview::Wire(format);
+  return config;
+}
+
+class DigiViewFixture : public HarnessFixture<DigiViewHarness>
 {
 public:
-  DigiViewFixture(LinkKind transport, digiview::Format format)
+  DigiViewFixture(LinkKind transport, digiview::Format format) : HarnessFixture(digiView(transport, format))
   {
-    emulator_config_.transport = transport;
-    emulator_config_.wire = digiview::Wire(format);  // the format's documented angle unit, as the backend's
-    emulator_ = std::make_unique<DigiViewEmulator>(emulator_config_);
-    emulator_config_.port = emulator_->port();
-    config_.link.kind = transport;
-    config_.link.port = emulator_->port();
-    config_.settings.wire = digiview::Wire(format);
-    config_.settings.acceleration = 4.0;  // as the emulator turns
-    config_.session.state_timeout = TEST_STATE_TIMEOUT;
+    harness_.config().session.state_timeout = TEST_STATE_TIMEOUT;
   }
 
-  std::unique_ptr<DeviceBackend> makeBackend() override
-  {
-    return makeDeviceBackend<DigiViewProtocol>(config_);
-  }
-  std::vector<DeviceCommand> commands() const override
-  {
-    using namespace digiview;
-    std::vector<DeviceCommand> commands;
-    for (const ReceivedMessage& item : emulator_->received().items())
-    {
-      const Message& message = item.message;
-      Kind kind = Kind::OTHER;
-      std::string text = std::string(toString(message.message_type)) + " " + toString(message.param_type);
-      if (message.message_type == MessageType::GET_PARAMETERS || message.message_type == MessageType::GET_INTERVAL)
-      {
-        kind = Kind::QUERY;
-      }
-      else if (message.message_type == MessageType::SET_PARAMETERS && message.param_type == ParamType::CAM_TARGETING)
-      {
-        kind = Kind::MOVE;
-        CamTargeting targeting;
-        if (unpackTargeting(message, targeting) == UnpackError::NONE)
-        {
-          text += " yaw " + std::to_string(targeting.yaw) + " pitch " + std::to_string(targeting.pitch);
-          commands.push_back(DeviceCommand{ item.at, kind, text, true, targeting.yaw });
-          continue;
-        }
-      }
-      commands.push_back(DeviceCommand{ item.at, kind, text });
-    }
-    return commands;
-  }
-  void clearCommands() override
-  {
-    emulator_->received().clear();
-  }
-  PtzSample deviceState() const override
-  {
-    PtzSample view = emulator_->view("main", 0);
-    view.position[ZOOM] = config_.settings.fov_wide / view.position[ZOOM];  // the model's zoom slot is the fov
-    return view;
-  }
-  void setSilent(bool silent) override
-  {
-    emulator_->setSilent(silent);
-  }
-  bool setFlood(unsigned copies) override
-  {
-    emulator_->setFlood(copies);
-    return true;
-  }
-  bool setEndlessReplies(bool endless) override
-  {
-    emulator_->setEndless(endless);
-    return true;
-  }
-  bool setFaults(const SimFaults& faults) override
-  {
-    emulator_->setFaults(faults);
-    return true;
-  }
-  void breakLink() override
-  {
-    if (config_.link.kind == LinkKind::TCP)
-    {
-      emulator_->dropConnections();
-    }
-    else
-    {
-      emulator_.reset();
-    }
-  }
-  void restoreLink() override
-  {
-    if (!emulator_)
-    {
-      emulator_ = std::make_unique<DigiViewEmulator>(emulator_config_);
-    }
-  }
-  bool breaksAtOnce() const override
-  {
-    return config_.link.kind == LinkKind::TCP;
-  }
   std::string linkLossWords() const override
   {
-    return config_.link.kind == LinkKind::TCP ? "connection to 127.0.0.1" : "no state from DigiView";
+    return transportLossWords(harness_, "no state from DigiView");
   }
   std::string prepareRefusal(AxisValues& goal) override
   {
-    emulator_->setRefuse(true);
+    harness_.emulator().setRefuse(true);
     goal = AxisValues{ { 0.3, 0.0, 1.0 } };
     return ": FORBIDDEN (the sender does not have permission to perform the requested action)";
   }
@@ -129,12 +45,12 @@ public:
   {
     return AxisValues{ { pan, tilt, 2.0 } };
   }
-  void expectGoalCommands(const std::vector<DeviceCommand>& commands, const AxisValues& target) const override
+  void expectGoalCommands(const std::vector<ClassifiedCommand>& commands, const AxisValues& target) const override
   {
     using namespace digiview;
     std::size_t targetings = 0;
     std::size_t optics_seen = 0;
-    for (const ReceivedMessage& item : emulator_->received().items())
+    for (const ReceivedMessage& item : harness_.emulator().received().items())
     {
       if (item.message.message_type != MessageType::SET_PARAMETERS)
       {
@@ -155,7 +71,7 @@ public:
       {
         CamOpticsAndControl optics;
         ASSERT_EQ(unpackOptics(item.message, optics), UnpackError::NONE);
-        EXPECT_NEAR(optics.fov, config_.settings.fov_wide / target[ZOOM], 1e-3);
+        EXPECT_NEAR(optics.fov, harness_.config().settings.fov_wide / target[ZOOM], 1e-3);
         ++optics_seen;
       }
     }
@@ -163,17 +79,13 @@ public:
     EXPECT_EQ(optics_seen, 1u) << describe(commands);
   }
   /// A hold aims the view where it is: a SET CAM_TARGETING elsewhere than the goal's.
-  std::size_t holds(const std::vector<DeviceCommand>& commands, const AxisValues& target) const override
+  std::size_t holds(const std::vector<ClassifiedCommand>& commands, const AxisValues& target) const override
   {
-    return static_cast<std::size_t>(std::count_if(commands.begin(), commands.end(), [&](const DeviceCommand& command) {
-      return command.kind == Kind::MOVE && command.aims && std::abs(command.pan - target[PAN]) > 1e-3;
-    }));
+    return static_cast<std::size_t>(
+        std::count_if(commands.begin(), commands.end(), [&](const ClassifiedCommand& command) {
+          return command.kind == Kind::MOVE && command.aims && std::abs(command.pan - target[PAN]) > 1e-3;
+        }));
   }
-
-private:
-  DigiViewEmulatorConfig emulator_config_;
-  std::unique_ptr<DigiViewEmulator> emulator_;
-  DeviceConfig<DigiViewProtocol> config_;
 };
 
 const DeviceFixtureRegistration DIGIVIEW_FIXTURES({

@@ -5,16 +5,14 @@
 #include <string>
 #include <vector>
 
-#include "http_camera_fixture.h"
-#include "ptz_action_server/core/onvif/onvif_protocol.h"
-#include "ptz_action_server/core/units.h"
-#include "ptz_action_server/emulators/onvif_camera_emulator.h"
+#include "device_fixtures_internal.h"
+#include "harness/onvif_harness.h"
 
 namespace ptz_action_server
 {
 namespace
 {
-using Kind = DeviceCommand::Kind;
+using Kind = ClassifiedCommand::Kind;
 
 // ---------------------------------------------------------------- ONVIF
 
@@ -46,109 +44,53 @@ void skipIfUnsupported(const Unsupported& unsupported)
   }
 }
 
-/// An ONVIF camera in one of the emulator's modes (standard, or a field camera's), behind a clock two hours behind
-/// and HTTP Digest as well as WS-Security.
-class OnvifFixture : public HttpCameraFixture
+/// An ONVIF camera in \p modes (standard, or a field camera's), its clock two hours behind (tokens must be stamped in
+/// its time), demanding HTTP Digest as well as WS-Security.
+OnvifCameraEmulatorConfig onvifCamera(const std::vector<std::string>& modes, bool tls)
+{
+  OnvifCameraEmulatorConfig camera;
+  camera.http.tls = tls;
+  for (const std::string& mode : modes)
+  {
+    EXPECT_TRUE(camera.applyMode(mode)) << mode;
+  }
+  camera.clock_offset = -7200.0;
+  camera.http.auth = HttpAuth::DIGEST;
+  camera.http.username = camera.username;
+  camera.http.password = camera.password;
+  return camera;
+}
+
+/// An ONVIF camera in one of the emulator's modes, and the contract cases it cannot run.
+class OnvifFixture : public HttpCameraFixture<OnvifHarness>
 {
 public:
   explicit OnvifFixture(const std::vector<std::string>& modes, Unsupported unsupported = {}, bool tls = false)
-    : unsupported_(std::move(unsupported))
+    : HttpCameraFixture(onvifCamera(modes, tls)), unsupported_(std::move(unsupported))
   {
-    OnvifCameraEmulatorConfig camera;
-    camera.http.tls = tls;
-    for (const std::string& mode : modes)
-    {
-      EXPECT_TRUE(camera.applyMode(mode)) << mode;
-    }
-    camera.clock_offset = -7200.0;        // the camera's clock is two hours behind: tokens must be stamped in its time
-    camera.http.auth = HttpAuth::DIGEST;  // and it demands HTTP Digest as well
-    camera.http.username = camera.username;
-    camera.http.password = camera.password;
-    emulator_ = std::make_unique<OnvifCameraEmulator>(camera);
-    config_.link.host = "127.0.0.1";
-    config_.link.port = emulator_->port();
-    config_.link.http.username = camera.username;
-    config_.link.http.password = camera.password;
-    config_.link.http.request_timeout = 2.0;
-    pinIfTls(emulator_->server(), config_.link);
-    config_.settings.username = camera.username;
-    config_.settings.password = camera.password;
-    config_.session.state_timeout = HTTP_TEST_STATE_TIMEOUT;
   }
 
   std::unique_ptr<DeviceBackend> makeBackend() override
   {
     skipIfUnsupported(unsupported_);
-    return makeDeviceBackend<OnvifProtocol>(config_);
-  }
-  std::vector<DeviceCommand> commands() const override
-  {
-    std::vector<DeviceCommand> commands;
-    for (const HttpExchange& exchange : emulator_->server().received().items())
-    {
-      if (exchange.status == 401)
-      {
-        continue;  // the HTTP Digest challenge of a request that follows
-      }
-      onvif::SoapMessage message;
-      if (!onvif::parseSoap(exchange.body, message).empty())
-      {
-        continue;
-      }
-      const std::string operation = onvif::localName(*message.content);
-      Kind kind = operation == "GetStatus" ? Kind::QUERY : operation == "Stop" ? Kind::STOP : Kind::OTHER;
-      bool aims = false;
-      double pan = 0.0;
-      if (operation == "AbsoluteMove")
-      {
-        kind = Kind::MOVE;
-        const onvif::Element* pan_tilt =
-            onvif::child(onvif::child(message.content, onvif::ns::PTZ, "Position"), onvif::ns::SCHEMA, "PanTilt");
-        const char* space = onvif::attribute(pan_tilt, "space");
-        aims = pan_tilt != nullptr;
-        pan = aims ? std::stod(onvif::attribute(pan_tilt, "x")) : 0.0;
-        pan = space != nullptr && std::string(space) == onvif::DEGREE_SPACE ? toRadians(pan) : pan * M_PI;
-      }
-      else if (operation == "ContinuousMove")
-      {
-        kind = Kind::MOVE;  // a velocity goal's command
-      }
-      commands.push_back(DeviceCommand{ exchange.at, kind, operation + " " + std::to_string(pan), aims, pan });
-    }
-    return commands;
-  }
-  PtzSample deviceState() const override
-  {
-    return emulator_->sample();
-  }
-  bool setFaults(const SimFaults& faults) override
-  {
-    emulator_->setFaults(faults);
-    return true;
+    return harness_.makeBackend();
   }
   std::string prepareRefusal(AxisValues& goal) override
   {
-    emulator_->setRefuse(true);
+    harness_.emulator().setRefuse(true);
     goal = AxisValues{ { 0.3, 0.0, 1.0 } };
     return std::string("the ONVIF camera refused AbsoluteMove: ter:InvalidArgVal: ") + OnvifCameraEmulator::REFUSAL;
   }
-  void expectGoalCommands(const std::vector<DeviceCommand>& commands, const AxisValues& target) const override
+  void expectGoalCommands(const std::vector<ClassifiedCommand>& commands, const AxisValues& target) const override
   {
-    const std::vector<DeviceCommand> sent = withoutQueries(commands);
+    const std::vector<ClassifiedCommand> sent = withoutQueries(commands);
     ASSERT_EQ(sent.size(), 1u) << describe(commands);
     EXPECT_EQ(sent[0].kind, Kind::MOVE);
     EXPECT_NEAR(sent[0].pan, target[PAN], 1e-5);
   }
 
 private:
-  HttpCameraServer& server() const override
-  {
-    return emulator_->server();
-  }
-
   Unsupported unsupported_;
-  std::unique_ptr<OnvifCameraEmulator> emulator_;
-  DeviceConfig<OnvifProtocol> config_;
 };
 
 /// The contract cases the continuous-only and the no-position cameras cannot run, and why.

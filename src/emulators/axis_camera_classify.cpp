@@ -1,0 +1,42 @@
+#include <optional>
+#include <string>
+
+#include "ptz_action_server/core/units.h"
+#include "ptz_action_server/emulators/axis_camera_emulator.h"
+
+namespace ptz_action_server
+{
+std::vector<ClassifiedCommand> AxisCameraEmulator::classify() const
+{
+  using Kind = ClassifiedCommand::Kind;
+  return server_->received().classified([](const HttpExchange& exchange) -> std::optional<ClassifiedCommand> {
+    if (exchange.status == 401)
+    {
+      return std::nullopt;  // challenged, not carried out: the same request follows with its credentials
+    }
+    const std::string& target = exchange.target;
+    ClassifiedCommand command{ exchange.at, Kind::OTHER, exchange.method + " " + target };
+    if (target.find("query=") != std::string::npos)
+    {
+      command.kind = Kind::QUERY;
+    }
+    else if (target.find("move=stop") != std::string::npos)
+    {
+      command.kind = Kind::STOP;
+    }
+    else if (target.find("&pan=") != std::string::npos)
+    {
+      command.kind = Kind::MOVE;
+      command.aims = true;
+      command.pan = toRadians(std::stod(target.substr(target.find("&pan=") + 5)));
+    }
+    else if (target.find("continuouspantiltmove=") != std::string::npos ||
+             target.find("continuouszoommove=") != std::string::npos)
+    {
+      command.kind = Kind::MOVE;  // a velocity goal's
+    }
+    return command;
+  });
+}
+
+}  // namespace ptz_action_server
