@@ -114,7 +114,7 @@ ptz_protocol(axis
 ptz_protocol(onvif
   CORE src/core/onvif/onvif_bring_up.cpp src/core/onvif/onvif_codec.cpp src/core/onvif/onvif_commands.cpp
     src/core/onvif/onvif_motion_check.cpp src/core/onvif/onvif_protocol.cpp src/core/onvif/onvif_ws_security.cpp
-    src/core/onvif/onvif_xml.cpp src/core/onvif/onvif_requests.cpp
+    src/core/onvif/onvif_xml.cpp src/core/onvif/onvif_requests.cpp src/core/onvif/onvif_view_aim.cpp
   PLUGIN src/plugins/onvif_backend_plugin.cpp
   EMULATOR src/emulators/onvif_camera_emulator.cpp src/emulators/onvif_camera_emulator_ptz.cpp
     src/emulators/onvif_camera_emulator_modes.cpp src/emulators/onvif_camera_emulator_moves.cpp
@@ -123,7 +123,8 @@ ptz_protocol(onvif
   HARNESS onvifHarnesses test/harness/onvif_harness.cpp
   TESTS test/core/test_onvif_cheap_cameras.cpp test/core/test_onvif_codec.cpp test/core/test_onvif_requests.cpp
     test/core/test_onvif_emulator.cpp test/core/test_onvif_emulator_modes.cpp test/core/test_onvif_motion_check.cpp
-    test/core/test_onvif_protocol.cpp test/core/test_onvif_field_modes.cpp test/core/contract/onvif_fixtures.cpp
+    test/core/test_onvif_protocol.cpp test/core/test_onvif_field_modes.cpp test/core/test_onvif_view_aim.cpp
+    test/core/contract/onvif_fixtures.cpp
   FUZZ soap_reply src/core/onvif/onvif_codec.cpp src/core/onvif/onvif_requests.cpp src/core/onvif/onvif_ws_security.cpp
     src/core/onvif/onvif_xml.cpp src/core/http/crypto.cpp src/core/types.cpp
   FUZZ_LIBS tinyxml2::tinyxml2 OpenSSL::Crypto

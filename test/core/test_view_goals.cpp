@@ -3,6 +3,7 @@
  * \brief Goals the device aims itself, in its own picture (GoalCommand::view): judged on what the device reports, ended
  * where it says it ended, never reached on an axis that did not move or that it does not report.
  */
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -14,6 +15,8 @@ using namespace goal_supervisor_test;
 namespace
 {
 constexpr double TICK = 0.1;  // s, the node's state period
+constexpr std::array<bool, AXIS_COUNT> PAN_AND_TILT{ { true, true, false } };
+constexpr std::array<bool, AXIS_COUNT> NOTHING{ { false, false, false } };
 
 PtzSample sampleAt(const AxisValues& position, bool moving)
 {
@@ -42,7 +45,7 @@ protected:
 
 TEST_F(ViewMonitorTest, SucceedsOnceTheDeviceHasMovedAndRestsSayingWhereAndWhatStayed)
 {
-  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), true);
+  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
   GoalVerdict verdict = at(monitor, start_, false);  // not begun yet
   EXPECT_EQ(verdict.phase, GoalPhase::ACTIVE);
   for (Axis axis : ALL_AXES)
@@ -50,7 +53,9 @@ TEST_F(ViewMonitorTest, SucceedsOnceTheDeviceHasMovedAndRestsSayingWhereAndWhatS
     EXPECT_TRUE(std::isnan(verdict.remaining[axis])) << "only the device knows where it goes";
   }
   EXPECT_EQ(at(monitor, { 0.25, 0.1, 2.0 }, true).phase, GoalPhase::ACTIVE);
-  EXPECT_EQ(at(monitor, { 0.31, 0.12, 2.0 }, true).phase, GoalPhase::ACTIVE);
+  EXPECT_EQ(at(monitor, { 0.30, 0.12, 2.0 }, true).phase, GoalPhase::ACTIVE);
+  // At rest by its word, but its pose still changes: not settled yet.
+  EXPECT_EQ(at(monitor, { 0.31, 0.12, 2.0 }, false).phase, GoalPhase::ACTIVE);
   verdict = at(monitor, { 0.31, 0.12, 2.0 }, false);
   EXPECT_EQ(verdict.phase, GoalPhase::SUCCEEDED);
   EXPECT_EQ(verdict.reason, "the device aimed itself: ended at pan 0.3100 rad, tilt 0.1200 rad, zoom 2.00 X; zoom did "
@@ -59,7 +64,7 @@ TEST_F(ViewMonitorTest, SucceedsOnceTheDeviceHasMovedAndRestsSayingWhereAndWhatS
 
 TEST_F(ViewMonitorTest, ADeviceThatMustMoveAndDoesNotAbortsAfterTheStallTimeout)
 {
-  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), true);
+  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
   GoalVerdict verdict;
   int ticks = 0;
   do
@@ -76,7 +81,7 @@ TEST_F(ViewMonitorTest, ADeviceThatMustMoveAndDoesNotAbortsAfterTheStallTimeout)
 
 TEST_F(ViewMonitorTest, APointAtTheCentreNeedsNoMove)
 {
-  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), false);
+  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), NOTHING);
   GoalVerdict verdict;
   for (int tick = 0; tick < 20 && verdict.phase == GoalPhase::ACTIVE; ++tick)
   {
@@ -89,7 +94,7 @@ TEST_F(ViewMonitorTest, APointAtTheCentreNeedsNoMove)
 TEST_F(ViewMonitorTest, WhatTheDeviceDoesNotReportIsNeverCalledReached)
 {
   capabilities_.axes[ZOOM].feedback = false;
-  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), true);
+  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
   at(monitor, { 0.3, 0.1, 1.0 }, true);
   const GoalVerdict verdict = at(monitor, { 0.3, 0.1, 1.0 }, false);
   EXPECT_EQ(verdict.phase, GoalPhase::SUCCEEDED);
@@ -100,7 +105,7 @@ TEST_F(ViewMonitorTest, WhatTheDeviceDoesNotReportIsNeverCalledReached)
   {
     capabilities_.axes[axis].feedback = false;
   }
-  GoalMonitor blind = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), true);
+  GoalMonitor blind = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
   GoalVerdict end;
   for (int tick = 0; tick < 20 && end.phase == GoalPhase::ACTIVE; ++tick)
   {
@@ -110,9 +115,23 @@ TEST_F(ViewMonitorTest, WhatTheDeviceDoesNotReportIsNeverCalledReached)
   EXPECT_EQ(end.reason, "sent to the device's own command; it reports no position, so where it ended is not known");
 }
 
+TEST_F(ViewMonitorTest, TheResultNamesOnlyAxesThatMovedOrWereNotAsked)
+{
+  capabilities_.axes[ZOOM].feedback = false;
+  const ViewEnding ending{ start_, PAN_AND_TILT };
+  const AxisValues end = ending.at(sampleAt({ 0.4, 0.1, 3.0 }, false), capabilities_);
+  EXPECT_DOUBLE_EQ(end[PAN], 0.4);
+  EXPECT_TRUE(std::isnan(end[TILT])) << "asked to move, did not: not reached";
+  EXPECT_TRUE(std::isnan(end[ZOOM])) << "not reported: not known";
+  capabilities_.axes[ZOOM].feedback = true;
+  const AxisValues centred = ViewEnding{ start_, NOTHING }.at(sampleAt(start_, false), capabilities_);
+  EXPECT_DOUBLE_EQ(centred[TILT], 0.1);  // not asked to move: where it stays
+  EXPECT_DOUBLE_EQ(centred[ZOOM], 2.0);
+}
+
 TEST_F(ViewMonitorTest, ADeviceStillMovingPastTheTimeoutOfItsWholeRangeAborts)
 {
-  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), true);
+  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
   // Long enough for any axis to cross its whole range, and finite.
   EXPECT_GT(monitor.timeout(), config_.timeout_margin + 2.0 * M_PI / capabilities_.axes[PAN].max_speed);
   EXPECT_LT(monitor.timeout(), 60.0);
@@ -129,7 +148,7 @@ TEST_F(ViewMonitorTest, ADeviceStillMovingPastTheTimeoutOfItsWholeRangeAborts)
 
 TEST_F(ViewMonitorTest, ALostLinkOrAFaultEndsItAsAnyGoal)
 {
-  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), true);
+  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
   PtzSample faulted = sampleAt(start_, false);
   faulted.fault_count = 1;
   clock_.advance(TICK);
@@ -200,6 +219,8 @@ TEST_F(ViewSupervisorTest, TheDeviceIsAskedAndTheGoalEndsWhereItSaysItEnded)
   ASSERT_FALSE(goal->feedback.empty());
   EXPECT_TRUE(std::isnan(goal->feedback.back()[PAN]));
   backend_->at({ 0.45, 0.1, 2.0 }, false);
+  tick();
+  EXPECT_EQ(goal->end, "") << "its pose changed since the last report: not settled";
   tick();
   EXPECT_EQ(goal->end, "SUCCEEDED: the device aimed itself: ended at pan 0.4500 rad, tilt 0.1000 rad; tilt did not "
                        "move; the device does not report its zoom (aimed by the device's own command)");

@@ -59,11 +59,29 @@ GoalMonitor GoalMonitor::forStop(const PtzSample& start, const GoalMonitorConfig
 }
 
 GoalMonitor GoalMonitor::forView(const PtzSample& start, const Capabilities& capabilities,
-                                 const GoalMonitorConfig& config, TimePoint now, bool must_move)
+                                 const GoalMonitorConfig& config, TimePoint now,
+                                 const std::array<bool, AXIS_COUNT>& asked)
 {
   GoalMonitor monitor(Kind::VIEW, AxisValues{}, start, capabilities, config, now);
-  monitor.must_move_ = must_move;
+  monitor.must_move_ = std::any_of(asked.begin(), asked.end(), [](bool axis_asked) { return axis_asked; });
+  monitor.view_last_ = start.position;
+  monitor.view_last_stamp_ = start.stamp;
   return monitor;
+}
+
+AxisValues ViewEnding::at(const PtzSample& sample, const Capabilities& capabilities) const
+{
+  AxisValues position = sample.position;
+  for (Axis axis : ALL_AXES)
+  {
+    const AxisCapability& capability = capabilities.axes[axis];
+    const bool moved = std::abs(sample.position[axis] - start[axis]) > VIEW_MOVED;
+    if (!capability.present || !capability.feedback || (asked[axis] && !moved))
+    {
+      position[axis] = std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  return position;
 }
 
 GoalMonitor GoalMonitor::forTrack(const AxisValues& aim, const PtzSample& start, const Capabilities& capabilities,
@@ -261,6 +279,8 @@ GoalVerdict GoalMonitor::updateStop(const PtzSample& sample, TimePoint now, Goal
 GoalVerdict GoalMonitor::updateView(const PtzSample& sample, TimePoint now, GoalVerdict verdict)
 {
   bool observable = false;
+  // Settled: at rest, and the same in a later report than the last (a report judged twice proves nothing).
+  bool settled = !sample.moving && (sample.stamp != view_last_stamp_ || sample.stamp == TimePoint{});
   for (Axis axis : ALL_AXES)
   {
     const AxisCapability& capability = capabilities_.axes[axis];
@@ -269,11 +289,14 @@ GoalVerdict GoalMonitor::updateView(const PtzSample& sample, TimePoint now, Goal
       observable = true;
       // Any change of a reported position is the device's own move: it reports in its own steps.
       view_moved_ = view_moved_ || std::abs(sample.position[axis] - start_position_[axis]) > VIEW_MOVED;
+      settled = settled && std::abs(sample.position[axis] - view_last_[axis]) <= VIEW_MOVED;
     }
   }
+  view_last_ = sample.position;
+  view_last_stamp_ = sample.stamp;
   view_moved_ = view_moved_ || sample.moving;
   const double elapsed = secondsBetween(started_at_, now);
-  if (view_moved_ && !sample.moving)
+  if (view_moved_ && settled)
   {
     verdict.phase = GoalPhase::SUCCEEDED;
     verdict.reason = "the device aimed itself: ended at " + describeViewEnd(sample);

@@ -86,6 +86,7 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
                                                          [](double value) { return value == 0.0; });
   if (command.view)
   {
+    view_ending_ = ViewEnding{ start.position, askedAxes(*command.view) };
     backend_->aimInView(*command.view);
   }
   else if (stop_goal)
@@ -109,7 +110,7 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   if (command.view)
   {
     monitor_ = std::make_unique<GoalMonitor>(
-        GoalMonitor::forView(start, judged_axes, config_, clock_->now(), mustMove(*command.view)));
+        GoalMonitor::forView(start, judged_axes, config_, clock_->now(), view_ending_->asked));
   }
   else if (command.track)
   {
@@ -128,7 +129,6 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   }
   active_goal_ = std::move(goal);
   note_ = note;
-  view_goal_ = command.view.has_value();
   mode_ = command.velocity ? GoalMode::VELOCITY : GoalMode::POSITION;
   // A goal the device already satisfies (zero length, or a stop while at rest) ends here, not a tick later.
   judge(backend_->sample(), true, clock_->now());
@@ -273,29 +273,19 @@ void GoalSupervisor::shutdown(const std::string& reason)
   }
 }
 
-bool GoalSupervisor::mustMove(const ViewTarget& view) const
+std::array<bool, AXIS_COUNT> GoalSupervisor::askedAxes(const ViewTarget& view) const
 {
   const bool zooms = view.box() && limits_.view_box_zoom && limits_.axes[ZOOM].present &&
                      std::abs(std::log(view.magnification())) > VIEW_ZOOMED;
-  return std::abs(view.x - 0.5) > VIEW_CENTRED || std::abs(view.y - 0.5) > VIEW_CENTRED || zooms;
+  return { { std::abs(view.x - 0.5) > VIEW_CENTRED, std::abs(view.y - 0.5) > VIEW_CENTRED, zooms } };
 }
 
 void GoalSupervisor::tellEnd(const PtzSample& sample)
 {
-  if (!view_goal_)
+  if (view_ending_)
   {
-    return;
+    active_goal_->ended(view_ending_->at(sample, limits_));
   }
-  AxisValues position = sample.position;
-  for (Axis axis : ALL_AXES)
-  {
-    const AxisCapability& capability = limits_.axes[axis];
-    if (!capability.present || !capability.feedback)
-    {
-      position[axis] = std::numeric_limits<double>::quiet_NaN();
-    }
-  }
-  active_goal_->ended(position);
 }
 
 std::string GoalSupervisor::withNote(const std::string& text) const
@@ -309,7 +299,7 @@ void GoalSupervisor::finish()
   note_.clear();
   monitor_.reset();
   stopping_ = false;
-  view_goal_ = false;
+  view_ending_.reset();
   mode_ = GoalMode::IDLE;
 }
 

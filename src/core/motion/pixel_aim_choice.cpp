@@ -31,7 +31,7 @@ std::string whyNotComputed(const PixelGoal& goal, const AxisValues& image_pose, 
     return no_intrinsics;
   }
   const bool box = goal.box_width != 0.0 || goal.box_height != 0.0;
-  if (box && zoom.present && limits.view_box_zoom)
+  if (box && zoom.present)
   {
     const std::string unsupported = findUnsupported(limits, ZOOM, AxisRequest::POSITION);
     if (!unsupported.empty())
@@ -101,6 +101,17 @@ bool parsePixelAimWay(const std::string& text, PixelAimWay& way)
   return false;
 }
 
+std::string describePixelAim(PixelAimWay way, const Capabilities& limits)
+{
+  const std::string device = "device (" + (limits.view_command.empty() ? "its own command" : limits.view_command) + ")";
+  if (way == PixelAimWay::COMPUTED || !limits.view_centre)
+  {
+    return way == PixelAimWay::DEVICE ? "device, which this device has not: pixel goals are refused" : "computed";
+  }
+  return way == PixelAimWay::DEVICE ? device :
+                                      "auto: " + device + " on the picture the camera still shows, computed otherwise";
+}
+
 PixelAimChoice choosePixelAim(PixelAimWay way, const PixelGoal& goal, const PoseLookup& image_pose,
                               const PtzSample& current, const PixelCamera& camera, const Capabilities& limits)
 {
@@ -121,18 +132,10 @@ PixelAimChoice choosePixelAim(PixelAimWay way, const PixelGoal& goal, const Pose
   int width = 0;
   int height = 0;
   pixelGoalImageSize(goal, camera, width, height);
-  std::string why;
-  if (way == PixelAimWay::AUTO)
+  const bool auto_way = way == PixelAimWay::AUTO;
+  if (auto_way && (!image_pose.found() || width <= 0 || height <= 0))
   {
-    if (!image_pose.found() || width <= 0 || height <= 0)
-    {
-      return choice;  // the device could not do better: the computed way says why not
-    }
-    why = whyNotComputed(goal, image_pose.pose, camera, limits, width, height);
-    if (why.empty())
-    {
-      return choice;
-    }
+    return choice;  // the device has no better picture to point in: the computed way says why not
   }
   choice.error = findBadPixelGoal(goal, width, height);
   if (!choice.error.empty())
@@ -144,12 +147,26 @@ PixelAimChoice choosePixelAim(PixelAimWay way, const PixelGoal& goal, const Pose
     choice.error = image_pose.error;
     return choice;
   }
+  const bool box = goal.box_width != 0.0 || goal.box_height != 0.0;
+  const bool device_zooms = limits.view_box_zoom && limits.axes[ZOOM].present;
+  const std::string why_not_computed =
+      auto_way ? whyNotComputed(goal, image_pose.pose, camera, limits, width, height) : std::string();
   const std::string moved = findMovedSince(image_pose.pose, current, limits);
   if (!moved.empty())
   {
+    if (auto_way && why_not_computed.empty())
+    {
+      choice.error.clear();
+      return choice;  // the pose history aims right from a picture the camera has left
+    }
     choice.error = moved + ": the device's own command aims in the picture it shows now, not in the image's" +
-                   (why.empty() ? std::string() : ", and the node cannot aim from the image's pose: " + why);
+                   (why_not_computed.empty() ? std::string() :
+                                               ", and the node cannot aim from the image's pose: " + why_not_computed);
     return choice;
+  }
+  if (auto_way && box && !device_zooms && why_not_computed.empty())
+  {
+    return choice;  // the device would only centre the box: the node also zooms to it
   }
   choice.device = true;
   ViewTarget& target = choice.target;
@@ -160,10 +177,10 @@ PixelAimChoice choosePixelAim(PixelAimWay way, const PixelGoal& goal, const Pose
   target.image_height = height;
   choice.note = "aimed by the device's own command" +
                 (limits.view_command.empty() ? std::string() : " (" + limits.view_command + ")") +
-                (why.empty() ? std::string(": pixel_aim is device") : ": " + why);
-  if (goal.box_width != 0.0 || goal.box_height != 0.0)
+                (!auto_way ? std::string(": pixel_aim is device") : ": the camera still shows the image's picture");
+  if (box)
   {
-    if (limits.view_box_zoom && limits.axes[ZOOM].present)
+    if (device_zooms)
     {
       target.box_width = goal.box_width / width;
       target.box_height = goal.box_height / height;

@@ -7,6 +7,7 @@
  */
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "ptz_action_server/core/types.h"
@@ -56,17 +57,28 @@ public:
   /// it); a lost link or a device fault aborts it. remaining is aim minus position; retarget() moves the aim.
   static GoalMonitor forTrack(const AxisValues& aim, const PtzSample& start, const Capabilities& capabilities,
                               const GoalMonitorConfig& config, TimePoint now);
-  /**
+  /// Where a goal the device aimed itself (GoalCommand::view) ended, for its result (GoalHandle::ended()).
+struct ViewEnding
+{
+  AxisValues start{};                    ///< the device's position when the goal started
+  std::array<bool, AXIS_COUNT> asked{};  ///< the axes the goal asked the device to move
+
+  /// \p sample's position of each axis \p capabilities has reporting that moved or was not asked to; NaN for the
+  /// others: never reached on an axis that did not move or that the device does not report.
+  AxisValues at(const PtzSample& sample, const Capabilities& capabilities) const;
+};
+
+/**
    * \brief A goal the device aims itself, in its own picture (GoalCommand::view): its target is the device's to know.
    *
-   * It succeeds once the device has moved and rests again, and says where it ended, which axes did not move, and
-   * which it does not report. Before the device has moved, a goal that \p must_move (a point away from the picture's
-   * centre, a box that zooms) aborts when it still rests stall_timeout after the start; one that need not move
-   * succeeds then. A device that reports no axis at all succeeds then too, saying so. The timeout allows every axis
-   * to cross its whole range; remaining is NaN (unknown).
+   * It succeeds once the device has moved and its reported pose has settled (at rest, and the same in two reports in a
+   * row), and says where it ended, which axes did not move, and which it does not report. Before the device has moved,
+   * a goal that \p asked some axis to move (a point away from the picture's centre, a box that zooms) aborts when it
+   * still rests stall_timeout after the start; one that asked none succeeds then. A device that reports no axis at all
+   * succeeds then too, saying so. The timeout allows every axis to cross its whole range; remaining is NaN (unknown).
    */
   static GoalMonitor forView(const PtzSample& start, const Capabilities& capabilities, const GoalMonitorConfig& config,
-                             TimePoint now, bool must_move);
+                             TimePoint now, const std::array<bool, AXIS_COUNT>& asked);
   /// A cancelled goal whose device is being stopped: it ends once the device rests (or stop_timeout passes). Its
   /// final text names the position of the axes \p reported has present and reporting.
   static GoalMonitor forStop(const PtzSample& start, const GoalMonitorConfig& config, TimePoint now,
@@ -123,6 +135,8 @@ private:
   AxisValues start_position_{};  ///< where the device was at the start
   bool must_move_ = false;       ///< a view goal that needs the device to move
   bool view_moved_ = false;      ///< a view goal's device was seen to move
+  AxisValues view_last_{};       ///< a view goal's previous reported position
+  TimePoint view_last_stamp_{};  ///< ... and its stamp
   AxisValues last_moved_position_{};                      ///< position where each axis was last seen moving
   std::array<TimePoint, AXIS_COUNT> last_moved_at_{};     ///< on the monitor's clock
   std::array<TimePoint, AXIS_COUNT> last_moved_stamp_{};  ///< the device's report (PtzSample::stamp) of that moment

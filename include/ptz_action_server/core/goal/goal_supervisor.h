@@ -170,8 +170,8 @@ private:
   std::string withNote(const std::string& text) const;
   /// supervise() for a sample known to belong to the active goal, judged as at \p taken_at.
   void judge(const PtzSample& sample, bool publish_feedback, TimePoint taken_at);
-  /// True when \p view asks the device to move: a point away from the picture's centre, or a box that zooms.
-  bool mustMove(const ViewTarget& view) const;
+  /// The axes \p view asks the device to move: pan, tilt for a point away from the picture's centre, zoom for a box.
+  std::array<bool, AXIS_COUNT> askedAxes(const ViewTarget& view) const;
   /// For a view goal, tells it where the device ended in \p sample (GoalHandle::ended()); nothing for other goals.
   void tellEnd(const PtzSample& sample);
   void finish();
@@ -187,7 +187,7 @@ private:
   std::string note_;  ///< what validation changed in the active goal (clamping, a zoom ignored), empty if nothing
   std::unique_ptr<GoalMonitor> monitor_;
   bool stopping_ = false;  ///< the active goal was cancelled and waits for the device to rest
-  bool view_goal_ = false;  ///< the active goal is the device's own aim in its picture (GoalCommand::view)
+  std::optional<ViewEnding> view_ending_;  ///< the active goal is the device's own aim in its picture (GoalCommand::view)
 
   std::atomic<GoalMode> mode_{ GoalMode::IDLE };
   /// Changes with each goal, and when a cancel starts the stop, after the sample its monitor starts from.

@@ -6,10 +6,10 @@
  *
  * The computed way needs the picture's field of view at the image's zoom (a field of view, or a calibrated camera_info
  * at that zoom) and the pose at the image's time; it then aims right from any image in the history, also one taken
- * while the camera moved. The device's command needs neither (the camera knows its lens, and its zoom even when it does
- * not report it), but it works on the picture the camera shows now: a click on an image the camera has moved away from
- * since would be off. So by default (PixelAimWay::AUTO) the node computes whenever it can, and leaves it to a device
- * that can only when it cannot.
+ * while the camera moved. The device's command needs neither (the camera knows its own lens, and its zoom even when it
+ * does not report it), but it works on the picture the camera shows now. So by default (PixelAimWay::AUTO) the device
+ * aims when it has a command for it and the image is its own current picture (the camera rests where it was when the
+ * image was taken), and the node computes otherwise.
  */
 #pragma once
 
@@ -24,7 +24,7 @@ namespace ptz_action_server
 /// Which way pixel goals go (the node's ~pixel_aim).
 enum class PixelAimWay
 {
-  AUTO,      ///< computed when the node can, else the device's own command where it has one
+  AUTO,      ///< the device's own command on the picture it still shows, computed otherwise
   COMPUTED,  ///< always computed (refused when the node cannot)
   DEVICE,    ///< always the device's own command (refused on a device without one)
 };
@@ -33,6 +33,10 @@ enum class PixelAimWay
 const char* pixelAimWayName(PixelAimWay way);
 /// Reads "auto", "computed" or "device"; false for anything else.
 bool parsePixelAimWay(const std::string& text, PixelAimWay& way);
+
+/// How pixel goals are aimed on a device with \p limits under \p way, for the capabilities message: "computed",
+/// "device (VAPIX center, areazoom)", "auto: device (...) on the picture the camera still shows, computed otherwise".
+std::string describePixelAim(PixelAimWay way, const Capabilities& limits);
 
 /// How a pixel goal is aimed.
 struct PixelAimChoice
@@ -46,17 +50,17 @@ struct PixelAimChoice
 /**
  * \brief Decides who aims at \p goal's pixel, as \p way says.
  *
- * The node can compute when the image's pose was found (\p image_pose), its size is known and its intrinsics are at
- * the image's zoom (intrinsicsAtZoom(): a field of view, or a calibration at that zoom; a zoom the device does not
- * report is unknown), and, for a box, a field of view gives the box's zoom on a zoom that goes to positions. Under
- * AUTO the device aims when the node cannot and \p limits say it can (Capabilities::view_centre); the computed way
- * otherwise (which then refuses with its reason).
+ * AUTO: the device (its own command, Capabilities::view_centre) when the image's pose was found and the camera still
+ * shows that picture (at rest in \p current, its reported pan, tilt and zoom those of \p image_pose); a box the device
+ * would only centre (no Capabilities::view_box_zoom) goes the computed way when the node can zoom to it. Otherwise the
+ * computed way (aimAtPixel, which refuses with its reason), unless the node cannot compute (no intrinsics at the
+ * image's zoom, a zoom the device does not report): then the goal is refused, naming both reasons.
  *
- * The device's command is refused (error) when the goal is bad (findBadPixelGoal()), the image's pose is not found, or
- * the camera no longer shows that picture: it moves now (\p current), or it has moved since the image was taken (its
- * reported pan, tilt or zoom differ from the image's). A box on a device that cannot zoom to one is only centred
- * (noted). The image is the device's own picture, as it sends it: the device knows how it is turned, so
- * PixelCamera::image_upside_down does not apply.
+ * DEVICE: always the device's command; refused on a device without one, for a bad goal (findBadPixelGoal()), when the
+ * image's pose is not found, or when the camera no longer shows that picture. COMPUTED: never the device.
+ *
+ * A box on a device that cannot zoom to one is only centred (noted). The image is the device's own picture, as it
+ * sends it: the device knows how it is turned, so PixelCamera::image_upside_down does not apply.
  */
 PixelAimChoice choosePixelAim(PixelAimWay way, const PixelGoal& goal, const PoseLookup& image_pose,
                               const PtzSample& current, const PixelCamera& camera, const Capabilities& limits);

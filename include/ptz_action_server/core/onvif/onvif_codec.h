@@ -199,6 +199,9 @@ std::string readProfiles(const Element* response, const std::string& wanted, Pro
 std::string readNode(const Element* response, const std::string& token, Node& node);
 /// The PTZTimeout range of GetConfigurationOptions (s); leaves \p min_s, \p max_s if absent.
 std::string readTimeoutRange(const Element* response, double& min_s, double& max_s);
+/// The translation spaces GetConfigurationOptions' Spaces list (where the TranslationSpaceFov is advertised), into
+/// \p spaces' relative_pan_tilt and relative_zoom; the rest of \p spaces is left as it is.
+std::string readOptionSpaces(const Element* response, Node& spaces);
 std::string readStatus(const Element* response, Status& status);
 std::string readPresets(const Element* response, std::vector<Preset>& presets);
 /// The PresetToken of a SetPresetResponse.
