@@ -108,7 +108,7 @@ ptz_protocol(axis
     test/core/contract/axis_fixtures.cpp
   FUZZ vapix_reply src/core/axis/vapix_codec.cpp src/core/axis/vapix_queue.cpp src/core/axis/vapix_zoom.cpp
     src/core/types.cpp
-  ROSTESTS test/ros/axis_node.test test/ros/axis_field_node.test
+  ROSTESTS test/ros/axis_node.test test/ros/axis_field_node.test test/ros/axis_pixel_aim.test
 )
 
 ptz_protocol(onvif

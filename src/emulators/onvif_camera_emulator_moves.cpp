@@ -1,9 +1,9 @@
 /**
  * \file
  * \brief OnvifCameraEmulator's moves: GetStatus, Stop, ContinuousMove (its Timeout), AbsoluteMove and RelativeMove
- * (also in the picture's TranslationSpaceFov), home, and how the camera moves as its modes say (the backlash approach, a speed that ignores the magnitude, a Stop
- * that does not stop, an AbsoluteMove that never moves). Its PTZ service's listings and presets are
- * onvif_camera_emulator_ptz.cpp's.
+ * (also in the picture's TranslationSpaceFov), home, and how the camera moves as its modes say (the backlash approach,
+ * a speed that ignores the magnitude, a Stop that does not stop, an AbsoluteMove that never moves). Its PTZ service's
+ * listings and presets are onvif_camera_emulator_ptz.cpp's.
  */
 #include <algorithm>
 #include <array>

@@ -36,11 +36,61 @@ TEST(OnvifViewAim, RelativeMoveInTheFieldOfViewSpaces)
   translation.zoom = true;
   translation.z = 2.0;
   translation.zoom_space = onvif::FOV_ZOOM_TRANSLATION;
-  EXPECT_EQ(onvif::relativeMove("profile_1", translation),
-            "<tptz:RelativeMove><tptz:ProfileToken>profile_1</tptz:ProfileToken><tptz:Translation><tt:PanTilt "
-            "x=\"0.500000\" y=\"-0.250000\" space=\"http://www.onvif.org/ver10/tptz/PanTiltSpaces/TranslationSpaceFov\"/>"
-            "<tt:Zoom x=\"2.000000\" space=\"http://www.onvif.org/ver10/tptz/ZoomSpaces/TranslationSpaceFov\"/>"
-            "</tptz:Translation></tptz:RelativeMove>");
+  EXPECT_EQ(onvif::relativeMove("profile_1", translation), "<tptz:RelativeMove><tptz:ProfileToken>profile_1</"
+                                                           "tptz:ProfileToken><tptz:Translation><tt:PanTilt "
+                                                           "x=\"0.500000\" y=\"-0.250000\" "
+                                                           "space=\"http://www.onvif.org/ver10/tptz/PanTiltSpaces/"
+                                                           "TranslationSpaceFov\"/>"
+                                                           "<tt:Zoom x=\"2.000000\" "
+                                                           "space=\"http://www.onvif.org/ver10/tptz/ZoomSpaces/"
+                                                           "TranslationSpaceFov\"/>"
+                                                           "</tptz:Translation></tptz:RelativeMove>");
+}
+
+/// A GetConfigurationOptionsResponse listing \p spaces, in the PTZ specification's prefixes.
+std::string optionsReply(const std::string& spaces)
+{
+  return "<env:Envelope xmlns:env=\"http://www.w3.org/2003/05/soap-envelope\" "
+         "xmlns:tptz=\"http://www.onvif.org/ver20/ptz/wsdl\" xmlns:tt=\"http://www.onvif.org/ver10/schema\"><env:Body>"
+         "<tptz:GetConfigurationOptionsResponse><tptz:PTZConfigurationOptions><tt:Spaces>" +
+         spaces +
+         "</tt:Spaces><tt:PTZTimeout><tt:Min>PT1S</tt:Min><tt:Max>PT60S</tt:Max></tt:PTZTimeout>"
+         "</tptz:PTZConfigurationOptions></tptz:GetConfigurationOptionsResponse></env:Body></env:Envelope>";
+}
+
+TEST(OnvifViewAim, TheConfigurationOptionsListTheFieldOfViewSpaces)
+{
+  onvif::SoapMessage message;
+  ASSERT_EQ(onvif::parseSoap(optionsReply("<tt:RelativePanTiltTranslationSpace><tt:URI>http://www.onvif.org/ver10/tptz/"
+                                          "PanTiltSpaces/"
+                                          "TranslationSpaceFov</tt:URI><tt:XRange><tt:Min>-1</tt:Min><tt:Max>1</"
+                                          "tt:Max></tt:XRange>"
+                                          "<tt:YRange><tt:Min>-1</tt:Min><tt:Max>1</tt:Max></tt:YRange>"
+                                          "</"
+                                          "tt:RelativePanTiltTranslationSpace><tt:RelativeZoomTranslationSpace><tt:URI>"
+                                          "http://www.onvif.org/ver10/tptz/ZoomSpaces/TranslationGenericSpace</"
+                                          "tt:URI><tt:XRange>"
+                                          "<tt:Min>-1</tt:Min><tt:Max>1</tt:Max></tt:XRange></"
+                                          "tt:RelativeZoomTranslationSpace>"),
+                             message),
+            "");
+  onvif::Node spaces;
+  spaces.token = "kept";
+  ASSERT_EQ(onvif::readOptionSpaces(message.content, spaces), "");
+  const onvif::Space* fov = onvif::findSpace(spaces.relative_pan_tilt, onvif::FOV_PAN_TILT_TRANSLATION);
+  ASSERT_NE(fov, nullptr);
+  EXPECT_EQ(fov->x.min, -1.0);
+  EXPECT_EQ(fov->y.max, 1.0);
+  EXPECT_NE(onvif::findSpace(spaces.relative_zoom, onvif::GENERIC_ZOOM_TRANSLATION), nullptr);
+  EXPECT_EQ(spaces.token, "kept");
+
+  ASSERT_EQ(onvif::parseSoap(optionsReply("<tt:RelativePanTiltTranslationSpace><tt:URI>http://www.onvif.org/ver10/tptz/"
+                                          "PanTiltSpaces/TranslationSpaceFov</tt:URI><tt:XRange><tt:Min>left</tt:Min>"
+                                          "<tt:Max>1</tt:Max></tt:XRange></tt:RelativePanTiltTranslationSpace>"),
+                             message),
+            "");
+  EXPECT_NE(onvif::readOptionSpaces(message.content, spaces).find("RelativePanTiltTranslationSpace"),
+            std::string::npos);
 }
 
 /// A camera at rest at pan 0, tilt 0 and \p zoom X, its backend started.

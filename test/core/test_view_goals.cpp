@@ -45,7 +45,8 @@ protected:
 
 TEST_F(ViewMonitorTest, SucceedsOnceTheDeviceHasMovedAndRestsSayingWhereAndWhatStayed)
 {
-  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
+  GoalMonitor monitor =
+      GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
   GoalVerdict verdict = at(monitor, start_, false);  // not begun yet
   EXPECT_EQ(verdict.phase, GoalPhase::ACTIVE);
   for (Axis axis : ALL_AXES)
@@ -64,7 +65,8 @@ TEST_F(ViewMonitorTest, SucceedsOnceTheDeviceHasMovedAndRestsSayingWhereAndWhatS
 
 TEST_F(ViewMonitorTest, ADeviceThatMustMoveAndDoesNotAbortsAfterTheStallTimeout)
 {
-  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
+  GoalMonitor monitor =
+      GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
   GoalVerdict verdict;
   int ticks = 0;
   do
@@ -88,13 +90,15 @@ TEST_F(ViewMonitorTest, APointAtTheCentreNeedsNoMove)
     verdict = at(monitor, start_, false);
   }
   EXPECT_EQ(verdict.phase, GoalPhase::SUCCEEDED);
-  EXPECT_EQ(verdict.reason, "already centred: the device did not move, at pan 0.2000 rad, tilt 0.1000 rad, zoom 2.00 X");
+  EXPECT_EQ(verdict.reason, "already centred: the device did not move, at pan 0.2000 rad, tilt 0.1000 rad, zoom 2.00 "
+                            "X");
 }
 
 TEST_F(ViewMonitorTest, WhatTheDeviceDoesNotReportIsNeverCalledReached)
 {
   capabilities_.axes[ZOOM].feedback = false;
-  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
+  GoalMonitor monitor =
+      GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
   at(monitor, { 0.3, 0.1, 1.0 }, true);
   const GoalVerdict verdict = at(monitor, { 0.3, 0.1, 1.0 }, false);
   EXPECT_EQ(verdict.phase, GoalPhase::SUCCEEDED);
@@ -131,7 +135,8 @@ TEST_F(ViewMonitorTest, TheResultNamesOnlyAxesThatMovedOrWereNotAsked)
 
 TEST_F(ViewMonitorTest, ADeviceStillMovingPastTheTimeoutOfItsWholeRangeAborts)
 {
-  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
+  GoalMonitor monitor =
+      GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
   // Long enough for any axis to cross its whole range, and finite.
   EXPECT_GT(monitor.timeout(), config_.timeout_margin + 2.0 * M_PI / capabilities_.axes[PAN].max_speed);
   EXPECT_LT(monitor.timeout(), 60.0);
@@ -148,7 +153,8 @@ TEST_F(ViewMonitorTest, ADeviceStillMovingPastTheTimeoutOfItsWholeRangeAborts)
 
 TEST_F(ViewMonitorTest, ALostLinkOrAFaultEndsItAsAnyGoal)
 {
-  GoalMonitor monitor = GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
+  GoalMonitor monitor =
+      GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
   PtzSample faulted = sampleAt(start_, false);
   faulted.fault_count = 1;
   clock_.advance(TICK);

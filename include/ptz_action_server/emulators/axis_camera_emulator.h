@@ -71,11 +71,12 @@ struct AxisCameraEmulatorConfig
  * `/axis-cgi/com/ptz.cgi` (GET query or POST form): `pan`, `tilt` (fractional degrees), `zoom` (1..9999), `speed`
  * (1..100), `rpan`, `rtilt`, `rzoom`, `continuouspantiltmove=P,T`, `continuouszoommove=Z`, `move=stop|home`, and
  * `center=X,Y`, `areazoom=X,Y,Z` (whole pixels of an `imagewidth` x `imageheight` picture, turned into angles with the
- * lens at the current zoom; Z / 100 multiplies the zoom's X) answer 204; `query=position|limits|speed|presetposcam|presetposall` answer `key=value` lines (a position carries pan,
- * tilt, zoom, iris, focus, brightness, autofocus, autoiris), `query=attributes&group=zoom` the documented sections
- * (unless AxisCameraEmulatorConfig::attributes is off), `info=1` the commands it takes; anything else an `Error:`
- * body as the camera words it. `/axis-cgi/param.cgi?action=list&group=root.Brand` answers the brand parameters. Other
- * paths: 404. Thread-safe.
+ * lens at the current zoom; Z / 100 multiplies the zoom's X) answer 204;
+ * `query=position|limits|speed|presetposcam|presetposall` answer `key=value` lines (a position carries pan, tilt, zoom,
+ * iris, focus, brightness, autofocus, autoiris), `query=attributes&group=zoom` the documented sections (unless
+ * AxisCameraEmulatorConfig::attributes is off), `info=1` the commands it takes; anything else an `Error:` body as the
+ * camera words it. `/axis-cgi/param.cgi?action=list&group=root.Brand` answers the brand parameters. Other paths: 404.
+ * Thread-safe.
  */
 class AxisCameraEmulator : public HttpCameraEmulator
 {

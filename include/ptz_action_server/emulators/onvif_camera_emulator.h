@@ -54,7 +54,7 @@ struct OnvifCameraEmulatorConfig
   bool absolute = true;
   /// With absolute: answers AbsoluteMove with ter:ActionNotSupported all the same (the other continuous-only cameras).
   bool refuse_absolute_move = false;
-  bool relative = true;         ///< lists the translation spaces and takes RelativeMove (false: a camera without it)
+  bool relative = true;  ///< lists the translation spaces and takes RelativeMove (false: a camera without it)
   /// With relative: its PTZ configuration options (and node) also list the pan-tilt and zoom TranslationSpaceFov, and
   /// RelativeMove in them centres that point of its picture (x, y from -1 to 1 from its centre to its right and top
   /// edges, through field_of_view at the current zoom) and multiplies the zoom's X by z.
@@ -126,7 +126,8 @@ struct OnvifCameraEmulatorConfig
  * - `/onvif/ptz_service` (ver20/ptz): GetServiceCapabilities, GetNodes, GetNode, GetConfigurations, GetConfiguration,
  *   GetConfigurationOptions, AbsoluteMove, RelativeMove (also in TranslationSpaceFov, fov_space), ContinuousMove (its
  *   Timeout), Stop (per axis), GetStatus (in the default spaces, MoveStatus per axis), GetPresets, SetPreset,
- *   GotoPreset, RemovePreset, GotoHomePosition, SetHomePosition. Moves without a space go in the configuration's default space.
+ *   GotoPreset, RemovePreset, GotoHomePosition, SetHomePosition. Moves without a space go in the configuration's
+ * default space.
  *
  * Faults as the specifications write them: ter:NotAuthorized (HTTP 400), env:Sender / ter:InvalidArgVal /
  * ter:NoProfile, ter:NoPTZProfile, ter:NoConfig, ter:NoEntity, ter:NoToken, ter:SpaceNotSupported, ter:InvalidPosition,

@@ -261,8 +261,8 @@ void appendContinuousMove(std::string& out, int pan, int tilt, int zoom, bool wi
 
 void appendCenter(std::string& out, const ImagePoint& point)
 {
-  out += formatText("center=%d,%d&imagewidth=%d&imageheight=%d", point.x, point.y, point.image_width,
-                    point.image_height);
+  out +=
+      formatText("center=%d,%d&imagewidth=%d&imageheight=%d", point.x, point.y, point.image_width, point.image_height);
 }
 
 void appendAreaZoom(std::string& out, const ImagePoint& point, int zoom_percent)

@@ -43,6 +43,17 @@ struct GoalVerdict
   bool stop_device = false;   ///< the caller must stop the device (a velocity goal hit a limit)
 };
 
+/// Where a goal the device aimed itself (GoalCommand::view) ended, for its result (GoalHandle::ended()).
+struct ViewEnding
+{
+  AxisValues start{};                    ///< the device's position when the goal started
+  std::array<bool, AXIS_COUNT> asked{};  ///< the axes the goal asked the device to move
+
+  /// \p sample's position of each axis \p capabilities has reporting that moved or was not asked to; NaN for the
+  /// others: never reached on an axis that did not move or that the device does not report.
+  AxisValues at(const PtzSample& sample, const Capabilities& capabilities) const;
+};
+
 /// Watches one goal. Not thread-safe: one owner thread calls update().
 class GoalMonitor
 {
@@ -57,18 +68,7 @@ public:
   /// it); a lost link or a device fault aborts it. remaining is aim minus position; retarget() moves the aim.
   static GoalMonitor forTrack(const AxisValues& aim, const PtzSample& start, const Capabilities& capabilities,
                               const GoalMonitorConfig& config, TimePoint now);
-  /// Where a goal the device aimed itself (GoalCommand::view) ended, for its result (GoalHandle::ended()).
-struct ViewEnding
-{
-  AxisValues start{};                    ///< the device's position when the goal started
-  std::array<bool, AXIS_COUNT> asked{};  ///< the axes the goal asked the device to move
-
-  /// \p sample's position of each axis \p capabilities has reporting that moved or was not asked to; NaN for the
-  /// others: never reached on an axis that did not move or that the device does not report.
-  AxisValues at(const PtzSample& sample, const Capabilities& capabilities) const;
-};
-
-/**
+  /**
    * \brief A goal the device aims itself, in its own picture (GoalCommand::view): its target is the device's to know.
    *
    * It succeeds once the device has moved and its reported pose has settled (at rest, and the same in two reports in a
@@ -132,11 +132,11 @@ private:
   double timeout_ = 0.0;
   std::uint64_t start_fault_count_ = 0;
   std::uint64_t start_link_losses_ = 0;
-  AxisValues start_position_{};  ///< where the device was at the start
-  bool must_move_ = false;       ///< a view goal that needs the device to move
-  bool view_moved_ = false;      ///< a view goal's device was seen to move
-  AxisValues view_last_{};       ///< a view goal's previous reported position
-  TimePoint view_last_stamp_{};  ///< ... and its stamp
+  AxisValues start_position_{};                           ///< where the device was at the start
+  bool must_move_ = false;                                ///< a view goal that needs the device to move
+  bool view_moved_ = false;                               ///< a view goal's device was seen to move
+  AxisValues view_last_{};                                ///< a view goal's previous reported position
+  TimePoint view_last_stamp_{};                           ///< ... and its stamp
   AxisValues last_moved_position_{};                      ///< position where each axis was last seen moving
   std::array<TimePoint, AXIS_COUNT> last_moved_at_{};     ///< on the monitor's clock
   std::array<TimePoint, AXIS_COUNT> last_moved_stamp_{};  ///< the device's report (PtzSample::stamp) of that moment

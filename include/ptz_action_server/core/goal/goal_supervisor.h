@@ -187,7 +187,8 @@ private:
   std::string note_;  ///< what validation changed in the active goal (clamping, a zoom ignored), empty if nothing
   std::unique_ptr<GoalMonitor> monitor_;
   bool stopping_ = false;  ///< the active goal was cancelled and waits for the device to rest
-  std::optional<ViewEnding> view_ending_;  ///< the active goal is the device's own aim in its picture (GoalCommand::view)
+  /// Set while the active goal is a GoalCommand::view.
+  std::optional<ViewEnding> view_ending_;
 
   std::atomic<GoalMode> mode_{ GoalMode::IDLE };
   /// Changes with each goal, and when a cancel starts the stop, after the sample its monitor starts from.
