@@ -79,9 +79,9 @@ void PtzActionServer::start()
   }
   limits_ = intersection.limits;
   capabilities_publisher_ = node_handle_.advertise<PtzCapabilities>("capabilities", 1, true);
-  PtzCapabilities capabilities = toMessage(backend_->name(), limits_);
-  capabilities.pixel_aim = describePixelAim(config_.pixel.aim_way, limits_);
-  capabilities_publisher_.publish(capabilities);
+  PtzCapabilities capabilities_message = toMessage(backend_->name(), limits_);
+  capabilities_message.pixel_aim = describePixelAim(config_.pixel.aim_way, limits_);
+  capabilities_publisher_.publish(capabilities_message);
   if (config_.pixel.aim_way == PixelAimWay::DEVICE && !limits_.view_centre)
   {
     ROS_WARN("pixel_aim is device, and the %s device has no command of its own to centre a point of its picture: "
