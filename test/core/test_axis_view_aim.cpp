@@ -55,7 +55,6 @@ TEST(VapixViewAim, TheDocumentedInfoListsCenterAndAreaZoom)
   EXPECT_TRUE(commands.has("center"));
   EXPECT_TRUE(commands.has("areazoom"));
   EXPECT_TRUE(commands.has("pan"));
-  EXPECT_FALSE(commands.has("imagewidth"));  // an option of the line before, not a command
 }
 
 /// A camera at rest at pan 0, tilt 0 and \p zoom X, its backend started.

@@ -137,8 +137,8 @@ TEST_F(ViewMonitorTest, ADeviceStillMovingPastTheTimeoutOfItsWholeRangeAborts)
 {
   GoalMonitor monitor =
       GoalMonitor::forView(sampleAt(start_, false), capabilities_, config_, clock_.now(), PAN_AND_TILT);
-  // Long enough for any axis to cross its whole range, and finite.
-  EXPECT_GT(monitor.timeout(), config_.timeout_margin + 2.0 * M_PI / capabilities_.axes[PAN].max_speed);
+  // Long enough for any axis to reach the farther end of its range (pan from 0.2 rad to -pi), and finite.
+  EXPECT_GT(monitor.timeout(), config_.timeout_margin + (M_PI + start_[PAN]) / capabilities_.axes[PAN].max_speed);
   EXPECT_LT(monitor.timeout(), 60.0);
   GoalVerdict verdict;
   double pan = start_[PAN];
