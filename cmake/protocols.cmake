@@ -105,21 +105,22 @@ ptz_protocol(axis
     src/core/axis/axis_protocol_lens.cpp src/core/axis/vapix_lens.cpp
   PLUGIN src/plugins/axis_backend_plugin.cpp
   EMULATOR src/emulators/axis_camera_emulator.cpp src/emulators/axis_camera_emulator_queue.cpp
-    src/emulators/axis_camera_classify.cpp src/emulators/axis_camera_emulator_lens.cpp
+    src/emulators/axis_camera_emulator_picture.cpp src/emulators/axis_camera_classify.cpp
+    src/emulators/axis_camera_emulator_lens.cpp
   PROGRAM axis_camera_emulator src/emulators/programs/axis_camera_emulator_main.cpp
   HARNESS axisHarnesses test/harness/axis_harness.cpp
   TESTS test/core/test_axis_protocol.cpp test/core/test_axis_zoom.cpp test/core/test_axis_emulator.cpp
-    test/core/test_axis_control_queue.cpp test/core/test_vapix_codec.cpp test/core/contract/axis_fixtures.cpp
-    test/core/test_axis_lens.cpp
+    test/core/test_axis_control_queue.cpp test/core/test_vapix_codec.cpp test/core/test_axis_view_aim.cpp
+    test/core/test_axis_lens.cpp test/core/contract/axis_fixtures.cpp
   FUZZ vapix_reply src/core/axis/vapix_codec.cpp src/core/axis/vapix_queue.cpp src/core/axis/vapix_zoom.cpp
     src/core/types.cpp
-  ROSTESTS test/ros/axis_node.test test/ros/axis_field_node.test
+  ROSTESTS test/ros/axis_node.test test/ros/axis_field_node.test test/ros/axis_pixel_aim.test
 )
 
 ptz_protocol(onvif
   CORE src/core/onvif/onvif_bring_up.cpp src/core/onvif/onvif_codec.cpp src/core/onvif/onvif_commands.cpp
     src/core/onvif/onvif_motion_check.cpp src/core/onvif/onvif_protocol.cpp src/core/onvif/onvif_ws_security.cpp
-    src/core/onvif/onvif_xml.cpp src/core/onvif/onvif_requests.cpp
+    src/core/onvif/onvif_xml.cpp src/core/onvif/onvif_requests.cpp src/core/onvif/onvif_view_aim.cpp
   PLUGIN src/plugins/onvif_backend_plugin.cpp
   EMULATOR src/emulators/onvif_camera_emulator.cpp src/emulators/onvif_camera_emulator_ptz.cpp
     src/emulators/onvif_camera_emulator_modes.cpp src/emulators/onvif_camera_emulator_moves.cpp
@@ -128,7 +129,8 @@ ptz_protocol(onvif
   HARNESS onvifHarnesses test/harness/onvif_harness.cpp
   TESTS test/core/test_onvif_cheap_cameras.cpp test/core/test_onvif_codec.cpp test/core/test_onvif_requests.cpp
     test/core/test_onvif_emulator.cpp test/core/test_onvif_emulator_modes.cpp test/core/test_onvif_motion_check.cpp
-    test/core/test_onvif_protocol.cpp test/core/test_onvif_field_modes.cpp test/core/contract/onvif_fixtures.cpp
+    test/core/test_onvif_protocol.cpp test/core/test_onvif_field_modes.cpp test/core/test_onvif_view_aim.cpp
+    test/core/contract/onvif_fixtures.cpp
   FUZZ soap_reply src/core/onvif/onvif_codec.cpp src/core/onvif/onvif_requests.cpp src/core/onvif/onvif_ws_security.cpp
     src/core/onvif/onvif_xml.cpp src/core/http/crypto.cpp src/core/types.cpp
   FUZZ_LIBS tinyxml2::tinyxml2 OpenSSL::Crypto

@@ -50,6 +50,12 @@ std::string describeExtras(const Capabilities& capabilities)
       extras += std::string(extras.empty() ? "" : ", ") + part.second;
     }
   }
+  if (capabilities.view_centre)
+  {
+    extras += std::string(extras.empty() ? "" : ", ") +
+              (capabilities.view_box_zoom ? "centres and box-zooms in its own picture" : "centres in its own picture") +
+              (capabilities.view_command.empty() ? "" : " (" + capabilities.view_command + ")");
+  }
   return extras.empty() ? "none" : extras;
 }
 

@@ -174,6 +174,13 @@ void ClosedLoopBackend::stop()
   inner().stop();
 }
 
+void ClosedLoopBackend::aimInView(const ViewTarget& target)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  endSteeringLocked();
+  inner().aimInView(target);
+}
+
 void ClosedLoopBackend::endSteeringLocked()
 {
   steering_ = false;

@@ -1,5 +1,6 @@
 #include "ptz_action_server/core/types.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -15,6 +16,12 @@ namespace ptz_action_server
 const char* unitOf(Axis axis)
 {
   return axis == ZOOM ? "X" : "rad";
+}
+
+double ViewTarget::magnification() const
+{
+  const double share = std::max(box_width, box_height);
+  return share > 0.0 ? 1.0 / share : 1.0;
 }
 
 const char* axisName(Axis axis)

@@ -35,6 +35,10 @@ std::vector<ClassifiedCommand> AxisCameraEmulator::classify() const
     {
       command.kind = Kind::MOVE;  // a velocity goal's
     }
+    else if (target.find("center=") != std::string::npos || target.find("areazoom=") != std::string::npos)
+    {
+      command.kind = Kind::MOVE;  // a point of its picture: where it goes is the camera's to know
+    }
     return command;
   });
 }

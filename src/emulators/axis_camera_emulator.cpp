@@ -120,6 +120,7 @@ AxisCameraEmulator::AxisCameraEmulator(const AxisCameraEmulatorConfig& config, s
   : HttpCameraEmulator(withLens(config.device, lensOf(config.zoom_table)), std::move(clock))
   , config_(config)
   , zoom_table_(lensOf(config.zoom_table))
+  , optics_(FieldOfViewModel::fromWideEnd(config.field_of_view))
   , lens_(config.lens, clock_->now())
 {
   if (config_.model.empty() || config_.model.find_first_of("\r\n") != std::string::npos)
@@ -235,11 +236,18 @@ HttpAnswer AxisCameraEmulator::command(const std::string& path, std::map<std::st
                                          "continuouszoommove",
                                          "move",
                                          "imagerotation" };
-    if (std::find_if(std::begin(KNOWN), std::end(KNOWN), [&](const char* name) { return value.first == name; }) ==
-        std::end(KNOWN))
+    static const char* const PICTURE[] = { "center", "areazoom", "imagewidth", "imageheight" };
+    const auto named = [&](const char* name) { return value.first == name; };
+    if (std::find_if(std::begin(KNOWN), std::end(KNOWN), named) == std::end(KNOWN) &&
+        !(config_.area_zoom && std::find_if(std::begin(PICTURE), std::end(PICTURE), named) != std::end(PICTURE)))
     {
       return errorBody(value.first + ": unknown argument");
     }
+  }
+  const std::string picture = aimInPicture(values, false, now);
+  if (!picture.empty())
+  {
+    return errorBody(picture);
   }
   if (values.count("move") && values["move"] != "stop" && values["move"] != "home")
   {
@@ -294,6 +302,7 @@ HttpAnswer AxisCameraEmulator::command(const std::string& path, std::map<std::st
     model_.moveAxisAtVelocity(
         ZOOM, config_.device.axes[ZOOM].motion.max_speed * numbers["continuouszoommove"].value / 100.0, now);
   }
+  aimInPicture(values, true, now);
   if (values["move"] == "stop")
   {
     model_.stop(now);
@@ -374,6 +383,11 @@ HttpAnswer AxisCameraEmulator::info() const
   const bool zoom = !zoom_table_.empty();
   std::string body = "Available commands:\r\n{camera=[n]}\r\nmove={ home | stop }\r\npan=[abspos]\r\ntilt=[abspos]\r\n";
   body += zoom ? "zoom=[n]\r\n" : "";
+  if (config_.area_zoom)  // as the VAPIX documentation's example lists them
+  {
+    body += "center=[x],[y]\r\n  imagewidth=[n]\r\n  imageheight=[n]\r\n";
+    body += zoom ? "areazoom=[x],[y],[z]\r\n  imagewidth=[n]\r\n  imageheight=[n]\r\n" : "";
+  }
   body += "rpan=[offset]\r\nrtilt=[offset]\r\n";
   body += zoom ? "rzoom=[offset]\r\n" : "";
   body += "continuouspantiltmove=[x-speed],[y-speed]\r\n";

@@ -34,9 +34,9 @@ std::vector<ClassifiedCommand> OnvifCameraEmulator::classify() const
       pan = aims ? std::stod(onvif::attribute(pan_tilt, "x")) : 0.0;
       pan = space != nullptr && std::string(space) == onvif::DEGREE_SPACE ? toRadians(pan) : pan * M_PI;
     }
-    else if (operation == "ContinuousMove")
+    else if (operation == "ContinuousMove" || operation == "RelativeMove")
     {
-      kind = Kind::MOVE;  // a velocity goal's
+      kind = Kind::MOVE;  // a velocity goal's, or one by an offset (also in the picture's TranslationSpaceFov)
     }
     return ClassifiedCommand{ exchange.at, kind, operation + " " + std::to_string(pan), aims, pan };
   });

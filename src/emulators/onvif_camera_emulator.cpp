@@ -130,7 +130,9 @@ SimDeviceConfig modelOf(const OnvifCameraEmulatorConfig& config)
 }  // namespace
 
 OnvifCameraEmulator::OnvifCameraEmulator(const OnvifCameraEmulatorConfig& config, std::shared_ptr<const Clock> clock)
-  : HttpCameraEmulator(modelOf(config), std::move(clock)), config_(config)
+  : HttpCameraEmulator(modelOf(config), std::move(clock))
+  , config_(config)
+  , lens_(FieldOfViewModel::fromWideEnd(config.field_of_view))
 {
   approach_.fill(std::numeric_limits<double>::quiet_NaN());
   home_ = { { config.device.axes[PAN].initial_position, config.device.axes[TILT].initial_position,

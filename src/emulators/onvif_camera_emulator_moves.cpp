@@ -1,9 +1,9 @@
 /**
  * \file
- * \brief OnvifCameraEmulator's moves: GetStatus, Stop, ContinuousMove (its Timeout), AbsoluteMove and RelativeMove,
- * home, and how the camera moves as its modes say (the backlash approach, a speed that ignores the magnitude, a Stop
- * that does not stop, an AbsoluteMove that never moves). Its PTZ service's listings and presets are
- * onvif_camera_emulator_ptz.cpp's.
+ * \brief OnvifCameraEmulator's moves: GetStatus, Stop, ContinuousMove (its Timeout), AbsoluteMove and RelativeMove
+ * (also in the picture's TranslationSpaceFov), home, and how the camera moves as its modes say (the backlash approach,
+ * a speed that ignores the magnitude, a Stop that does not stop, an AbsoluteMove that never moves). Its PTZ service's
+ * listings and presets are onvif_camera_emulator_ptz.cpp's.
  */
 #include <algorithm>
 #include <array>
@@ -191,15 +191,20 @@ HttpAnswer OnvifCameraEmulator::move(const std::string& operation, const Element
     }
     const bool degrees = pan_tilt.space == (absolute ? DEGREE_SPACE : DEGREE_TRANSLATION);
     const bool generic = pan_tilt.space == (absolute ? GENERIC_PAN_TILT_SPACE : GENERIC_PAN_TILT_TRANSLATION);
-    if ((pan_tilt.given && !(generic || (degrees && config_.degree_space))) ||
-        (zoom.given && zoom.space != (absolute ? GENERIC_ZOOM_SPACE : GENERIC_ZOOM_TRANSLATION)))
+    // In the picture: x, y from its centre to its right and top edges; the zoom multiplies the magnification.
+    const bool fov = !absolute && config_.fov_space && pan_tilt.space == FOV_PAN_TILT_TRANSLATION;
+    const bool fov_zoom = !absolute && config_.fov_space && zoom.space == FOV_ZOOM_TRANSLATION;
+    if ((pan_tilt.given && !(generic || fov || (degrees && config_.degree_space))) ||
+        (zoom.given && !fov_zoom && zoom.space != (absolute ? GENERIC_ZOOM_SPACE : GENERIC_ZOOM_TRANSLATION)))
     {
       return invalid("ter:SpaceNotSupported", "A space is referenced that is not supported by the PTZ node");
     }
     // The camera's own ranges, whatever GetNodes lists (generic: the whole travel; degrees: its mechanics).
-    const double limit_x = degrees ? (absolute ? 180.0 : 360.0) : (absolute ? 1.0 : 2.0);
-    const double limit_y = degrees ? (absolute ? 90.0 : 180.0) : (absolute ? 1.0 : 2.0);
-    const bool zoom_in_range = absolute ? zoom.x >= 0.0 && zoom.x <= 1.0 : std::abs(zoom.x) <= 1.0;
+    const double limit_x = degrees ? (absolute ? 180.0 : 360.0) : (absolute || fov ? 1.0 : 2.0);
+    const double limit_y = degrees ? (absolute ? 90.0 : 180.0) : (absolute || fov ? 1.0 : 2.0);
+    const bool zoom_in_range = absolute ? zoom.x >= 0.0 && zoom.x <= 1.0 :
+                               fov_zoom ? zoom.x > 0.0 && zoom.x <= zoomMax() :
+                                          std::abs(zoom.x) <= 1.0;
     if (!pan_tilt.numbers || !zoom.number || std::abs(pan_tilt.x) > limit_x || std::abs(pan_tilt.y) > limit_y ||
         !zoom_in_range)
     {
@@ -213,8 +218,14 @@ HttpAnswer OnvifCameraEmulator::move(const std::string& operation, const Element
     const AxisValues at = model_.sample(now).position;
     if (pan_tilt.given)
     {
-      const double pan = degrees ? toRadians(pan_tilt.x) : pan_tilt.x * M_PI;
-      const double tilt = degrees ? toRadians(pan_tilt.y) : pan_tilt.y * M_PI / 2.0;
+      double pan = degrees ? toRadians(pan_tilt.x) : pan_tilt.x * M_PI;
+      double tilt = degrees ? toRadians(pan_tilt.y) : pan_tilt.y * M_PI / 2.0;
+      if (fov)
+      {
+        centreOf(at[PAN], at[TILT], lens_.at(at[ZOOM]), pan_tilt.x, pan_tilt.y, pan, tilt);
+        pan -= at[PAN];
+        tilt -= at[TILT];
+      }
       // A translation beyond the travel stops at its border.
       const AxisRange& pan_travel = config_.device.axes[PAN].range;
       const AxisRange& tilt_travel = config_.device.axes[TILT].range;
@@ -224,7 +235,9 @@ HttpAnswer OnvifCameraEmulator::move(const std::string& operation, const Element
     if (zoom.given)
     {
       // The lens stops where it really ends (honoured_zoom), whatever the move asked: the model clamps.
-      const double z = absolute ? zoom.x : std::log(at[ZOOM]) / std::log(zoomMax()) + zoom.x;
+      const double z = absolute ? zoom.x :
+                       fov_zoom ? std::log(at[ZOOM] * zoom.x) / std::log(zoomMax()) :
+                                  std::log(at[ZOOM]) / std::log(zoomMax()) + zoom.x;
       velocity_axes_[ZOOM] = false;
       driving_[ZOOM] = true;
       model_.goToAxis(ZOOM, std::pow(zoomMax(), std::clamp(z, 0.0, 1.0)), now);

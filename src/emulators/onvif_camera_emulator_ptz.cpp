@@ -60,6 +60,11 @@ std::string OnvifCameraEmulator::supportedSpaces() const
                                   "") +
           space("RelativePanTiltTranslationSpace", GENERIC_PAN_TILT_TRANSLATION, -1, 1, -1, 1) +
           space("RelativeZoomTranslationSpace", GENERIC_ZOOM_TRANSLATION, -1, 1);
+      if (config_.fov_space)  // after the generic ones, as cameras list it
+      {
+        spaces += space("RelativePanTiltTranslationSpace", FOV_PAN_TILT_TRANSLATION, -1, 1, -1, 1) +
+                  space("RelativeZoomTranslationSpace", FOV_ZOOM_TRANSLATION, 0, zoomMax());
+      }
     }
   }
   spaces += space("ContinuousPanTiltVelocitySpace", GENERIC_PAN_TILT_VELOCITY, -1, 1, -1, 1) +

@@ -1,6 +1,7 @@
 #include "ptz_action_server/ros/pixel_goals.h"
 
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace ptz_action_server
@@ -12,6 +13,8 @@ PixelConfig PixelConfig::load(const ParamReader& params, const std::optional<Fie
   config.image_topic_set = params.has("image_topic");
   config.image_topic = params.text("image_topic", config.image_topic);
   config.lens = field_of_view;
+  const std::string way = params.choice("pixel_aim", pixelAimWayName(config.aim_way), { "auto", "computed", "device" });
+  parsePixelAimWay(way, config.aim_way);
   return config;
 }
 
@@ -29,22 +32,35 @@ PixelGoals::PixelGoals(const PtzKinematics& kinematics, const Capabilities& limi
 ConvertedGoal PixelGoals::convert(const PixelGoal& goal, const ros::Time& stamp, const PtzSample& current) const
 {
   const PoseLookup pose = poses_.at(stamp);
+  PixelCamera camera;
+  camera.field_of_view = config_.lens ? &*config_.lens : nullptr;
+  camera.image_upside_down = config_.image_upside_down;
+  if (calibration_)
+  {
+    camera.calibration = calibration_();
+  }
+  const PixelAimChoice choice = choosePixelAim(config_.aim_way, goal, pose, current, camera, limits_);
+  if (!choice.error.empty())
+  {
+    return ConvertedGoal::rejected(choice.error);
+  }
+  if (choice.device)
+  {
+    ConvertedGoal converted;
+    converted.command.view = choice.target;
+    converted.command.values.fill(std::numeric_limits<double>::quiet_NaN());  // the device's to know, told at the end
+    converted.command.note = choice.note;
+    return converted;
+  }
   if (!pose.found())
   {
     return ConvertedGoal::rejected(pose.error);
   }
-  PixelCamera camera;
-  camera.field_of_view = config_.lens ? &*config_.lens : nullptr;
-  camera.image_upside_down = config_.image_upside_down;
   std::string notes;
-  if (calibration_)
+  if (calibration_ && !camera.calibration)
   {
-    camera.calibration = calibration_();
-    if (!camera.calibration)
-    {
-      notes = "no calibrated camera_info on " + camera_info_topic_ +
-              " yet: the pixels of the field of view, principal point at the centre";
-    }
+    notes = "no calibrated camera_info on " + camera_info_topic_ +
+            " yet: the pixels of the field of view, principal point at the centre";
   }
   const PixelAim aim = aimAtPixel(goal, pose.pose, camera, kinematics_, limits_);
   if (!aim.ok())

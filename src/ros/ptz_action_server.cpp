@@ -9,6 +9,7 @@
 
 #include "ptz_action_server/core/capabilities.h"
 #include "ptz_action_server/core/limits.h"
+#include "ptz_action_server/core/motion/pixel_aim_choice.h"
 #include "ptz_action_server/core/text.h"
 #include "ptz_action_server/ros/capabilities_message.h"
 #include "ptz_action_server/ros/function_callback.h"
@@ -79,7 +80,15 @@ void PtzActionServer::start()
   }
   limits_ = intersection.limits;
   capabilities_publisher_ = node_handle_.advertise<PtzCapabilities>("capabilities", 1, true);
-  capabilities_publisher_.publish(toMessage(backend_->name(), limits_));
+  PtzCapabilities capabilities_message = toMessage(backend_->name(), limits_);
+  capabilities_message.pixel_aim = describePixelAim(config_.pixel.aim_way, limits_);
+  capabilities_publisher_.publish(capabilities_message);
+  if (config_.pixel.aim_way == PixelAimWay::DEVICE && !limits_.view_centre)
+  {
+    ROS_WARN("pixel_aim is device, and the %s device has no command of its own to centre a point of its picture: "
+             "pixel goals will be refused (set pixel_aim: auto or computed)",
+             backend_->name().c_str());
+  }
   poses_ = std::make_shared<PoseRecorder>(limits_);
   supervisor_ = std::make_unique<GoalSupervisor>(backend_, limits_, config_.monitor, config_.clamp_goals);
   supervising_ = true;

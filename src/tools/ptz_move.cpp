@@ -221,6 +221,7 @@ int printCapabilities(const Options& options)
   printAxis("zoom", message->zoom, "X");
   std::printf("  device: relative moves %s, presets %s, home %s\n", message->relative_moves ? "yes" : "no",
               message->device_presets ? "yes" : "no", message->device_home ? "yes" : "no");
+  std::printf("  pixel goals: %s\n", message->pixel_aim.c_str());
   return 0;
 }
 

@@ -54,6 +54,12 @@ public:
   {
     commands.push_back("stop");
   }
+  void aimInView(const ViewTarget& target) override
+  {
+    char text[96];
+    std::snprintf(text, sizeof(text), "aimInView %.2f %.2f x%.2f", target.x, target.y, target.magnification());
+    commands.push_back(text);
+  }
   /// The state, stamped as the device's newest report: now while it reports, the moment it fell silent after.
   PtzSample sample() const override
   {
@@ -111,6 +117,7 @@ struct GoalLog
   std::vector<AxisValues> feedback;
   std::string end;  ///< "REJECTED: ...", "SUCCEEDED: ...", "ABORTED: ..." or "PREEMPTED: ...", once ended
   int ends = 0;
+  std::vector<AxisValues> ended;  ///< where a view goal's device ended (GoalHandle::ended()), told before its end
 };
 
 class RecordingGoal : public GoalHandle
@@ -153,6 +160,11 @@ public:
   {
     end("PREEMPTED: " + text);
   }
+  void ended(const AxisValues& position) override
+  {
+    EXPECT_TRUE(log_->end.empty()) << "told where it ended after its end";
+    log_->ended.push_back(position);
+  }
 
 private:
   void end(const std::string& text)
@@ -189,11 +201,11 @@ inline GoalConverter positionGoal(double pan, double tilt, double zoom)
 
 /**
  * \brief Runs \p goal as the node's supervisor does on a real \p backend (validation, the axes it judges, its
- * monitor), judging each fresh sample until the goal ends or \p wait s pass; returns how it ended ("SUCCEEDED: ...",
+ * monitor), judging each fresh sample until the goal ends or \p wait s pass; returns its log (its end "SUCCEEDED: ...",
  * "" if it had not by then). The supervisor takes the backend's capabilities as its limits.
  */
-inline std::string runGoalToItsEnd(std::shared_ptr<PtzBackend> backend, const GoalConverter& goal,
-                                   const GoalMonitorConfig& config, double wait)
+inline std::shared_ptr<GoalLog> runLoggedGoal(std::shared_ptr<PtzBackend> backend, const GoalConverter& goal,
+                                              const GoalMonitorConfig& config, double wait)
 {
   GoalSupervisor supervisor(backend, backend->capabilities(), config, false);
   auto log = std::make_shared<GoalLog>();
@@ -205,7 +217,23 @@ inline std::string runGoalToItsEnd(std::shared_ptr<PtzBackend> backend, const Go
       },
       wait);
   supervisor.shutdown("the test is over");
-  return log->end;
+  return log;
+}
+
+/// runLoggedGoal()'s end.
+inline std::string runGoalToItsEnd(std::shared_ptr<PtzBackend> backend, const GoalConverter& goal,
+                                   const GoalMonitorConfig& config, double wait)
+{
+  return runLoggedGoal(std::move(backend), goal, config, wait)->end;
+}
+
+/// A goal the device aims itself, at \p target of its picture.
+inline GoalConverter viewGoal(const ViewTarget& target)
+{
+  return [=](const PtzSample&, GoalCommand& command) {
+    command.view = target;
+    return std::string();
+  };
 }
 
 inline GoalConverter velocityGoal(double pan, double tilt, double zoom)

@@ -34,7 +34,8 @@ inline void addCounts(std::vector<DiagnosticValue>& values,
  * Threading contract (as ros_control's RobotHW states which calls may block):
  * - start() may block for a bounded time (opening a port, a handshake); it is called once, before any other call
  *   but name()/capabilities(), from the node's main thread.
- * - goTo(), moveAtVelocity(), stop(), sample(), lastFault(), lastLinkLoss() and diagnostics() never block on I/O:
+ * - goTo(), moveAtVelocity(), stop(), aimInView(), sample(), lastFault(), lastLinkLoss() and diagnostics() never block
+ *   on I/O:
  *   commands are queued to the backend's own I/O thread, and sample() returns the latest snapshot. They may be
  *   called from any thread.
  * - The sample listener, if the backend takes one, is called on the backend's own thread and must return at once.
@@ -66,6 +67,15 @@ public:
 
   /// Decelerates every axis to rest where it is.
   virtual void stop() = 0;
+
+  /// Centres \p target's point of the device's current picture by the device's own command, and with a box zooms so
+  /// that it fills the view (capabilities().view_box_zoom; without it the box is only centred). Called only when
+  /// capabilities().view_centre says the device can; by default it does nothing. Where it ends is the device's to
+  /// say: the goal is judged on what it reports.
+  virtual void aimInView(const ViewTarget& target)
+  {
+    (void)target;
+  }
 
   /// The latest state of the device. Never blocks on I/O.
   virtual PtzSample sample() const = 0;

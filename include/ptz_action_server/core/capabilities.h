@@ -14,7 +14,8 @@ namespace ptz_action_server
 /// has no zoom)", or "velocity only (this camera reports no position: ...)".
 std::string describeAxis(const Capabilities& capabilities, Axis axis);
 
-/// The device's own extras: "relative moves, presets, home", or "none".
+/// The device's own extras: "relative moves, presets, home, centres and box-zooms in its own picture (VAPIX center,
+/// areazoom)", or "none".
 std::string describeExtras(const Capabilities& capabilities);
 
 }  // namespace ptz_action_server

@@ -48,8 +48,8 @@ struct ClosedLoopConfig
  * (lastFault()), never with an endless swing about the target.
  *
  * Devices whose axes all go to positions, and devices that cannot report state as it comes, pass through unchanged.
- * moveAtVelocity() and stop() end the steering. A lost link ends it too: the recovery never resumes an old goal.
- * Thread-safe.
+ * moveAtVelocity(), stop() and aimInView() end the steering. A lost link ends it too: the recovery never resumes an old
+ * goal. Thread-safe.
  */
 class ClosedLoopBackend : public ForwardingBackend
 {
@@ -64,6 +64,7 @@ public:
   void goTo(const AxisValues& position) override;
   void moveAtVelocity(const AxisValues& velocity) override;
   void stop() override;
+  void aimInView(const ViewTarget& target) override;
   bool setSampleListener(SampleListener listener) override;
   PtzSample sample() const override;
   std::string lastFault() const override;

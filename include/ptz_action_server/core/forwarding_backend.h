@@ -55,6 +55,10 @@ public:
   {
     inner_->stop();
   }
+  void aimInView(const ViewTarget& target) override
+  {
+    inner_->aimInView(target);
+  }
   PtzSample sample() const override
   {
     return inner_->sample();

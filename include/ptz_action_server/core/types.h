@@ -155,6 +155,32 @@ inline AxisCapability absentAxis(const std::string& limitation = "")
   return axis;
 }
 
+/**
+ * \brief A point of the device's own current picture, and a box around it to fill the view with: what a device that
+ * aims in its own picture (Capabilities::view_centre, PtzBackend::aimInView()) is given.
+ *
+ * Normalised to the picture, whatever its size: (0, 0) is the top-left corner of its top-left pixel, (1, 1) the
+ * bottom-right corner of its bottom-right pixel, (0.5, 0.5) its centre.
+ */
+struct ViewTarget
+{
+  double x = 0.5;           ///< 0: the picture's left edge, 1: its right edge
+  double y = 0.5;           ///< 0: its top edge, 1: its bottom edge
+  double box_width = 0.0;   ///< share of the picture's width; 0 with box_height 0: centre only, the zoom stays
+  double box_height = 0.0;  ///< share of its height (a box wider than the picture zooms out)
+  int image_width = 0;      ///< px of the picture the point was chosen on (VAPIX counts in its pixels)
+  int image_height = 0;     ///< px
+
+  /// True when the target asks for a zoom (a box).
+  bool box() const
+  {
+    return box_width > 0.0 || box_height > 0.0;
+  }
+  /// How much the box asks the view to magnify: 1 / the larger of its shares (2: to half the field of view); 1 without
+  /// a box.
+  double magnification() const;
+};
+
 /// What a backend's device can do; the node intersects the ranges with the URDF joint limits.
 struct Capabilities
 {
@@ -165,6 +191,11 @@ struct Capabilities
   bool device_presets = false;  ///< the device stores presets of its own
   bool device_home = false;     ///< the device has a home position of its own
   LensCapabilities lens;        ///< focus and iris (none by default)
+  /// The device centres a point of its own current picture by a command of its own (PtzBackend::aimInView()): it knows
+  /// its lens, so the node needs no field of view, but it works on the picture it shows now only.
+  bool view_centre = false;
+  bool view_box_zoom = false;  ///< ... and zooms so that a box of it fills the view
+  std::string view_command;    ///< the device's commands for it, in its terms ("VAPIX center"), for messages
 };
 
 /// \brief One snapshot of the device, as a backend last knew it.

@@ -49,6 +49,14 @@ struct AxisCameraEmulatorConfig
   double queue_poll_time = 20.0;  ///< CtlQueuePollTime, s
   /// Its focus and iris (SimLensAxisConfig::present: whether it has them; values 1..9999, 1 near and closed).
   SimLensConfig lens;
+  /// The driver takes `center=x,y` and `areazoom=x,y,z` (with `imagewidth`, `imageheight`) and info=1 lists them, as
+  /// the VAPIX documentation's and the field camera's do; false: a driver without them (`Error:` unknown argument).
+  bool area_zoom = true;
+  /// The lens at zoom 1 (full angles, rad), narrowing as an ideal zoom lens with the zoom's X: what `center` and
+  /// `areazoom` aim with.
+  FieldOfViewAngles field_of_view = HttpCameraEmulator::defaultFieldOfView();
+  int image_width = 1280;  ///< px of the picture `center` and `areazoom` count in without `imagewidth` (720p)
+  int image_height = 720;  ///< px, without `imageheight`
 
   static SimDeviceConfig defaultDevice();
   /// An 18X optical zoom listed per X as Axis cameras list their zoomSteps: VAPIX values step evenly per X.
@@ -65,12 +73,14 @@ struct AxisCameraEmulatorConfig
  * \brief A VAPIX PTZ camera on 127.0.0.1.
  *
  * `/axis-cgi/com/ptz.cgi` (GET query or POST form): `pan`, `tilt` (fractional degrees), `zoom` (1..9999), `speed`
- * (1..100), `rpan`, `rtilt`, `rzoom`, `continuouspantiltmove=P,T`, `continuouszoommove=Z`, `move=stop|home` answer
- * 204; `query=position|limits|speed|presetposcam|presetposall` answer `key=value` lines (a position carries pan,
- * tilt, zoom, iris, focus, brightness, autofocus, autoiris), `query=attributes&group=zoom` the documented sections
- * (unless AxisCameraEmulatorConfig::attributes is off), `info=1` the commands it takes; anything else an `Error:`
- * body as the camera words it. `/axis-cgi/param.cgi?action=list&group=root.Brand` answers the brand parameters. Other
- * paths: 404. Thread-safe.
+ * (1..100), `rpan`, `rtilt`, `rzoom`, `continuouspantiltmove=P,T`, `continuouszoommove=Z`, `move=stop|home`, and
+ * `center=X,Y`, `areazoom=X,Y,Z` (whole pixels of an `imagewidth` x `imageheight` picture, turned into angles with the
+ * lens at the current zoom; Z / 100 multiplies the zoom's X) answer 204;
+ * `query=position|limits|speed|presetposcam|presetposall` answer `key=value` lines (a position carries pan, tilt, zoom,
+ * iris, focus, brightness, autofocus, autoiris), `query=attributes&group=zoom` the documented sections (unless
+ * AxisCameraEmulatorConfig::attributes is off), `info=1` the commands it takes; anything else an `Error:` body as the
+ * camera words it. `/axis-cgi/param.cgi?action=list&group=root.Brand` answers the brand parameters. Other paths: 404.
+ * Thread-safe.
  */
 class AxisCameraEmulator : public HttpCameraEmulator
 {
@@ -107,6 +117,8 @@ private:
   HttpAnswer command(const std::string& path, std::map<std::string, std::string>& values, const std::string& client,
                      TimePoint now);
   HttpAnswer query(const std::string& what, const std::string& group, TimePoint now);
+  /// `center` / `areazoom` in \p values, checked: "" and the move made, or the `Error:` words; mutex_ held.
+  std::string aimInPicture(std::map<std::string, std::string>& values, bool act, TimePoint now);
   HttpAnswer info() const;
   // Focus and iris (axis_camera_emulator_lens.cpp); mutex_ held.
   /// A request with a lens argument: its answer (only lens arguments and camera= may come with it); else nothing.
@@ -126,6 +138,7 @@ private:
 
   const AxisCameraEmulatorConfig config_;
   vapix::ZoomTable zoom_table_;
+  FieldOfViewModel optics_;  ///< what `center` and `areazoom` aim with
   // Guarded by mutex_, with the model.
   std::string holder_;  ///< the client that holds PTZ control ("" none)
   TimePoint held_until_{};

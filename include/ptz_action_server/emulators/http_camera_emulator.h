@@ -8,6 +8,7 @@
 #include <memory>
 #include <mutex>
 
+#include "ptz_action_server/core/motion/field_of_view.h"
 #include "ptz_action_server/core/sim/sim_device_model.h"
 #include "ptz_action_server/emulators/emulator_faults.h"
 #include "ptz_action_server/emulators/http_camera_server.h"
@@ -34,6 +35,16 @@ public:
   /// Fault hooks of the motion model: a stalled axis accepts every command and silently stays where it is; a reply
   /// delay makes every answer wait.
   void setFaults(const SimFaults& faults);
+
+  /// A camera's lens at its wide end: 60 degrees across a 16:9 picture (about 34 degrees high).
+  static FieldOfViewAngles defaultFieldOfView();
+  /**
+   * \brief Where a camera at \p pan, \p tilt turns to centre the point (\p x, \p y) of its picture, whose field of
+   * view is \p view: x and y from -1 to 1 across it, from its centre to the right and up (1: its edge), on an ideal
+   * pinhole. Pan positive to the right, tilt up (rad), as the contract and the camera's own angles.
+   */
+  static void centreOf(double pan, double tilt, const FieldOfViewAngles& view, double x, double y, double& new_pan,
+                       double& new_tilt);
 
 protected:
   /// The motion model of \p device, on \p clock.

@@ -54,7 +54,13 @@ struct OnvifCameraEmulatorConfig
   bool absolute = true;
   /// With absolute: answers AbsoluteMove with ter:ActionNotSupported all the same (the other continuous-only cameras).
   bool refuse_absolute_move = false;
-  bool relative = true;         ///< lists the translation spaces and takes RelativeMove (false: a camera without it)
+  bool relative = true;  ///< lists the translation spaces and takes RelativeMove (false: a camera without it)
+  /// With relative: its PTZ configuration options (and node) also list the pan-tilt and zoom TranslationSpaceFov, and
+  /// RelativeMove in them centres that point of its picture (x, y from -1 to 1 from its centre to its right and top
+  /// edges, through field_of_view at the current zoom) and multiplies the zoom's X by z.
+  bool fov_space = true;
+  /// The lens at zoom 1 (full angles, rad), narrowing as an ideal zoom lens with the zoom's X.
+  FieldOfViewAngles field_of_view = HttpCameraEmulator::defaultFieldOfView();
   bool status_position = true;  ///< GetStatus carries a Position (false: field case "no position in the status")
   /// Preset operations work (false: field case "no presets": they answer ter:ActionNotSupported although GetNodes
   /// still lists MaximumNumberOfPresets, as those cameras do).
@@ -118,9 +124,10 @@ struct OnvifCameraEmulatorConfig
  * Its XAddrs name the address and port it listens on (advertised_host aside); a token's Created may be any
  * xsd:dateTime.
  * - `/onvif/ptz_service` (ver20/ptz): GetServiceCapabilities, GetNodes, GetNode, GetConfigurations, GetConfiguration,
- *   GetConfigurationOptions, AbsoluteMove, RelativeMove, ContinuousMove (its Timeout), Stop (per axis), GetStatus (in
- *   the default spaces, MoveStatus per axis), GetPresets, SetPreset, GotoPreset, RemovePreset, GotoHomePosition,
- *   SetHomePosition. Moves without a space go in the configuration's default space.
+ *   GetConfigurationOptions, AbsoluteMove, RelativeMove (also in TranslationSpaceFov, fov_space), ContinuousMove (its
+ *   Timeout), Stop (per axis), GetStatus (in the default spaces, MoveStatus per axis), GetPresets, SetPreset,
+ *   GotoPreset, RemovePreset, GotoHomePosition, SetHomePosition. Moves without a space go in the configuration's
+ * default space.
  *
  * Faults as the specifications write them: ter:NotAuthorized (HTTP 400), env:Sender / ter:InvalidArgVal /
  * ter:NoProfile, ter:NoPTZProfile, ter:NoConfig, ter:NoEntity, ter:NoToken, ter:SpaceNotSupported, ter:InvalidPosition,
@@ -197,6 +204,7 @@ private:
   }
 
   const OnvifCameraEmulatorConfig config_;
+  const FieldOfViewModel lens_;  ///< config_.field_of_view at every zoom
   // Guarded by mutex_, with the model.
   mutable std::array<bool, AXIS_COUNT> velocity_axes_{};  ///< axes a ContinuousMove moves until its timeout
   TimePoint velocity_until_{};

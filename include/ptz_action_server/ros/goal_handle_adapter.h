@@ -7,12 +7,14 @@
 
 #include <functional>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include <actionlib/server/action_server.h>
 #include <ros/console.h>
 
 #include "ptz_action_server/core/goal/goal_supervisor.h"
+#include "ptz_action_server/PtzPixelAction.h"
 #include "ptz_action_server/core/goal/status_hold.h"
 #include "ptz_action_server/ros/action_kind.h"
 
@@ -74,6 +76,16 @@ public:
       return;
     }
     handle_.publishFeedback(feedback_);
+  }
+  /// A goal the device aimed itself: a pixel goal's result says where it ended (NaN: not reached, or not known).
+  void ended(const AxisValues& position) override
+  {
+    if constexpr (std::is_same_v<Result, PtzPixelResult>)
+    {
+      result_.pan = static_cast<float>(position[PAN]);
+      result_.tilt = static_cast<float>(position[TILT]);
+      result_.zoom = static_cast<float>(position[ZOOM]);
+    }
   }
   void succeed(const std::string& text) override
   {

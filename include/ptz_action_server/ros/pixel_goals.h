@@ -15,6 +15,7 @@
 #include "ptz_action_server/core/motion/field_of_view.h"
 #include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/core/motion/pixel_aim.h"
+#include "ptz_action_server/core/motion/pixel_aim_choice.h"
 #include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/pose_recorder.h"
 
@@ -32,8 +33,10 @@ struct PixelConfig
   /// The pictures' field of view: the node's (~field_of_view), or the simulated camera's lens when it draws without
   /// one. None: pixel goals are refused, naming the parameters to set.
   std::optional<FieldOfViewModel> lens;
+  /// ~pixel_aim: who aims at a pixel, the node or the device's own command (choosePixelAim()).
+  PixelAimWay aim_way = PixelAimWay::AUTO;
 
-  /// Reads ~image_upside_down and ~image_topic; the lens is \p field_of_view.
+  /// Reads ~image_upside_down, ~image_topic and ~pixel_aim; the lens is \p field_of_view.
   static PixelConfig load(const ParamReader& params, const std::optional<FieldOfViewModel>& field_of_view);
 };
 
@@ -41,7 +44,8 @@ struct PixelConfig
  * \brief Converts a pixel of an image into the position command that centres it (and for a box, the zoom that fills
  * the view with it): the camera's pose at the image's stamp (the pose history), the picture's pixels (the calibrated
  * camera_info, else the lens at that pose's zoom), aimAtPixel(), and the zoom left where it is when the goal has no
- * box.
+ * box. Or, as ~pixel_aim and choosePixelAim() decide, a view command the device aims with its own command
+ * (GoalCommand::view: VAPIX center / areazoom, ONVIF RelativeMove in TranslationSpaceFov).
  *
  * The command is checked and clamped by the GoalSupervisor like a position_abs goal. One thread (the node's main
  * queue); the history and the calibration may be fed from others.

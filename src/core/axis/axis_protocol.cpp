@@ -270,6 +270,26 @@ void AxisProtocol::stop()
   command("move=stop");
 }
 
+void AxisProtocol::aimInView(const ViewTarget& target)
+{
+  // Whole pixels of the picture the point was chosen on: its size goes along, so the camera scales them to its own.
+  vapix::ImagePoint point;
+  point.image_width = std::max(target.image_width, 1);
+  point.image_height = std::max(target.image_height, 1);
+  point.x = static_cast<int>(std::lround(std::clamp(target.x, 0.0, 1.0) * point.image_width));
+  point.y = static_cast<int>(std::lround(std::clamp(target.y, 0.0, 1.0) * point.image_height));
+  arguments_.clear();
+  if (target.box())
+  {
+    vapix::appendAreaZoom(arguments_, point, static_cast<int>(std::lround(100.0 * target.magnification())));
+  }
+  else
+  {
+    vapix::appendCenter(arguments_, point);
+  }
+  command(arguments_);
+}
+
 void AxisProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   values.emplace_back("camera", std::to_string(settings_.camera));

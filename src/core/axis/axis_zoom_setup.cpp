@@ -64,6 +64,11 @@ Capabilities AxisProtocol::cameraCapabilities(const vapix::Limits& limits, const
       listed && (commands.offers("query", "presetposall") || commands.offers("query", "presetposcam") ||
                  commands.has("gotoserverpresetno"));
   capabilities.device_home = listed && commands.offers("move", "home");
+  // center and areazoom work on the camera's own picture: only a camera that lists them is asked to.
+  capabilities.view_centre = listed && commands.has("center");
+  capabilities.view_box_zoom =
+      capabilities.view_centre && commands.has("areazoom") && zoom_source_ != AxisZoomSource::NO_ZOOM;
+  capabilities.view_command = capabilities.view_box_zoom ? "VAPIX center, areazoom" : "VAPIX center";
 
   AxisCapability& zoom = capabilities.axes[ZOOM];
   if (zoom_source_ == AxisZoomSource::NO_ZOOM)

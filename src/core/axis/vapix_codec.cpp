@@ -259,5 +259,17 @@ void appendContinuousMove(std::string& out, int pan, int tilt, int zoom, bool wi
   }
 }
 
+void appendCenter(std::string& out, const ImagePoint& point)
+{
+  out +=
+      formatText("center=%d,%d&imagewidth=%d&imageheight=%d", point.x, point.y, point.image_width, point.image_height);
+}
+
+void appendAreaZoom(std::string& out, const ImagePoint& point, int zoom_percent)
+{
+  out += formatText("areazoom=%d,%d,%d&imagewidth=%d&imageheight=%d", point.x, point.y, std::max(zoom_percent, 1),
+                    point.image_width, point.image_height);
+}
+
 }  // namespace vapix
 }  // namespace ptz_action_server

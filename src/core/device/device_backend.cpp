@@ -34,6 +34,11 @@ void DeviceBackend::lens(const LensCommand& command)
   session_->post([this, command] { protocol_->lens(command); });
 }
 
+void DeviceBackend::aimInView(const ViewTarget& target)
+{
+  session_->command([this, target] { protocol_->aimInView(target); });
+}
+
 void DeviceBackend::diagnostics(std::vector<DiagnosticValue>& values) const
 {
   values.emplace_back("protocol", protocol_->name());

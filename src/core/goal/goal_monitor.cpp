@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "ptz_action_server/core/motion/motion_profile.h"
 #include "ptz_action_server/core/text.h"
@@ -12,6 +13,8 @@ namespace
 {
 /// An axis counts as moving when it travels more than this share of its tolerance.
 constexpr double MOVEMENT_SHARE_OF_TOLERANCE = 0.25;
+/// A reported position that changed by more than this (rad, X) since a view goal's start moved.
+constexpr double VIEW_MOVED = 1e-6;
 /// Acceleration assumed for the timeout estimate when a device does not state one.
 constexpr double UNKNOWN_ACCELERATION = 1e3;
 
@@ -55,6 +58,32 @@ GoalMonitor GoalMonitor::forStop(const PtzSample& start, const GoalMonitorConfig
   return GoalMonitor(Kind::STOP, AxisValues{}, start, reported, config, now);
 }
 
+GoalMonitor GoalMonitor::forView(const PtzSample& start, const Capabilities& capabilities,
+                                 const GoalMonitorConfig& config, TimePoint now,
+                                 const std::array<bool, AXIS_COUNT>& asked)
+{
+  GoalMonitor monitor(Kind::VIEW, AxisValues{}, start, capabilities, config, now);
+  monitor.must_move_ = std::any_of(asked.begin(), asked.end(), [](bool axis_asked) { return axis_asked; });
+  monitor.view_last_ = start.position;
+  monitor.view_last_stamp_ = start.stamp;
+  return monitor;
+}
+
+AxisValues ViewEnding::at(const PtzSample& sample, const Capabilities& capabilities) const
+{
+  AxisValues position = sample.position;
+  for (Axis axis : ALL_AXES)
+  {
+    const AxisCapability& capability = capabilities.axes[axis];
+    const bool moved = std::abs(sample.position[axis] - start[axis]) > VIEW_MOVED;
+    if (!capability.present || !capability.feedback || (asked[axis] && !moved))
+    {
+      position[axis] = std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  return position;
+}
+
 GoalMonitor GoalMonitor::forTrack(const AxisValues& aim, const PtzSample& start, const Capabilities& capabilities,
                                   const GoalMonitorConfig& config, TimePoint now)
 {
@@ -70,13 +99,25 @@ GoalMonitor::GoalMonitor(Kind kind, const AxisValues& goal, const PtzSample& sta
   , started_at_(now)
   , start_fault_count_(start.fault_count)
   , start_link_losses_(start.link_losses)
+  , start_position_(start.position)
   , last_moved_position_(start.position)
 {
   last_moved_at_.fill(now);
   last_moved_stamp_.fill(start.stamp);
-  if (kind == Kind::POSITION)
+  if (kind == Kind::POSITION || kind == Kind::VIEW)
   {
-    expected_duration_ = expectedDuration(goal, start, capabilities);
+    AxisValues target = goal;
+    if (kind == Kind::VIEW)
+    {
+      // Where the device goes is unknown: as far as the farther end of each axis' range.
+      for (Axis axis : ALL_AXES)
+      {
+        const AxisRange& range = capabilities.axes[axis].range;
+        const double position = start.position[axis];
+        target[axis] = std::abs(range.max - position) > std::abs(position - range.min) ? range.max : range.min;
+      }
+    }
+    expected_duration_ = expectedDuration(target, start, capabilities);
     timeout_ = config.fixed_timeout > 0.0 ? config.fixed_timeout :
                                             expected_duration_ * config.timeout_scale + config.timeout_margin;
   }
@@ -95,7 +136,11 @@ GoalVerdict GoalMonitor::update(const PtzSample& sample, TimePoint now)
   }
   for (Axis axis : ALL_AXES)
   {
-    if (capabilities_.axes[axis].present)
+    if (kind_ == Kind::VIEW)
+    {
+      verdict.remaining[axis] = std::numeric_limits<double>::quiet_NaN();  // only the device knows its target
+    }
+    else if (capabilities_.axes[axis].present)
     {
       verdict.remaining[axis] = goal_[axis] - (kind_ == Kind::VELOCITY ? sample.velocity[axis] : sample.position[axis]);
     }
@@ -121,6 +166,8 @@ GoalVerdict GoalMonitor::update(const PtzSample& sample, TimePoint now)
       return updatePosition(sample, now, verdict);
     case Kind::TRACK:
       return verdict;  // goes on until cancelled or preempted
+    case Kind::VIEW:
+      return updateView(sample, now, verdict);
     default:
       return updateVelocity(sample, now, verdict);
   }
@@ -227,6 +274,81 @@ GoalVerdict GoalMonitor::updateStop(const PtzSample& sample, TimePoint now, Goal
     verdict.reason = formatText("still moving %.2f s after the stop command", timeout_);
   }
   return verdict;
+}
+
+GoalVerdict GoalMonitor::updateView(const PtzSample& sample, TimePoint now, GoalVerdict verdict)
+{
+  bool observable = false;
+  // Settled: at rest, and the same in a later report than the last (a report judged twice proves nothing).
+  bool settled = !sample.moving && (sample.stamp != view_last_stamp_ || sample.stamp == TimePoint{});
+  for (Axis axis : ALL_AXES)
+  {
+    const AxisCapability& capability = capabilities_.axes[axis];
+    if (capability.present && capability.feedback)
+    {
+      observable = true;
+      // Any change of a reported position is the device's own move: it reports in its own steps.
+      view_moved_ = view_moved_ || std::abs(sample.position[axis] - start_position_[axis]) > VIEW_MOVED;
+      settled = settled && std::abs(sample.position[axis] - view_last_[axis]) <= VIEW_MOVED;
+    }
+  }
+  view_last_ = sample.position;
+  view_last_stamp_ = sample.stamp;
+  view_moved_ = view_moved_ || sample.moving;
+  const double elapsed = secondsBetween(started_at_, now);
+  if (view_moved_ && settled)
+  {
+    verdict.phase = GoalPhase::SUCCEEDED;
+    verdict.reason = "the device aimed itself: ended at " + describeViewEnd(sample);
+  }
+  else if (!view_moved_ && elapsed > config_.stall_timeout)
+  {
+    verdict.phase = must_move_ && observable ? GoalPhase::ABORTED : GoalPhase::SUCCEEDED;
+    verdict.reason = !observable ? "sent to the device's own command; it reports no position, so where it ended is "
+                                   "not known" :
+                     must_move_  ? formatText("the device did not move within %.2f s of its own command, at %s",
+                                              config_.stall_timeout, describePosition(sample).c_str()) :
+                                   "already centred: the device did not move, at " + describePosition(sample);
+  }
+  else if (elapsed > timeout_)
+  {
+    verdict.phase = GoalPhase::ABORTED;
+    verdict.reason = formatText("timed out after %.2f s (the device's own command) at %s", elapsed,
+                                describePosition(sample).c_str());
+  }
+  return verdict;
+}
+
+std::string GoalMonitor::describeViewEnd(const PtzSample& sample) const
+{
+  std::string text = describePosition(sample);
+  std::string still;
+  std::string unseen;
+  for (Axis axis : ALL_AXES)
+  {
+    const AxisCapability& capability = capabilities_.axes[axis];
+    if (!capability.present)
+    {
+      continue;
+    }
+    if (!capability.feedback)
+    {
+      unseen += std::string(unseen.empty() ? "" : " and ") + axisName(axis);
+    }
+    else if (std::abs(sample.position[axis] - start_position_[axis]) <= VIEW_MOVED)
+    {
+      still += std::string(still.empty() ? "" : " and ") + axisName(axis);
+    }
+  }
+  if (!still.empty())
+  {
+    text += "; " + still + " did not move";
+  }
+  if (!unseen.empty())
+  {
+    text += "; the device does not report its " + unseen;
+  }
+  return text;
 }
 
 std::size_t GoalMonitor::findStalledAxis(const PtzSample& sample, TimePoint now,

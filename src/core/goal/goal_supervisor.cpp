@@ -1,11 +1,21 @@
 #include "ptz_action_server/core/goal/goal_supervisor.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "ptz_action_server/core/goal/goal_validation.h"
 
 namespace ptz_action_server
 {
+namespace
+{
+/// A point this close to the picture's centre (share of its size) need not move the device.
+constexpr double VIEW_CENTRED = 0.02;
+/// A box whose magnification is within this of 1 (natural log) need not zoom.
+constexpr double VIEW_ZOOMED = 0.02;
+}  // namespace
+
 GoalSupervisor::GoalSupervisor(std::shared_ptr<PtzBackend> backend, const Capabilities& limits,
                                const GoalMonitorConfig& config, bool clamp_goals, std::shared_ptr<const Clock> clock)
   : backend_(std::move(backend)), limits_(limits), config_(config), clamp_goals_(clamp_goals), clock_(std::move(clock))
@@ -25,6 +35,22 @@ void GoalSupervisor::submit(std::unique_ptr<GoalHandle> goal, const PtzSample& c
     return;
   }
   GoalCommand command = converted.command;
+  if (command.view)
+  {
+    // Where the device goes is its own to know: nothing to validate, every axis it has is judged as it reports.
+    if (!limits_.view_centre)
+    {
+      goal->reject("the " + backend_->name() + " device cannot aim in its own picture");
+      return;
+    }
+    std::array<bool, AXIS_COUNT> judged{};
+    for (Axis axis : ALL_AXES)
+    {
+      judged[axis] = limits_.axes[axis].present;
+    }
+    activate(std::move(goal), command, judged, command.note);
+    return;
+  }
   // A tracked target outside the limits is followed as far as the limits allow.
   const bool clamp = clamp_goals_ || command.track;
   const ValidatedGoal validated = command.velocity ? validateVelocityGoal(command.values, limits_, clamp) :
@@ -49,6 +75,7 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   if (active_goal_)
   {
     // Retarget from where the device is: no stop in between.
+    tellEnd(backend_->sample());
     active_goal_->preempt(withNote("preempted by a new " + goal->action() + " goal"));
     finish();
   }
@@ -57,7 +84,12 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   ++goal_serial_;
   const bool stop_goal = command.velocity && std::all_of(command.values.begin(), command.values.end(),
                                                          [](double value) { return value == 0.0; });
-  if (stop_goal)
+  if (command.view)
+  {
+    view_ending_ = ViewEnding{ start.position, askedAxes(*command.view) };
+    backend_->aimInView(*command.view);
+  }
+  else if (stop_goal)
   {
     backend_->stop();
   }
@@ -75,7 +107,12 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   {
     judged_axes.axes[axis].present = judged[axis];
   }
-  if (command.track)
+  if (command.view)
+  {
+    monitor_ = std::make_unique<GoalMonitor>(
+        GoalMonitor::forView(start, judged_axes, config_, clock_->now(), view_ending_->asked));
+  }
+  else if (command.track)
   {
     monitor_ = std::make_unique<GoalMonitor>(
         GoalMonitor::forTrack(command.values, start, judged_axes, config_, clock_->now()));
@@ -142,6 +179,7 @@ void GoalSupervisor::abort(const std::string& action, const std::string& id, con
   if (isRunning(action, id))
   {
     backend_->stop();
+    tellEnd(backend_->sample());
     active_goal_->abort(withNote(reason));
     finish();
   }
@@ -193,6 +231,7 @@ void GoalSupervisor::judge(const PtzSample& sample, bool publish_feedback, TimeP
     }
     return;
   }
+  tellEnd(sample);
   if (stopping_)
   {
     active_goal_->preempt(withNote("cancelled: " + verdict.reason));
@@ -228,8 +267,24 @@ void GoalSupervisor::shutdown(const std::string& reason)
   if (active_goal_)
   {
     backend_->stop();
+    tellEnd(backend_->sample());
     active_goal_->abort(withNote(reason));
     finish();
+  }
+}
+
+std::array<bool, AXIS_COUNT> GoalSupervisor::askedAxes(const ViewTarget& view) const
+{
+  const bool zooms = view.box() && limits_.view_box_zoom && limits_.axes[ZOOM].present &&
+                     std::abs(std::log(view.magnification())) > VIEW_ZOOMED;
+  return { { std::abs(view.x - 0.5) > VIEW_CENTRED, std::abs(view.y - 0.5) > VIEW_CENTRED, zooms } };
+}
+
+void GoalSupervisor::tellEnd(const PtzSample& sample)
+{
+  if (view_ending_)
+  {
+    active_goal_->ended(view_ending_->at(sample, limits_));
   }
 }
 
@@ -244,6 +299,7 @@ void GoalSupervisor::finish()
   note_.clear();
   monitor_.reset();
   stopping_ = false;
+  view_ending_.reset();
   mode_ = GoalMode::IDLE;
 }
 

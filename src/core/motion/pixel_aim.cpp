@@ -20,8 +20,9 @@ void addNote(std::string& notes, const std::string& note)
   notes += (notes.empty() ? "" : "; ") + note;
 }
 
-/// What \p goal's box or pixel cannot be, or "".
-std::string findBadGoal(const PixelGoal& goal, int width, int height)
+}  // namespace pixel_aim
+
+std::string findBadPixelGoal(const PixelGoal& goal, int width, int height)
 {
   if (width <= 0 || height <= 0)
   {
@@ -46,6 +47,8 @@ std::string findBadGoal(const PixelGoal& goal, int width, int height)
   return "";
 }
 
+namespace pixel_aim
+{
 /// The direction through pixel (\p u, \p v) of \p intrinsics in the camera link's axes.
 Eigen::Vector3d linkRayThrough(const PinholeIntrinsics& intrinsics, bool upside_down, double u, double v)
 {
@@ -127,6 +130,12 @@ void fillWithBox(const FieldOfViewModel& field_of_view, const FieldOfViewAngles&
 }
 }  // namespace pixel_aim
 
+void pixelGoalImageSize(const PixelGoal& goal, const PixelCamera& camera, int& width, int& height)
+{
+  width = goal.image_width > 0 || !camera.calibration ? goal.image_width : camera.calibration->intrinsics.width;
+  height = goal.image_height > 0 || !camera.calibration ? goal.image_height : camera.calibration->intrinsics.height;
+}
+
 std::string intrinsicsAtZoom(const PixelCamera& camera, double zoom, int width, int height,
                              PinholeIntrinsics& intrinsics)
 {
@@ -181,11 +190,10 @@ PixelAim aimAtPixel(const PixelGoal& goal, const AxisValues& image_pose, const P
   PixelAim aim;
   aim.zoom = pixel_aim::NOT_A_NUMBER;
   aim.box_fill = pixel_aim::NOT_A_NUMBER;
-  const int width =
-      goal.image_width > 0 || !camera.calibration ? goal.image_width : camera.calibration->intrinsics.width;
-  const int height =
-      goal.image_height > 0 || !camera.calibration ? goal.image_height : camera.calibration->intrinsics.height;
-  aim.error = pixel_aim::findBadGoal(goal, width, height);
+  int width = 0;
+  int height = 0;
+  pixelGoalImageSize(goal, camera, width, height);
+  aim.error = findBadPixelGoal(goal, width, height);
   if (!aim.ok())
   {
     return aim;

@@ -162,6 +162,12 @@ bool OnvifProtocol::bringUp(std::string& problem, onvif::Status& status)
     return false;
   }
   chooseVelocityTimeout(timeout_min, timeout_max);
+  option_spaces_ = onvif::Node();
+  const std::string unread_spaces = readOptionSpaces(message_.content, option_spaces_);
+  if (!unread_spaces.empty())
+  {
+    warnOnce("options", "GetConfigurationOptions answered " + unread_spaces + ": pixel goals are computed by the node");
+  }
   // Presets only say what the camera has: a camera that refuses GetPresets (ter:ActionNotSupported, as some do
   // although their node lists presets) has none, and starts all the same.
   device_presets_ = false;
@@ -196,6 +202,7 @@ bool OnvifProtocol::bringUp(std::string& problem, onvif::Status& status)
     return false;
   }
   plan(status);
+  planView();
   if (!pan_tilt_.absolute && !pan_tilt_.velocity && !zoom_.present)
   {
     problem = "PTZ node '" + node_.token +

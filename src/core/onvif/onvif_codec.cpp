@@ -281,6 +281,21 @@ std::string readTimeoutRange(const Element* response, double& min_s, double& max
   return {};
 }
 
+std::string readOptionSpaces(const Element* response, Node& spaces)
+{
+  const Element* listed = path(child(response, ns::PTZ, "PTZConfigurationOptions"), ns::SCHEMA, { "Spaces" });
+  Node read;
+  const std::string problem = readSpaces(listed, "RelativePanTiltTranslationSpace", true, read.relative_pan_tilt) +
+                              readSpaces(listed, "RelativeZoomTranslationSpace", false, read.relative_zoom);
+  if (!problem.empty())
+  {
+    return "PTZ configuration options: " + problem;
+  }
+  spaces.relative_pan_tilt = read.relative_pan_tilt;
+  spaces.relative_zoom = read.relative_zoom;
+  return {};
+}
+
 std::string readStatus(const Element* response, Status& status)
 {
   const Element* ptz_status = child(response, ns::PTZ, "PTZStatus");

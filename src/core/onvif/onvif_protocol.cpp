@@ -101,6 +101,9 @@ Capabilities OnvifProtocol::cameraCapabilities() const
   capabilities.relative_moves = !node_.relative_pan_tilt.empty() || !node_.relative_zoom.empty();
   capabilities.device_presets = device_presets_;
   capabilities.device_home = node_.home_supported;
+  capabilities.view_centre = view_.centre;
+  capabilities.view_box_zoom = view_.centre && view_.zoom != ViewPlan::Zoom::NONE;
+  capabilities.view_command = "ONVIF RelativeMove in TranslationSpaceFov";
   return capabilities;
 }
 

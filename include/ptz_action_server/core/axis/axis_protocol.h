@@ -87,6 +87,9 @@ enum class AxisZoomSource
  * most half the time left and half CtlQueuePollTime), asks again before a command when it does not hold it, drops it
  * at shutdown, and fails a command another client holds control for, naming its queue position and wait.
  *
+ * Pixel goals the node leaves to the camera (PtzBackend::aimInView()) are `center` and `areazoom`, declared
+ * (Capabilities::view_centre, view_box_zoom) when info=1 lists them.
+ *
  * 401, 403, 404, `Error:` bodies and malformed replies to limits or position, and an unreadable zoom table, fail the
  * start with the reason (later: the connection is dropped and set up again after the backoff); `info=1`, the
  * attributes and param.cgi only inform. A command answered with `Error:` or an HTTP error is a device fault with the
@@ -125,6 +128,9 @@ public:
   void stop() override;
   /// Focus and iris (vapix::lensArguments()), as a request of its own: a refusal is a lens fault, never the goal's.
   void lens(const LensCommand& command) override;
+  /// `center=X,Y` (a box: `areazoom=X,Y,Z`, Z = 100 x its magnification) with the picture's `imagewidth` and
+  /// `imageheight`: the camera centres that pixel of its picture with its own lens, whatever its zoom X is known as.
+  void aimInView(const ViewTarget& target) override;
   /// Drops PTZ control when it held it (control queue).
   void shutdown() override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;

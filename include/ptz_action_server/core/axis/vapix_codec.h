@@ -1,6 +1,7 @@
 /**
  * \file
- * \brief Axis VAPIX PTZ (protocols.md section 6): the ptz.cgi arguments the backend sends, the text/plain replies it
+ * \brief Axis VAPIX PTZ (protocols.md section 6): the ptz.cgi arguments the backend sends (moves, and `center` /
+ * `areazoom` on a point of the camera's picture), the text/plain replies it
  * reads (`key=value` lines, or an `Error:` body), the limits, what `info=1` offers, the zoom attributes, the product
  * number from param.cgi, and the zoom table from VAPIX zoom values to X-factors.
  *
@@ -208,6 +209,22 @@ void appendAbsoluteMove(std::string& out, double pan_deg, double tilt_deg, doubl
 /// `continuouspantiltmove=P,T&continuouszoommove=Z`, each -100..100 (positive right, up, in); zoom left out when
 /// \p with_zoom is false.
 void appendContinuousMove(std::string& out, int pan, int tilt, int zoom, bool with_zoom);
+
+/// A pixel of the client's picture, as `center` and `areazoom` take it: whole pixels from the picture's top-left
+/// corner (its centre is (width / 2, height / 2)), in a picture of `imagewidth` x `imageheight` (without them the
+/// camera takes its own default size, which is product-specific).
+struct ImagePoint
+{
+  int x = 0;
+  int y = 0;
+  int image_width = 0;
+  int image_height = 0;
+};
+/// `center=X,Y&imagewidth=W&imageheight=H`: the camera centres that point of its picture.
+void appendCenter(std::string& out, const ImagePoint& point);
+/// `areazoom=X,Y,Z&imagewidth=W&imageheight=H`: centres as `center` does and zooms by Z / 100 (Z at least 1): 300 to a
+/// third of the current field of view, 50 out to twice it.
+void appendAreaZoom(std::string& out, const ImagePoint& point, int zoom_percent);
 
 }  // namespace vapix
 }  // namespace ptz_action_server

@@ -50,6 +50,7 @@ public:
   void goTo(const AxisValues& position) override;
   void moveAtVelocity(const AxisValues& velocity) override;
   void stop() override;
+  void aimInView(const ViewTarget& target) override;
   PtzSample sample() const override
   {
     return session_->sample();

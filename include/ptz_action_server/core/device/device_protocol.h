@@ -63,6 +63,11 @@ public:
   {
     (void)command;
   }
+  /// A point of the device's own picture (PtzBackend::aimInView()), for protocols whose capabilities say they can.
+  virtual void aimInView(const ViewTarget& target)
+  {
+    (void)target;
+  }
   /// The device answers again after a loss: whatever it still does belongs to a goal that has ended. Keep it
   /// where it is (by default, stop()).
   virtual void hold()

@@ -7,6 +7,7 @@
  */
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "ptz_action_server/core/types.h"
@@ -42,6 +43,17 @@ struct GoalVerdict
   bool stop_device = false;   ///< the caller must stop the device (a velocity goal hit a limit)
 };
 
+/// Where a goal the device aimed itself (GoalCommand::view) ended, for its result (GoalHandle::ended()).
+struct ViewEnding
+{
+  AxisValues start{};                    ///< the device's position when the goal started
+  std::array<bool, AXIS_COUNT> asked{};  ///< the axes the goal asked the device to move
+
+  /// \p sample's position of each axis \p capabilities has reporting that moved or was not asked to; NaN for the
+  /// others: never reached on an axis that did not move or that the device does not report.
+  AxisValues at(const PtzSample& sample, const Capabilities& capabilities) const;
+};
+
 /// Watches one goal. Not thread-safe: one owner thread calls update().
 class GoalMonitor
 {
@@ -56,6 +68,17 @@ public:
   /// it); a lost link or a device fault aborts it. remaining is aim minus position; retarget() moves the aim.
   static GoalMonitor forTrack(const AxisValues& aim, const PtzSample& start, const Capabilities& capabilities,
                               const GoalMonitorConfig& config, TimePoint now);
+  /**
+   * \brief A goal the device aims itself, in its own picture (GoalCommand::view): its target is the device's to know.
+   *
+   * It succeeds once the device has moved and its reported pose has settled (at rest, and the same in two reports in a
+   * row), and says where it ended, which axes did not move, and which it does not report. Before the device has moved,
+   * a goal that \p asked some axis to move (a point away from the picture's centre, a box that zooms) aborts when it
+   * still rests stall_timeout after the start; one that asked none succeeds then. A device that reports no axis at all
+   * succeeds then too, saying so. The timeout allows every axis to cross its whole range; remaining is NaN (unknown).
+   */
+  static GoalMonitor forView(const PtzSample& start, const Capabilities& capabilities, const GoalMonitorConfig& config,
+                             TimePoint now, const std::array<bool, AXIS_COUNT>& asked);
   /// A cancelled goal whose device is being stopped: it ends once the device rests (or stop_timeout passes). Its
   /// final text names the position of the axes \p reported has present and reporting.
   static GoalMonitor forStop(const PtzSample& start, const GoalMonitorConfig& config, TimePoint now,
@@ -84,6 +107,7 @@ private:
     VELOCITY,
     STOP,
     TRACK,
+    VIEW,
   };
 
   GoalMonitor(Kind kind, const AxisValues& goal, const PtzSample& start, const Capabilities& capabilities,
@@ -92,6 +116,9 @@ private:
   GoalVerdict updatePosition(const PtzSample& sample, TimePoint now, GoalVerdict verdict);
   GoalVerdict updateVelocity(const PtzSample& sample, TimePoint now, GoalVerdict verdict);
   GoalVerdict updateStop(const PtzSample& sample, TimePoint now, GoalVerdict verdict);
+  GoalVerdict updateView(const PtzSample& sample, TimePoint now, GoalVerdict verdict);
+  /// Where a view goal ended: the position of the axes it reports, and what did not move or cannot be seen.
+  std::string describeViewEnd(const PtzSample& sample) const;
   /// Marks progress on moving axes; returns the axis that has not moved for stall_timeout, or AXIS_COUNT.
   std::size_t findStalledAxis(const PtzSample& sample, TimePoint now, const std::array<bool, AXIS_COUNT>& must_move);
   std::string describePosition(const PtzSample& sample) const;
@@ -105,6 +132,11 @@ private:
   double timeout_ = 0.0;
   std::uint64_t start_fault_count_ = 0;
   std::uint64_t start_link_losses_ = 0;
+  AxisValues start_position_{};                           ///< where the device was at the start
+  bool must_move_ = false;                                ///< a view goal that needs the device to move
+  bool view_moved_ = false;                               ///< a view goal's device was seen to move
+  AxisValues view_last_{};                                ///< a view goal's previous reported position
+  TimePoint view_last_stamp_{};                           ///< ... and its stamp
   AxisValues last_moved_position_{};                      ///< position where each axis was last seen moving
   std::array<TimePoint, AXIS_COUNT> last_moved_at_{};     ///< on the monitor's clock
   std::array<TimePoint, AXIS_COUNT> last_moved_stamp_{};  ///< the device's report (PtzSample::stamp) of that moment

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -33,6 +34,9 @@ struct GoalCommand
   /// A goal that follows a moving target: values is the first aim (positions, clamped into the limits rather than
   /// rejected); steer() then moves the device and the aim until the goal is cancelled, preempted or aborted.
   bool track = false;
+  /// The device aims in its own picture (PtzBackend::aimInView()): values mean nothing, the device alone knows where it
+  /// goes, and the goal is judged on what it reports (GoalMonitor::forView()).
+  std::optional<ViewTarget> view;
   AxisValues values{};
   /// What the conversion left out of the goal ("zoom offset 2.0000 X ignored: ..."): goes into the goal's texts
   /// with the validation's notes.
@@ -84,6 +88,12 @@ public:
   virtual void abort(const std::string& text) = 0;
   /// Ends the goal PREEMPTED: replaced by a new goal, or cancelled.
   virtual void preempt(const std::string& text) = 0;
+  /// A goal the device aimed itself (GoalCommand::view): where it \p position ended (NaN: an axis it does not report),
+  /// told just before the goal ends. By default nothing.
+  virtual void ended(const AxisValues& position)
+  {
+    (void)position;
+  }
 };
 
 /**
@@ -109,9 +119,9 @@ public:
 
   /**
    * \brief Rejects \p goal if the link was down in \p current (the backend's sample \p converted was converted
-   * against), else with the conversion's rejection, or when the limits refuse its command; otherwise preempts the
-   * active goal, accepts \p goal, commands the device and judges the goal at once on a fresh sample (a goal the
-   * device already satisfies ends here).
+   * against), else with the conversion's rejection, or when the limits refuse its command (a view command on a device
+   * that cannot aim in its picture); otherwise preempts the active goal, accepts \p goal, commands the device and
+   * judges the goal at once on a fresh sample (a goal the device already satisfies ends here).
    */
   void submit(std::unique_ptr<GoalHandle> goal, const PtzSample& current, const ConvertedGoal& converted);
 
@@ -160,6 +170,10 @@ private:
   std::string withNote(const std::string& text) const;
   /// supervise() for a sample known to belong to the active goal, judged as at \p taken_at.
   void judge(const PtzSample& sample, bool publish_feedback, TimePoint taken_at);
+  /// The axes \p view asks the device to move: pan, tilt for a point away from the picture's centre, zoom for a box.
+  std::array<bool, AXIS_COUNT> askedAxes(const ViewTarget& view) const;
+  /// For a view goal, tells it where the device ended in \p sample (GoalHandle::ended()); nothing for other goals.
+  void tellEnd(const PtzSample& sample);
   void finish();
 
   const std::shared_ptr<PtzBackend> backend_;
@@ -173,6 +187,8 @@ private:
   std::string note_;  ///< what validation changed in the active goal (clamping, a zoom ignored), empty if nothing
   std::unique_ptr<GoalMonitor> monitor_;
   bool stopping_ = false;  ///< the active goal was cancelled and waits for the device to rest
+  /// Set while the active goal is a GoalCommand::view.
+  std::optional<ViewEnding> view_ending_;
 
   std::atomic<GoalMode> mode_{ GoalMode::IDLE };
   /// Changes with each goal, and when a cancel starts the stop, after the sample its monitor starts from.

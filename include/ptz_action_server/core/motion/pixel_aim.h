@@ -79,6 +79,13 @@ struct PixelAim
   }
 };
 
+/// The size of the image \p goal's pixel belongs to: the goal's, or where it gives none the calibration's (0 without).
+void pixelGoalImageSize(const PixelGoal& goal, const PixelCamera& camera, int& width, int& height);
+
+/// What \p goal cannot be on a \p width x \p height image (a size that is not positive, a pixel off the image, a box
+/// with a side that is not positive, a negative distance), or "".
+std::string findBadPixelGoal(const PixelGoal& goal, int width, int height);
+
 /**
  * \brief The intrinsics of a \p width x \p height image taken at \p zoom: from the calibration (K rescaled from its
  * zoom to \p zoom and from its size to the image's) or from the field of view at \p zoom.

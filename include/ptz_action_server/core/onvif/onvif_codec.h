@@ -26,6 +26,12 @@ constexpr const char* GENERIC_PAN_TILT_TRANSLATION = "http://www.onvif.org/ver10
 constexpr const char* DEGREE_TRANSLATION = "http://www.onvif.org/ver10/tptz/PanTiltSpaces/"
                                            "SphericalTranslationSpaceDegrees";
 constexpr const char* GENERIC_ZOOM_TRANSLATION = "http://www.onvif.org/ver10/tptz/ZoomSpaces/TranslationGenericSpace";
+/// The PTZ specification's annex "Additional PTZ spaces": a translation in the current field of view, origin at the
+/// picture's centre, (1, 1) its upper right corner; what clients such as Frigate centre a point of the picture with.
+constexpr const char* FOV_PAN_TILT_TRANSLATION = "http://www.onvif.org/ver10/tptz/PanTiltSpaces/TranslationSpaceFov";
+/// Its zoom counterpart (PTZ specification 25.12): the magnification relative to the current view (2: half the field
+/// of view; range 0..INF, below 1 zooms out).
+constexpr const char* FOV_ZOOM_TRANSLATION = "http://www.onvif.org/ver10/tptz/ZoomSpaces/TranslationSpaceFov";
 constexpr const char* GENERIC_PAN_TILT_SPEED = "http://www.onvif.org/ver10/tptz/PanTiltSpaces/GenericSpeedSpace";
 constexpr const char* GENERIC_ZOOM_SPEED = "http://www.onvif.org/ver10/tptz/ZoomSpaces/ZoomGenericSpeedSpace";
 constexpr const char* SOAP_CONTENT_TYPE = "application/soap+xml; charset=utf-8";
@@ -193,6 +199,9 @@ std::string readProfiles(const Element* response, const std::string& wanted, Pro
 std::string readNode(const Element* response, const std::string& token, Node& node);
 /// The PTZTimeout range of GetConfigurationOptions (s); leaves \p min_s, \p max_s if absent.
 std::string readTimeoutRange(const Element* response, double& min_s, double& max_s);
+/// The translation spaces GetConfigurationOptions' Spaces list (where the TranslationSpaceFov is advertised), into
+/// \p spaces' relative_pan_tilt and relative_zoom; the rest of \p spaces is left as it is.
+std::string readOptionSpaces(const Element* response, Node& spaces);
 std::string readStatus(const Element* response, Status& status);
 std::string readPresets(const Element* response, std::vector<Preset>& presets);
 /// The PresetToken of a SetPresetResponse.

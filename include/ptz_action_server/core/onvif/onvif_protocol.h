@@ -81,6 +81,10 @@ struct OnvifCounters
  *   range. A listed range the camera's own status contradicts is wrong: the status wins, told once (warn +
  * diagnostics).
  *
+ * A camera whose PTZ configuration options (GetConfigurationOptions' Spaces) list the pan-tilt TranslationSpaceFov
+ * centres points of its picture itself (aimInView(), Capabilities::view_centre): RelativeMove in that space, with a
+ * box's zoom where they list the zoom's TranslationSpaceFov or, with a generic zoom, its TranslationGenericSpace.
+ *
  * Goals are AbsoluteMove (without the PanTilt when pan and tilt rest where the goal puts them: a zoom-only move);
  * velocity goals ContinuousMove (re-sent before its timeout, which lies in the camera's PTZTimeout range), cancel Stop,
  * state GetStatus at the poll period (a camera without a position in it is kept alive by its answers). A SOAP fault to
@@ -116,6 +120,10 @@ public:
   void goTo(const AxisValues& position) override;
   void moveAtVelocity(const AxisValues& velocity) override;
   void stop() override;
+  /// RelativeMove with the pan-tilt in TranslationSpaceFov (x = 2 X - 1, y = 1 - 2 Y of the picture's shares) and, for
+  /// a box, the zoom by its magnification: in the zoom's TranslationSpaceFov where the options list it, else in the
+  /// generic translation space by the zoom law (X = zoom_max ^ z).
+  void aimInView(const ViewTarget& target) override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 
   const OnvifCounters& counters() const
@@ -148,6 +156,20 @@ private:
     bool feedback = false;
     std::string limitation;
   };
+  /// How a point of the camera's picture is centred (PtzBackend::aimInView()), as the node's spaces allow.
+  struct ViewPlan
+  {
+    bool centre = false;  ///< the configuration options list the pan-tilt TranslationSpaceFov
+    onvif::Range x, y;    ///< its ranges
+    enum class Zoom
+    {
+      NONE,     ///< a box is only centred
+      FOV,      ///< the zoom's TranslationSpaceFov: the magnification itself
+      GENERIC,  ///< the generic zoom translation, by the zoom law
+    };
+    Zoom zoom = Zoom::NONE;
+    onvif::Range z;  ///< the zoom space's range
+  };
   /// What diagnostics() shows of the bring-up (guarded by report_mutex_: diagnostics() runs on any thread).
   struct Report
   {
@@ -176,6 +198,8 @@ private:
   bool bringUp(std::string& problem, onvif::Status& status);
   /// Decides the plans from the node, the profile and the first status.
   void plan(const onvif::Status& status);
+  /// Decides view_ from the translation spaces the configuration options list (onvif_view_aim.cpp).
+  void planView();
   /// "" or why \p status cannot be read (a position in a space this backend cannot convert that it reported before).
   std::string readState(const onvif::Status& status, AxisValues& position);
   /// Tells once of each listed range \p status contradicts, and widens the range in use.
@@ -201,6 +225,8 @@ private:
   onvif::Node node_;
   PanTiltPlan pan_tilt_;
   ZoomPlan zoom_;
+  ViewPlan view_;
+  onvif::Node option_spaces_;  ///< the translation spaces GetConfigurationOptions lists
   bool device_presets_ = false;
   /// The camera answered AbsoluteMove with ter:ActionNotSupported although it lists position spaces: taken as
   /// continuous-only from then on (kept across reconnections).
