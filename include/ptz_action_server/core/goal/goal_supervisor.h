@@ -8,6 +8,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -137,6 +138,14 @@ public:
   /// Stops the device and aborts the active goal with \p reason.
   void shutdown(const std::string& reason);
 
+  /// Tells \p listener of each goal it accepts (after its command, before it is first judged) and, with null, each
+  /// time no goal is active any more (a goal ended without another taking its place). On the supervisor's thread;
+  /// the listener must not call the supervisor back (the tours queue what they do next).
+  void setActivityListener(std::function<void(const GoalHandle*)> listener)
+  {
+    activity_listener_ = std::move(listener);
+  }
+
   /// The backend's latest sample, tagged with the goal it belongs to. Any thread (the state thread calls it).
   GoalSample sample() const;
 
@@ -160,7 +169,8 @@ private:
   std::string withNote(const std::string& text) const;
   /// supervise() for a sample known to belong to the active goal, judged as at \p taken_at.
   void judge(const PtzSample& sample, bool publish_feedback, TimePoint taken_at);
-  void finish();
+  /// Ends the active goal's supervision; tells the activity listener the supervisor is idle unless \p replaced.
+  void finish(bool replaced = false);
 
   const std::shared_ptr<PtzBackend> backend_;
   const Capabilities limits_;
@@ -173,6 +183,7 @@ private:
   std::string note_;  ///< what validation changed in the active goal (clamping, a zoom ignored), empty if nothing
   std::unique_ptr<GoalMonitor> monitor_;
   bool stopping_ = false;  ///< the active goal was cancelled and waits for the device to rest
+  std::function<void(const GoalHandle*)> activity_listener_;  ///< see setActivityListener()
 
   std::atomic<GoalMode> mode_{ GoalMode::IDLE };
   /// Changes with each goal, and when a cancel starts the stop, after the sample its monitor starts from.
