@@ -71,6 +71,10 @@ TourOrder TourRunner::operatorGoal(const std::string& action)
   operator_active_ = true;
   idle_since_ = TimePoint::max();
   idle_return_done_ = false;
+  if (phase_ == TourPhase::NONE || phase_ == TourPhase::PAUSED)
+  {
+    return {};
+  }
   const std::string text = "preempted at " + describeStop() + " by a new " + action + " goal";
   switch (phase_)
   {
