@@ -37,6 +37,7 @@ NodeConfig NodeConfig::load(const ParamReader& params)
   config.field_of_view = FieldOfViewSettings::load(params);
   config.presets = PresetConfig::load(params);
   config.lens = LensInterfaceConfig::load(params);
+  config.tours = TourConfig::load(params, config.presets.file);
   config.look_at_clicked_point = LookAtClickedPointConfig::load(params);
   config.pixel = PixelConfig::load(params, config.field_of_view.model);
   config.node_name = params.nodeHandle().getNamespace();

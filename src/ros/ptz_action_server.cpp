@@ -48,6 +48,10 @@ PtzActionServer::~PtzActionServer()
     listener_target_->server = nullptr;
   }
   node_handle_.getCallbackQueue()->removeByID(reinterpret_cast<uint64_t>(this));
+  if (tours_)
+  {
+    tours_->shutdown("the node is shutting down");
+  }
   if (supervisor_)
   {
     supervisor_->shutdown("the node is shutting down");
@@ -112,6 +116,10 @@ void PtzActionServer::start()
 
   presets_ = std::make_unique<PresetServices>(node_handle_, config_.presets, limits_, backend_);
   lens_ = std::make_unique<LensInterface>(node_handle_, backend_, limits_.lens, backend_->name(), config_.lens);
+  tour_services_ = std::make_unique<TourServices>(node_handle_, config_.tours.file, *presets_);
+  tours_ = std::make_unique<TourGoals>(node_handle_, config_.tours.settings, *supervisor_, backend_, *presets_,
+                                       *tour_services_, statusPoster(),
+                                       [this](const std::function<void()>& changes) { servers_.batch(changes); });
   frame_listener_ = std::make_unique<FrameListener>(node_handle_, config_.frame_listen_time, config_.frame_wait);
   frame_hold_ = std::make_unique<FrameGoalHold>(node_handle_, *frame_listener_, kinematics_.baseFrame());
   PixelGoals::CalibrationSource calibration;
@@ -254,6 +262,18 @@ void PtzActionServer::onCancel(actionlib::ServerGoalHandle<Action> handle, Actio
   {
     supervisor_->cancel(actionName(kind), handle.getGoalID().id);
   }
+}
+
+void PtzActionServer::onGoal(actionlib::ServerGoalHandle<PtzTourAction> handle, ActionKind kind)
+{
+  status_hold_.goalArrived(clock_.now());
+  frame_hold_->supersede(kind);
+  tours_->onGoal(handle);
+}
+
+void PtzActionServer::onCancel(actionlib::ServerGoalHandle<PtzTourAction> handle, ActionKind)
+{
+  tours_->onCancel(handle);
 }
 
 void PtzActionServer::lookAt(const geometry_msgs::PointStamped& point)

@@ -19,6 +19,7 @@ enum class ActionKind
   PRESET,
   PIXEL,
   TRACK_DETECTIONS,
+  TOUR,
   CLICKED_POINT,  ///< not an action: a point on the clicked point topic (LookAtClickedPoint)
   IMAGE_CLICK,    ///< not an action: a click on <image_topic>_mouse_left (ImageClicks)
 };

@@ -21,6 +21,7 @@
 #include "ptz_action_server/PtzPresetAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
 #include "ptz_action_server/PtzTrackDetectionsAction.h"
+#include "ptz_action_server/PtzTourAction.h"
 #include "ptz_action_server/ros/action_kind.h"
 #include "ptz_action_server/ros/node_action_server.h"
 
@@ -53,6 +54,7 @@ inline constexpr std::tuple NODE_ACTIONS{
   ActionRow<PtzPresetAction>{ ActionKind::PRESET, "preset" },
   ActionRow<PtzPixelAction>{ ActionKind::PIXEL, "pixel" },
   ActionRow<PtzTrackDetectionsAction>{ ActionKind::TRACK_DETECTIONS, "track_detections" },
+  ActionRow<PtzTourAction>{ ActionKind::TOUR, "tour" },  // TourGoals: its moves are goals of their own
 };
 
 /// How many actions the node serves.

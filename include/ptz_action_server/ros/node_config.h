@@ -16,6 +16,7 @@
 #include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/pixel_goals.h"
 #include "ptz_action_server/ros/preset_services.h"
+#include "ptz_action_server/ros/tour_services.h"
 #include "ptz_action_server/ros/view_config.h"
 
 namespace ptz_action_server
@@ -40,6 +41,7 @@ struct NodeConfig
   FieldOfViewSettings field_of_view;
   PresetConfig presets;                            ///< the presets file and home
   LensInterfaceConfig lens;                        ///< the focus and iris topics
+  TourConfig tours;                                ///< the tours file, resuming tours, the idle return
   LookAtClickedPointConfig look_at_clicked_point;  ///< "look here" from rviz
   PixelConfig pixel;                               ///< aiming at pixels: the picture's lens, clicks on it
   /// The node's private namespace (/left/ptz_action_server): its name in the diagnostics, as a process or a nodelet.
@@ -50,7 +52,7 @@ struct NodeConfig
   /// ~status_list_timeout, ~frame_listen_time, ~frame_wait, ~track/rate, ~track/gain, ~track/feed_forward,
   /// ~track_timeout, ~track/lost_timeout, ~track/pose_history, ~status_hold, ~mount, ~pan_offset, ~field_of_view/*,
   /// ~camera_info_topic, ~camera_info_zoom, ~look_at_clicked_point, ~clicked_point_topic, ~image_upside_down,
-  /// ~image_topic and the presets' (see PresetConfig::load).
+  /// ~image_topic, the presets' (see PresetConfig::load) and the tours' (TourConfig::load).
   static NodeConfig load(const ParamReader& params);
 };
 

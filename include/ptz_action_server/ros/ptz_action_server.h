@@ -34,6 +34,8 @@
 #include "ptz_action_server/ros/preset_services.h"
 #include "ptz_action_server/ros/queue_timer.h"
 #include "ptz_action_server/ros/tick_costs.h"
+#include "ptz_action_server/ros/tour_goals.h"
+#include "ptz_action_server/ros/tour_services.h"
 
 namespace ptz_action_server
 {
@@ -98,6 +100,9 @@ private:
   void onGoal(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
   template <class Action>
   void onCancel(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
+  /// A tour goal goes to TourGoals, whose moves are goals of their own.
+  void onGoal(actionlib::ServerGoalHandle<PtzTourAction> handle, ActionKind kind);
+  void onCancel(actionlib::ServerGoalHandle<PtzTourAction> handle, ActionKind kind);
   /// Converts a goal against the device's current state and hands it to the supervisor, which checks and runs it.
   template <class Action>
   void submit(actionlib::ServerGoalHandle<Action> handle, ActionKind kind);
@@ -162,6 +167,8 @@ private:
   std::string local_image_topic_;                              ///< its image topic, resolved
   std::unique_ptr<ImageClicks> image_clicks_;                  ///< with ~image_topic only; built by start()
   std::uint64_t image_clicks_count_ = 0;                       ///< clicks on the image so far, for their ids
+  std::unique_ptr<TourServices> tour_services_;                ///< the tour services; built by start()
+  std::unique_ptr<TourGoals> tours_;  ///< tour goals and the idle return; built by start(), destroyed first
 };
 
 }  // namespace ptz_action_server

@@ -77,7 +77,7 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
     // Retarget from where the device is: no stop in between.
     tellEnd(backend_->sample());
     active_goal_->preempt(withNote("preempted by a new " + goal->action() + " goal"));
-    finish();
+    finish(true);
   }
   goal->accept(note);
   const PtzSample start = backend_->sample();
@@ -130,6 +130,10 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   active_goal_ = std::move(goal);
   note_ = note;
   mode_ = command.velocity ? GoalMode::VELOCITY : GoalMode::POSITION;
+  if (activity_listener_)
+  {
+    activity_listener_(active_goal_.get());
+  }
   // A goal the device already satisfies (zero length, or a stop while at rest) ends here, not a tick later.
   judge(backend_->sample(), true, clock_->now());
 }
@@ -293,7 +297,7 @@ std::string GoalSupervisor::withNote(const std::string& text) const
   return note_.empty() ? text : text + " (" + note_ + ")";
 }
 
-void GoalSupervisor::finish()
+void GoalSupervisor::finish(bool replaced)
 {
   active_goal_.reset();
   note_.clear();
@@ -301,6 +305,10 @@ void GoalSupervisor::finish()
   stopping_ = false;
   view_ending_.reset();
   mode_ = GoalMode::IDLE;
+  if (activity_listener_ && !replaced)
+  {
+    activity_listener_(nullptr);
+  }
 }
 
 }  // namespace ptz_action_server

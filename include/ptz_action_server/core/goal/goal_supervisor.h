@@ -8,6 +8,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -147,6 +148,14 @@ public:
   /// Stops the device and aborts the active goal with \p reason.
   void shutdown(const std::string& reason);
 
+  /// Tells \p listener of each goal it accepts (after its command, before it is first judged) and, with null, each
+  /// time no goal is active any more (a goal ended without another taking its place). On the supervisor's thread;
+  /// the listener must not call the supervisor back (the tours queue what they do next).
+  void setActivityListener(std::function<void(const GoalHandle*)> listener)
+  {
+    activity_listener_ = std::move(listener);
+  }
+
   /// The backend's latest sample, tagged with the goal it belongs to. Any thread (the state thread calls it).
   GoalSample sample() const;
 
@@ -174,7 +183,8 @@ private:
   std::array<bool, AXIS_COUNT> askedAxes(const ViewTarget& view) const;
   /// For a view goal, tells it where the device ended in \p sample (GoalHandle::ended()); nothing for other goals.
   void tellEnd(const PtzSample& sample);
-  void finish();
+  /// Ends the active goal's supervision; tells the activity listener the supervisor is idle unless \p replaced.
+  void finish(bool replaced = false);
 
   const std::shared_ptr<PtzBackend> backend_;
   const Capabilities limits_;
@@ -189,6 +199,7 @@ private:
   bool stopping_ = false;  ///< the active goal was cancelled and waits for the device to rest
   /// Set while the active goal is a GoalCommand::view.
   std::optional<ViewEnding> view_ending_;
+  std::function<void(const GoalHandle*)> activity_listener_;  ///< see setActivityListener()
 
   std::atomic<GoalMode> mode_{ GoalMode::IDLE };
   /// Changes with each goal, and when a cancel starts the stop, after the sample its monitor starts from.
