@@ -105,11 +105,14 @@ protected:
   TimePoint last_up_at_{};
 };
 
-/// A position goal the node's supervisor runs on the backend, to its end.
-inline std::string runGoalToItsEnd(PtzBackend& backend, const AxisValues& target, double stall_timeout)
+/// A position goal the node's supervisor runs on the backend, to its end; \p extra_margin s added to the goal timeout's
+/// margin (goal_timeout_margin), as a user of a slow device sets it.
+inline std::string runGoalToItsEnd(PtzBackend& backend, const AxisValues& target, double stall_timeout,
+                                   double extra_margin = 0.0)
 {
   GoalMonitorConfig config;
   config.stall_timeout = stall_timeout;
+  config.timeout_margin += extra_margin;
   return goal_supervisor_test::runGoalToItsEnd(
       std::shared_ptr<PtzBackend>(&backend, [](PtzBackend*) {}),
       goal_supervisor_test::positionGoal(target[PAN], target[TILT], target[ZOOM]), config, WAIT);
