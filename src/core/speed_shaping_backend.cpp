@@ -4,17 +4,14 @@
 #include <chrono>
 #include <cmath>
 
+#include "ptz_action_server/core/units.h"
+
 namespace ptz_action_server
 {
 namespace
 {
 /// Acceleration assumed for the plan when a device states none (it then reaches each target at once).
 constexpr double UNKNOWN_ACCELERATION = 1e3;
-
-TimerThread::Clock::duration toDuration(double seconds)
-{
-  return std::chrono::duration_cast<TimerThread::Clock::duration>(std::chrono::duration<double>(seconds));
-}
 }  // namespace
 
 SpeedShapingBackend::SpeedShapingBackend(std::shared_ptr<PtzBackend> inner, double period)
@@ -35,9 +32,19 @@ SpeedShapingBackend::~SpeedShapingBackend()
 Capabilities SpeedShapingBackend::capabilities() const
 {
   Capabilities capabilities = inner().capabilities();
-  if (!capabilities.speed.appliedByBackend())
+  const bool applied = capabilities.speed.appliedByBackend();
+  for (Axis axis : ALL_AXES)
   {
-    for (Axis axis : ALL_AXES)
+    SpeedControl& control = capabilities.speed.control[axis];
+    if (control != SpeedControl::NODE)
+    {
+      continue;
+    }
+    if (applied)
+    {
+      control = SpeedControl::OWN;  // the backend's own move carries the other axes' speeds: this one is not shaped
+    }
+    else
     {
       double& slowest = capabilities.speed.min_speed[axis];
       slowest = std::max(slowest, MIN_SHAPED_SHARE * capabilities.axes[axis].max_speed);

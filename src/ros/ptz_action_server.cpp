@@ -40,6 +40,8 @@ PtzActionServer::~PtzActionServer()
   // this object.
   state_publisher_.reset();
   status_release_timer_.stop();
+  velocity_topic_.reset();
+  controls_.reset();
   if (listener_target_)
   {
     std::lock_guard<std::mutex> lock(listener_target_->mutex);
@@ -117,6 +119,17 @@ void PtzActionServer::start()
   frame_tracking_ = std::make_unique<FrameTracking>(node_handle_, kinematics_, limits_, config_.track, *supervisor_,
                                                     *frame_listener_, *backend_);
 
+  controls_ = std::make_unique<OperatorControls>(node_handle_, config_.node_name, backend_->name(), limits_,
+                                                 *supervisor_);
+  if (config_.cmd_velocity.enabled)
+  {
+    velocity_topic_ = std::make_unique<VelocityTopic>(
+        node_handle_, config_.cmd_velocity, *supervisor_, [this](const PtzGoal& velocity, PtzSample& current) {
+          frame_hold_->supersede(ActionKind::VELOCITY);
+          current = backend_->sample();
+          return translator_->convert(velocity, ActionKind::VELOCITY, current);
+        });
+  }
   servers_.start([this](auto handle, ActionKind kind) { onGoal(handle, kind); },
                  [this](auto handle, ActionKind kind) { onCancel(handle, kind); });
   look_at_clicked_point_ = std::make_unique<LookAtClickedPoint>(

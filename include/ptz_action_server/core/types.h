@@ -161,6 +161,9 @@ enum class SpeedControl : std::uint8_t
   /// The node steers the axis on speed commands (ClosedLoopBackend, a device that only moves at a speed) and caps
   /// them at the speed.
   STEERED = 2,
+  /// The axis moves at its own speed whatever the goal asks (its device takes a speed on other axes only, and the
+  /// node does not stream one axis beside the device's own move).
+  OWN = 3,
 };
 
 /// The speed of position goals, per axis: who applies it and the slowest speed there is. The top speed is each
@@ -177,7 +180,7 @@ struct MoveSpeedCapability
   {
     for (SpeedControl axis : control)
     {
-      if (axis != SpeedControl::NODE)
+      if (axis == SpeedControl::DEVICE || axis == SpeedControl::STEERED)
       {
         return true;
       }

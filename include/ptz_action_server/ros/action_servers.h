@@ -20,6 +20,7 @@
 #include "ptz_action_server/PtzPixelAction.h"
 #include "ptz_action_server/PtzPresetAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
+#include "ptz_action_server/PtzSpeedAction.h"
 #include "ptz_action_server/ros/action_kind.h"
 #include "ptz_action_server/ros/node_action_server.h"
 
@@ -50,6 +51,7 @@ inline constexpr std::tuple NODE_ACTIONS{
   ActionRow<PtzFrameAction>{ ActionKind::TRACK_FRAME, "track_frame" },
   ActionRow<PtzPresetAction>{ ActionKind::PRESET, "preset" },
   ActionRow<PtzPixelAction>{ ActionKind::PIXEL, "pixel" },
+  ActionRow<PtzSpeedAction>{ ActionKind::POSITION_ABS_SPEED, "position_abs_speed" },
 };
 
 /// How many actions the node serves.

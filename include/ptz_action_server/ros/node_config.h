@@ -11,6 +11,7 @@
 #include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/core/mounted_backend.h"
 #include "ptz_action_server/ros/look_at_clicked_point.h"
+#include "ptz_action_server/ros/velocity_topic.h"
 #include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/pixel_goals.h"
 #include "ptz_action_server/ros/preset_services.h"
@@ -38,6 +39,7 @@ struct NodeConfig
   PresetConfig presets;                            ///< the presets file and home
   LookAtClickedPointConfig look_at_clicked_point;  ///< "look here" from rviz
   PixelConfig pixel;                               ///< aiming at pixels: the picture's lens, clicks on it
+  VelocityTopicConfig cmd_velocity;                ///< the cmd/velocity stream
   /// The node's private namespace (/left/ptz_action_server): its name in the diagnostics, as a process or a nodelet.
   std::string node_name;
 
@@ -45,8 +47,8 @@ struct NodeConfig
   /// ~goal_timeout, ~goal_timeout_scale, ~goal_timeout_margin, ~stop_timeout, ~action_queue_size,
   /// ~status_list_timeout, ~frame_listen_time, ~frame_wait, ~track/rate, ~track/gain, ~track/feed_forward,
   /// ~track_timeout, ~status_hold, ~mount, ~pan_offset, ~field_of_view/*, ~camera_info_topic, ~camera_info_zoom,
-  /// ~look_at_clicked_point, ~clicked_point_topic, ~image_upside_down, ~image_topic and the presets' (see
-  /// PresetConfig::load).
+  /// ~look_at_clicked_point, ~clicked_point_topic, ~image_upside_down, ~image_topic, ~cmd_velocity/* and the presets'
+  /// (see PresetConfig::load).
   static NodeConfig load(const ParamReader& params);
 };
 

@@ -27,6 +27,7 @@
 #include "ptz_action_server/ros/image_clicks.h"
 #include "ptz_action_server/ros/look_at_clicked_point.h"
 #include "ptz_action_server/ros/node_config.h"
+#include "ptz_action_server/ros/operator_controls.h"
 #include "ptz_action_server/ros/pixel_goals.h"
 #include "ptz_action_server/ros/pose_recorder.h"
 #include "ptz_action_server/ros/preset_services.h"
@@ -158,6 +159,8 @@ private:
   std::string local_image_topic_;                              ///< its image topic, resolved
   std::unique_ptr<ImageClicks> image_clicks_;                  ///< with ~image_topic only; built by start()
   std::uint64_t image_clicks_count_ = 0;                       ///< clicks on the image so far, for their ids
+  std::unique_ptr<OperatorControls> controls_;                 ///< ~default_speed and `controls`; built by start()
+  std::unique_ptr<VelocityTopic> velocity_topic_;              ///< cmd/velocity; built by start()
 };
 
 }  // namespace ptz_action_server

@@ -8,7 +8,7 @@ namespace ptz_action_server
 {
 namespace
 {
-void addNote(std::string& notes, const std::string& note)
+void addSpeedNote(std::string& notes, const std::string& note)
 {
   notes += (notes.empty() ? "" : "; ") + note;
 }
@@ -51,15 +51,15 @@ ResolvedSpeed resolveSpeed(const SpeedRequest& request, double default_fraction,
   double fraction = request.fraction > 0.0 ? request.fraction : default_fraction;
   if (fraction > 1.0)
   {
-    addNote(resolved.message, formatText("speed %g taken as 1 (the top speed)", fraction));
+    addSpeedNote(resolved.message, formatText("speed %g taken as 1 (the top speed)", fraction));
     fraction = 1.0;
   }
   for (Axis axis : ALL_AXES)
   {
     const AxisCapability& capability = limits.axes[axis];
-    if (!capability.present || !(capability.max_speed > 0.0))
+    if (!capability.present || !(capability.max_speed > 0.0) || limits.speed.control[axis] == SpeedControl::OWN)
     {
-      continue;  // nothing moves there, at any speed
+      continue;  // nothing moves there at any speed, or only at the device's own
     }
     const bool rate_given = request.rate[axis] > 0.0;
     double speed = rate_given ? request.rate[axis] : fraction * capability.max_speed;
@@ -67,7 +67,7 @@ ResolvedSpeed resolveSpeed(const SpeedRequest& request, double default_fraction,
     {
       if (rate_given && speed > capability.max_speed)
       {
-        addNote(resolved.message, formatText("%s speed %.4g %s clamped to the device's top speed %.4g %s",
+        addSpeedNote(resolved.message, formatText("%s speed %.4g %s clamped to the device's top speed %.4g %s",
                                              axisName(axis), speed, speedUnit(axis), capability.max_speed,
                                              speedUnit(axis)));
       }
@@ -75,7 +75,7 @@ ResolvedSpeed resolveSpeed(const SpeedRequest& request, double default_fraction,
     }
     else if (speed < limits.speed.min_speed[axis])
     {
-      addNote(resolved.message, formatText("%s speed %.4g %s raised to the device's slowest %.4g %s", axisName(axis),
+      addSpeedNote(resolved.message, formatText("%s speed %.4g %s raised to the device's slowest %.4g %s", axisName(axis),
                                            speed, speedUnit(axis), limits.speed.min_speed[axis], speedUnit(axis)));
       speed = limits.speed.min_speed[axis];
     }
