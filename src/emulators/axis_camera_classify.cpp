@@ -9,7 +9,9 @@ namespace ptz_action_server
 std::vector<ClassifiedCommand> AxisCameraEmulator::classify() const
 {
   using Kind = ClassifiedCommand::Kind;
-  return server_->received().classified([](const HttpExchange& exchange) -> std::optional<ClassifiedCommand> {
+  const double pan_max_speed = config_.device.axes[PAN].motion.max_speed;  // at speed=100
+  return server_->received().classified([pan_max_speed](const HttpExchange& exchange)
+                                            -> std::optional<ClassifiedCommand> {
     if (exchange.status == 401)
     {
       return std::nullopt;  // challenged, not carried out: the same request follows with its credentials
@@ -29,6 +31,11 @@ std::vector<ClassifiedCommand> AxisCameraEmulator::classify() const
       command.kind = Kind::MOVE;
       command.aims = true;
       command.pan = toRadians(std::stod(target.substr(target.find("&pan=") + 5)));
+      const std::size_t speed = target.find("&speed=");
+      if (speed != std::string::npos)
+      {
+        command.pan_speed = pan_max_speed * std::stod(target.substr(speed + 7)) / 100.0;
+      }
     }
     else if (target.find("continuouspantiltmove=") != std::string::npos ||
              target.find("continuouszoommove=") != std::string::npos)

@@ -64,6 +64,7 @@ Capabilities AxisProtocol::cameraCapabilities(const vapix::Limits& limits, const
       listed && (commands.offers("query", "presetposall") || commands.offers("query", "presetposcam") ||
                  commands.has("gotoserverpresetno"));
   capabilities.device_home = listed && commands.offers("move", "home");
+  capabilities.speed = moveSpeed();
 
   AxisCapability& zoom = capabilities.axes[ZOOM];
   if (zoom_source_ == AxisZoomSource::NO_ZOOM)
