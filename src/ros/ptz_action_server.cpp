@@ -119,8 +119,8 @@ void PtzActionServer::start()
   frame_tracking_ = std::make_unique<FrameTracking>(node_handle_, kinematics_, limits_, config_.track, *supervisor_,
                                                     *frame_listener_, *backend_);
 
-  controls_ = std::make_unique<OperatorControls>(node_handle_, config_.node_name, backend_->name(), limits_,
-                                                 *supervisor_);
+  controls_ =
+      std::make_unique<OperatorControls>(node_handle_, config_.node_name, backend_->name(), limits_, *supervisor_);
   if (config_.cmd_velocity.enabled)
   {
     velocity_topic_ = std::make_unique<VelocityTopic>(

@@ -41,24 +41,24 @@ public:
   }
   void succeed(const std::string&) override
   {
-    ended(false);
+    ended();  // at a limit
   }
   void abort(const std::string& text) override
   {
     ROS_WARN_THROTTLE(5.0, "cmd/velocity: stopped: %s", text.c_str());
-    ended(true);
+    ended();
   }
   void preempt(const std::string&) override
   {
-    ended(true);
+    ended();
   }
 
 private:
-  void ended(bool by_other)
+  void ended()
   {
     if (const std::shared_ptr<VelocityTopic*> topic = topic_.lock())
     {
-      (*topic)->onGoalEnded(id_, by_other);
+      (*topic)->onGoalEnded(id_);
     }
   }
 
@@ -76,9 +76,8 @@ VelocityTopic::VelocityTopic(const ros::NodeHandle& node_handle, const VelocityT
   , self_(std::make_shared<VelocityTopic*>(this))
 {
   ros::NodeHandle node(node_handle);
-  subscriber_ = node.subscribe<PtzGoal>("cmd/velocity", 1, [this](const PtzGoal::ConstPtr& velocity) {
-    onVelocity(*velocity);
-  });
+  subscriber_ =
+      node.subscribe<PtzGoal>("cmd/velocity", 1, [this](const PtzGoal::ConstPtr& velocity) { onVelocity(*velocity); });
 }
 
 VelocityTopic::~VelocityTopic()
@@ -117,10 +116,11 @@ void VelocityTopic::onSilence()
   }
 }
 
-void VelocityTopic::onGoalEnded(const std::string& id, bool preempted_by_other)
+void VelocityTopic::onGoalEnded(const std::string& id)
 {
-  // The stream's own replacements end goals that are no longer goal_id_.
-  if (id == goal_id_ && preempted_by_other)
+  // Preempted by another goal, at a limit or failed: the same velocity again would do no better. The stream's own
+  // replacements and its cancel end goals that are no longer goal_id_.
+  if (id == goal_id_)
   {
     yielded_ = true;
   }

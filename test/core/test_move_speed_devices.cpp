@@ -90,7 +90,8 @@ TEST_P(MoveSpeedDevices, ASlowGoalMovesTheDeviceAtItsSpeed)
     double recorded = 0.0;
     for (const ClassifiedCommand& command : harness->commands())
     {
-      recorded = command.kind == ClassifiedCommand::Kind::MOVE && command.pan_speed > 0.0 ? command.pan_speed : recorded;
+      recorded =
+          command.kind == ClassifiedCommand::Kind::MOVE && command.pan_speed > 0.0 ? command.pan_speed : recorded;
     }
     ASSERT_GT(recorded, 0.0) << "no speed reached the device";
     EXPECT_NEAR(recorded, speed, 0.35 * speed);

@@ -48,8 +48,8 @@ struct ClosedLoopConfig
  * (lastFault()), never with an endless swing about the target.
  *
  * Devices whose axes all go to positions, and devices that cannot report state as it comes, pass through unchanged.
- * A goal's speed (goToAtSpeed()) caps the speed of its steered axes. moveAtVelocity() and stop() end the steering. A lost link ends it too: the recovery never resumes an old goal.
- * Thread-safe.
+ * A goal's speed (goToAtSpeed()) caps the speed of its steered axes. moveAtVelocity() and stop() end the steering. A
+ * lost link ends it too: the recovery never resumes an old goal. Thread-safe.
  */
 class ClosedLoopBackend : public ForwardingBackend
 {
@@ -113,7 +113,7 @@ private:
   std::array<bool, AXIS_COUNT> steered_{};  ///< axes run here (set once by start())
   bool steering_ = false;                   ///< a goTo() is under way
   AxisValues target_{};
-  AxisValues speed_cap_{};  ///< the goal's speed per axis (0: the max speed)
+  AxisValues speed_cap_{};                      ///< the goal's speed per axis (0: the max speed)
   AxisValues sent_velocity_{};                  ///< the last speeds commanded while steering
   std::uint64_t steps_ = 0;                     ///< speed commands sent while steering
   std::array<TimedSteering, AXIS_COUNT> axes_;  ///< what each axis taught, and its timed move

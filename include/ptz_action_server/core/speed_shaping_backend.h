@@ -68,9 +68,8 @@ private:
   bool shaping_ = false;
   AxisValues target_{};
   std::array<bool, AXIS_COUNT> shaped_{};  ///< axes streamed along their profile
-  std::array<TrapezoidProfile, AXIS_COUNT> profiles_{
-    { TrapezoidProfile::rest(0.0), TrapezoidProfile::rest(0.0), TrapezoidProfile::rest(0.0) }
-  };
+  std::array<TrapezoidProfile, AXIS_COUNT> profiles_{ { TrapezoidProfile::rest(0.0), TrapezoidProfile::rest(0.0),
+                                                        TrapezoidProfile::rest(0.0) } };
   double duration_ = 0.0;  ///< s: the longest profile
   TimerThread::Clock::time_point started_at_{};
   std::uint64_t moves_ = 0;  ///< shaped moves so far

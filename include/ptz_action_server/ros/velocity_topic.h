@@ -35,8 +35,9 @@ struct VelocityTopicConfig
  * A message with a new velocity is a new velocity goal (validated, clamped or rejected like one; it preempts the active
  * goal); the same velocity again only keeps the stream alive. When no message came for the timeout, the stream's goal
  * is cancelled: the device decelerates to rest. A goal of another action preempts the stream's; the stream then waits
- * until it pauses for the timeout (or sends another velocity) before it moves the device again, and a stream of zeros
- * never takes the device from another goal. Rejections are logged (throttled), as a velocity goal's client would hear.
+ * until it pauses for the timeout (or sends another velocity) before it moves the device again, as after a limit ended
+ * its goal, and a stream of zeros never takes the device from another goal. Rejections are logged (throttled), as a
+ * velocity goal's client would hear.
  *
  * Threads: the node's main queue (the subscription and the timer), the supervisor's thread.
  */
@@ -60,8 +61,8 @@ private:
   void onVelocity(const PtzGoal& velocity);
   /// The timer: no message for the timeout.
   void onSilence();
-  /// From the stream's goal as it ends (not when the stream itself replaces it).
-  void onGoalEnded(const std::string& id, bool preempted_by_other);
+  /// From each of the stream's goals as it ends.
+  void onGoalEnded(const std::string& id);
 
   const VelocityTopicConfig config_;
   GoalSupervisor& supervisor_;
@@ -72,7 +73,9 @@ private:
   std::uint64_t goals_ = 0;               ///< goals so far, for their ids
   std::string goal_id_;                   ///< the stream's latest goal ("" before the first)
   PtzGoal last_{};                        ///< its velocity
-  bool yielded_ = false;                  ///< another goal took the device: wait for a pause or a new velocity
+  /// The latest goal ended without the stream (another goal took the device, a limit): wait for a pause or a new
+  /// velocity.
+  bool yielded_ = false;
 };
 
 }  // namespace ptz_action_server

@@ -34,8 +34,8 @@ ResolvedSpeed resolveSpeed(const SpeedRequest& request, double default_fraction,
   if (!std::isfinite(request.fraction) || request.fraction < 0.0)
   {
     resolved.accepted = false;
-    resolved.message = formatText("speed %g is not a fraction of the top speed in (0, 1] (0: the default speed)",
-                                  request.fraction);
+    resolved.message =
+        formatText("speed %g is not a fraction of the top speed in (0, 1] (0: the default speed)", request.fraction);
     return resolved;
   }
   for (Axis axis : ALL_AXES)
@@ -67,16 +67,17 @@ ResolvedSpeed resolveSpeed(const SpeedRequest& request, double default_fraction,
     {
       if (rate_given && speed > capability.max_speed)
       {
-        addSpeedNote(resolved.message, formatText("%s speed %.4g %s clamped to the device's top speed %.4g %s",
-                                             axisName(axis), speed, speedUnit(axis), capability.max_speed,
-                                             speedUnit(axis)));
+        addSpeedNote(resolved.message,
+                     formatText("%s speed %.4g %s clamped to the device's top speed %.4g %s", axisName(axis), speed,
+                                speedUnit(axis), capability.max_speed, speedUnit(axis)));
       }
       speed = 0.0;  // the device's own speed: its top speed, as a goal without a speed moves
     }
     else if (speed < limits.speed.min_speed[axis])
     {
-      addSpeedNote(resolved.message, formatText("%s speed %.4g %s raised to the device's slowest %.4g %s", axisName(axis),
-                                           speed, speedUnit(axis), limits.speed.min_speed[axis], speedUnit(axis)));
+      addSpeedNote(resolved.message,
+                   formatText("%s speed %.4g %s raised to the device's slowest %.4g %s", axisName(axis), speed,
+                              speedUnit(axis), limits.speed.min_speed[axis], speedUnit(axis)));
       speed = limits.speed.min_speed[axis];
     }
     resolved.speed[axis] = speed;

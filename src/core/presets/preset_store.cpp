@@ -39,8 +39,9 @@ std::string exactText(double value)
 /// "" when \p fraction is a preset's speed (0: the default speed, or a fraction of the top speed in (0, 1]).
 std::string checkPresetSpeed(double fraction)
 {
-  return fraction >= 0.0 && fraction <= 1.0 ? std::string() :
-                                             "speed " + exactText(fraction) + " is not in [0, 1] (0: the default speed)";
+  return fraction >= 0.0 && fraction <= 1.0 ?
+             std::string() :
+             "speed " + exactText(fraction) + " is not in [0, 1] (0: the default speed)";
 }
 
 /// The optional `speed` of a preset's map into \p speed (0 without one).

@@ -174,9 +174,9 @@ void SimBackend::diagnostics(std::vector<DiagnosticValue>& values) const
   }
   values.emplace_back("commands received", std::to_string(commands_received_));
   values.emplace_back("commands lost in dropout", std::to_string(commands_lost_));
-  values.emplace_back("speed of the last position move (rad/s, rad/s, X/s)",
-                      formatText("%.4f, %.4f, %.4f", commanded_speed_[PAN], commanded_speed_[TILT],
-                                 commanded_speed_[ZOOM]));
+  values.emplace_back(
+      "speed of the last position move (rad/s, rad/s, X/s)",
+      formatText("%.4f, %.4f, %.4f", commanded_speed_[PAN], commanded_speed_[TILT], commanded_speed_[ZOOM]));
   values.emplace_back("fault: stalled axes", stalled.empty() ? "none" : stalled);
   values.emplace_back("fault: lag (s)", formatText("%.3f", faults.lag));
   values.emplace_back("fault: dropout", dropout_ ? "yes" : "no");

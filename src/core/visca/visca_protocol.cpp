@@ -248,8 +248,8 @@ void ViscaProtocol::goToAtSpeed(const AxisValues& position, const AxisValues& sp
   if (!std::isnan(position[PAN]) && !std::isnan(position[TILT]))
   {
     queuePacket(visca::panTiltPosition(settings_.address, speed_byte(PAN), speed_byte(TILT),
-                                       model.toSteps(PAN, position[PAN]),
-                                       model.toSteps(TILT, position[TILT]), model.layout),
+                                       model.toSteps(PAN, position[PAN]), model.toSteps(TILT, position[TILT]),
+                                       model.layout),
                 COMMAND);
   }
   if (model.has_zoom && !std::isnan(position[ZOOM]))

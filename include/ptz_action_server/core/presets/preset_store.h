@@ -75,7 +75,8 @@ public:
 
 private:
   /// Writes \p presets to the file atomically; "" or the reason.
-  std::string write(const std::map<std::string, AxisValues>& presets, const std::map<std::string, double>& speeds) const;
+  std::string write(const std::map<std::string, AxisValues>& presets,
+                    const std::map<std::string, double>& speeds) const;
   /// "" when the store may change, else why not.
   std::string checkWritable() const;
 
