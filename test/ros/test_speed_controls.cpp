@@ -139,7 +139,7 @@ TEST_F(SpeedNodeTest, ASlowGoalMovesTheDeviceAtItsSpeed)
   EXPECT_GT(feedback.load(), 5);  // 2 s of motion at 10 Hz, not the 0.4 s of the top speed
   EXPECT_LT(log.fastest(), 0.3 * 1.05);
   const double seconds = log.secondsBetween(0.1, 0.5);
-  EXPECT_GT(seconds, 0.4 / 0.3 * 0.9);
+  EXPECT_GT(seconds, 0.4 / 0.3 * 0.8);  // joint_states come at 10 Hz
   EXPECT_NEAR(observer_->latest().pan, 0.6, 0.01);
 
   // A speed that is no speed is refused, and nothing moves.
@@ -202,7 +202,7 @@ TEST_F(SpeedNodeTest, APresetRunsAtItsSpeed)
   ASSERT_TRUE(preset.waitForResult(ros::Duration(GOAL_WAIT)));
   EXPECT_EQ(preset.getState(), State::SUCCEEDED) << preset.getState().getText();
   EXPECT_LT(log.fastest(), 0.1 * topPanSpeed() * 1.05);
-  EXPECT_GT(log.secondsBetween(0.1, 0.4), 0.3 / (0.1 * topPanSpeed()) * 0.9);
+  EXPECT_GT(log.secondsBetween(0.1, 0.4), 0.3 / (0.1 * topPanSpeed()) * 0.8);
 }
 
 /// Publishes \p velocity on cmd/velocity every 50 ms until stopped.
