@@ -117,7 +117,7 @@ TEST(SimSpeed, APositionMoveCruisesAtItsSpeedOnTheDevicesClock)
   EXPECT_NEAR(backend.sample().position[PAN], 1.0, 1e-3);
   // The next move without a speed runs at the top speed again.
   backend.goTo({ 0.0, 0.0, 1.0 });
-  clock->advance(0.5);
+  clock->advance(0.6);  // past the 0.5 s ramp
   EXPECT_NEAR(std::abs(backend.sample().velocity[PAN]), 1.5, 1e-9);
 }
 
