@@ -101,8 +101,7 @@ Capabilities ViscaProtocol::capabilities() const
     capabilities.axes[ZOOM].widest_view = capabilities.axes[ZOOM].present;  // zoom direct 0000 is the wide end
   }
   capabilities.relative_moves = true;  // 8x 01 06 03
-  // The absolute move's speed bytes VV, WW; the zoom direct has none (the node shapes it). Byte 1 is the slowest.
-  for (Axis axis : { PAN, TILT })
+  for (Axis axis : { PAN, TILT })  // the absolute move's speed bytes VV, WW, 1 the slowest; the zoom direct has none
   {
     capabilities.speed.control[axis] = SpeedControl::DEVICE;
     capabilities.speed.min_speed[axis] = settings_.model.speedOfByte(axis, 1);
@@ -226,11 +225,6 @@ void ViscaProtocol::keepAlive()
   kept_alive_at_ = now;
   // Not tagged with the current command: a refusal of a repeated drive is no fault of the goal that sent it.
   channel_.queue(TransactionChannel::Request{ bytesOf(keep_alive_), PROBE, true, 0, true });
-}
-
-void ViscaProtocol::goTo(const AxisValues& position)
-{
-  goToAtSpeed(position, AxisValues{});
 }
 
 void ViscaProtocol::goToAtSpeed(const AxisValues& position, const AxisValues& speed)
