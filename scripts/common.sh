@@ -35,6 +35,7 @@ PTZ_APT_PACKAGES=(
   libyaml-cpp-dev
   librviz-dev rviz xvfb libinteractive-markers-dev libstd-srvs-dev libvisualization-msgs-dev
   libnodelet-dev libnodeletlib-dev libnodeletlib-tools
+  libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   python3-diagnostic-msgs python3-sensor-msgs python3-std-srvs
 )
 

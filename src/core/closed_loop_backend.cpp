@@ -97,6 +97,10 @@ Capabilities ClosedLoopBackend::steeredView(Capabilities device, std::array<bool
   {
     AxisCapability& capability = device.axes[axis];
     steered[axis] = steerable(capability);
+    if (steered[axis])
+    {
+      device.speed.control[axis] = SpeedControl::STEERED;  // the steering here caps its speed, not the device
+    }
     if (steered[axis] && !capability.absolute)
     {
       capability.absolute = true;
@@ -126,12 +130,20 @@ bool ClosedLoopBackend::steers() const
 
 void ClosedLoopBackend::goTo(const AxisValues& position)
 {
+  goToAtSpeed(position, AxisValues{});
+}
+
+void ClosedLoopBackend::goToAtSpeed(const AxisValues& position, const AxisValues& speed)
+{
   std::lock_guard<std::mutex> lock(mutex_);
   endSteeringLocked();
   refreshSteeringLocked();
+  const auto go_direct = [&](const AxisValues& where) {
+    asksSpeed(speed) ? inner().goToAtSpeed(where, speed) : inner().goTo(where);
+  };
   if (!steers())
   {
-    inner().goTo(position);
+    go_direct(position);
     return;
   }
   // Axes the device positions itself (not steered here) go there directly; the steered ones are left to steer().
@@ -147,6 +159,7 @@ void ClosedLoopBackend::goTo(const AxisValues& position)
     any_direct = any_direct || !std::isnan(direct[axis]);
   }
   target_ = position;
+  speed_cap_ = speed;
   steering_ = true;
   sent_velocity_ = AxisValues{};
   for (Axis axis : ALL_AXES)
@@ -155,7 +168,7 @@ void ClosedLoopBackend::goTo(const AxisValues& position)
   }
   if (any_direct)
   {
-    inner().goTo(direct);
+    go_direct(direct);
   }
   steerLocked();
 }
@@ -201,7 +214,8 @@ double ClosedLoopBackend::speedFor(Axis axis, double position) const
   const double distance = std::abs(remaining);
   const double deceleration =
       0.5 * (capability.acceleration > 0.0 ? capability.acceleration : config_.default_deceleration);
-  double speed = std::min({ capability.max_speed, config_.gain * distance, std::sqrt(2.0 * deceleration * distance) });
+  const double top = speed_cap_[axis] > 0.0 ? std::min(speed_cap_[axis], capability.max_speed) : capability.max_speed;
+  double speed = std::min({ top, config_.gain * distance, std::sqrt(2.0 * deceleration * distance) });
   speed = std::max(speed, config_.min_speed_share * capability.max_speed);
   return std::copysign(speed, remaining);
 }

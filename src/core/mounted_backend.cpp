@@ -27,6 +27,11 @@ void MountedBackend::goTo(const AxisValues& position)
   inner().goTo(toDevice(position));
 }
 
+void MountedBackend::goToAtSpeed(const AxisValues& position, const AxisValues& speed)
+{
+  inner().goToAtSpeed(toDevice(position), speed);  // speeds are magnitudes: the mount leaves them as they are
+}
+
 void MountedBackend::moveAtVelocity(const AxisValues& velocity)
 {
   inner().moveAtVelocity(mapVelocity(velocity));

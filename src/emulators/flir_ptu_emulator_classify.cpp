@@ -1,5 +1,8 @@
 #include "ptz_action_server/emulators/flir_ptu_emulator.h"
 
+#include <cmath>
+#include <cstdlib>
+
 namespace ptz_action_server
 {
 namespace
@@ -35,10 +38,17 @@ Kind flirCommandKind(const std::string& text)
 std::vector<ClassifiedCommand> FlirPtuEmulator::classify() const
 {
   const double byte_time = port_->byteTime();
-  return received_.classified([byte_time](const ReceivedCommand& command) {
+  const double resolution = resolution_rad_;
+  return received_.classified([byte_time, resolution](const ReceivedCommand& command) {
     // Each command crossed the line with its delimiter.
-    return ClassifiedCommand{ command.at, flirCommandKind(command.text),        command.text, false,
-                              0.0,        (command.text.size() + 1) * byte_time };
+    ClassifiedCommand classified{ command.at, flirCommandKind(command.text),        command.text, false,
+                                  0.0,        (command.text.size() + 1) * byte_time };
+    // `PS<n>`: the pan's speed in positions a second (of the move in CI mode, the velocity in CV mode).
+    if (command.text.size() > 2 && command.text.compare(0, 2, "PS") == 0)
+    {
+      classified.pan_speed = std::abs(std::atof(command.text.c_str() + 2)) * resolution;
+    }
+    return classified;
   });
 }
 

@@ -42,11 +42,19 @@ Kind viscaPacketKind(const visca::Packet& packet)
 std::vector<ClassifiedCommand> ViscaEmulator::classify() const
 {
   const double byte_time = port_->byteTime();
-  return received_.classified([byte_time](const ReceivedPacket& item) {
+  const visca::ViscaModel& model = config_.model;
+  return received_.classified([byte_time, &model](const ReceivedPacket& item) {
     // A VISCA over IP control message (a sequence reset) is no camera command.
     const Kind kind = item.control ? Kind::OTHER : viscaPacketKind(item.packet);
-    return ClassifiedCommand{ item.at, kind, hexText(item.packet.data(), item.packet.size()),
-                              false,   0.0,  item.packet.size() * byte_time };
+    ClassifiedCommand command{ item.at, kind, hexText(item.packet.data(), item.packet.size()),
+                               false,   0.0,  item.packet.size() * byte_time };
+    // The pan-tilt absolute or relative move's pan speed byte VV (`8x 01 06 02 VV WW ...`).
+    const visca::Packet& packet = item.packet;
+    if (kind == Kind::MOVE && packet.size() > 5 && packet[2] == 0x06 && (packet[3] == 0x02 || packet[3] == 0x03))
+    {
+      command.pan_speed = model.speedOfByte(PAN, packet[4]);
+    }
+    return command;
   });
 }
 

@@ -129,6 +129,18 @@ ConvertedGoal GoalTranslator::convert(const PtzPresetGoal& goal, ActionKind, con
   }
   ConvertedGoal converted;
   converted.command.values = *pose;
+  converted.command.speed.fraction = presets_.speed(goal.name);
+  return converted;
+}
+
+ConvertedGoal GoalTranslator::convert(const PtzSpeedGoal& goal, ActionKind, const PtzSample&) const
+{
+  ConvertedGoal converted;
+  GoalCommand& command = converted.command;
+  command.values = { { goal.pan, goal.tilt, goal.zoom } };
+  converted.rejection = findNonFinite(command.values, "position");
+  command.speed.fraction = goal.speed;
+  command.speed.rate = { { goal.pan_speed, goal.tilt_speed, 0.0 } };
   return converted;
 }
 

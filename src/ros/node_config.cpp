@@ -40,6 +40,7 @@ NodeConfig NodeConfig::load(const ParamReader& params)
   config.tours = TourConfig::load(params, config.presets.file);
   config.look_at_clicked_point = LookAtClickedPointConfig::load(params);
   config.pixel = PixelConfig::load(params, config.field_of_view.model);
+  config.cmd_velocity = VelocityTopicConfig::load(params);
   config.node_name = params.nodeHandle().getNamespace();
   return config;
 }

@@ -98,6 +98,7 @@ PresetServices::PresetServices(const ros::NodeHandle& node_handle, const PresetC
   save_service_ = node_handle_.advertiseService("move_ptz/save_preset", &PresetServices::save, this);
   delete_service_ = node_handle_.advertiseService("move_ptz/delete_preset", &PresetServices::remove, this);
   list_service_ = node_handle_.advertiseService("move_ptz/list_presets", &PresetServices::list, this);
+  speed_service_ = node_handle_.advertiseService("move_ptz/set_preset_speed", &PresetServices::setSpeed, this);
 }
 
 PresetServices::~PresetServices()
@@ -105,6 +106,7 @@ PresetServices::~PresetServices()
   save_service_.shutdown();
   delete_service_.shutdown();
   list_service_.shutdown();
+  speed_service_.shutdown();
 }
 
 // Saves and deletes write and fsync a small file before answering, so that a success means the preset survives a
@@ -150,6 +152,23 @@ bool PresetServices::remove(DeletePreset::Request& request, DeletePreset::Respon
   else
   {
     ROS_WARN("preset '%s' not deleted: %s", request.name.c_str(), response.message.c_str());
+  }
+  return true;
+}
+
+bool PresetServices::setSpeed(SetPresetSpeed::Request& request, SetPresetSpeed::Response& response)
+{
+  response.message = store_->setSpeed(request.name, request.speed);
+  response.success = response.message.empty();
+  if (response.success)
+  {
+    response.message = request.speed > 0.0F ? formatText("'%s' runs at speed %g", request.name.c_str(), request.speed) :
+                                              "'" + request.name + "' runs at the default speed";
+    ROS_INFO("preset %s", response.message.c_str());
+  }
+  else
+  {
+    ROS_WARN("preset '%s' speed not set: %s", request.name.c_str(), response.message.c_str());
   }
   return true;
 }

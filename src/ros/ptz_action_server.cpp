@@ -42,6 +42,8 @@ PtzActionServer::~PtzActionServer()
   // this object.
   state_publisher_.reset();
   status_release_timer_.stop();
+  velocity_topic_.reset();
+  controls_.reset();
   if (listener_target_)
   {
     std::lock_guard<std::mutex> lock(listener_target_->mutex);
@@ -140,6 +142,17 @@ void PtzActionServer::start()
       DetectionTracking::Parts{ kinematics_, limits_, config_.track, config_.detection_tracking, config_.monitor,
                                 config_.pixel, calibration, *supervisor_, *backend_, *poses_, *presets_ });
 
+  controls_ =
+      std::make_unique<OperatorControls>(node_handle_, config_.node_name, backend_->name(), limits_, *supervisor_);
+  if (config_.cmd_velocity.enabled)
+  {
+    velocity_topic_ = std::make_unique<VelocityTopic>(
+        node_handle_, config_.cmd_velocity, *supervisor_, [this](const PtzGoal& velocity, PtzSample& current) {
+          frame_hold_->supersede(ActionKind::VELOCITY);
+          current = backend_->sample();
+          return translator_->convert(velocity, ActionKind::VELOCITY, current);
+        });
+  }
   servers_.start([this](auto handle, ActionKind kind) { onGoal(handle, kind); },
                  [this](auto handle, ActionKind kind) { onCancel(handle, kind); });
   look_at_clicked_point_ = std::make_unique<LookAtClickedPoint>(

@@ -5,6 +5,7 @@
 #include <ros/callback_queue.h>
 
 #include "ptz_action_server/core/closed_loop_backend.h"
+#include "ptz_action_server/core/speed_shaping_backend.h"
 #include "ptz_action_server/ros/sim_camera_publisher.h"
 
 namespace ptz_action_server
@@ -53,6 +54,8 @@ void PtzNode::start(const ros::NodeHandle& node_handle, const ros::NodeHandle& p
   backend_ = applyMount(
       withClosedLoop(loader_.load(config.backend, params, kinematics, config.mount), config.monitor.tolerance),
       config.mount);
+  // A position goal's speed on a device that takes none with its moves: the node streams the motion.
+  backend_ = withSpeedShaping(backend_);
   if (wrap)
   {
     backend_ = wrap(backend_);

@@ -28,6 +28,12 @@ inline void addCounts(std::vector<DiagnosticValue>& values,
   }
 }
 
+/// True when \p speed asks for a speed on some axis (PtzBackend::goToAtSpeed(): 0 is the backend's own speed).
+inline bool asksSpeed(const AxisValues& speed)
+{
+  return speed[PAN] > 0.0 || speed[TILT] > 0.0 || speed[ZOOM] > 0.0;
+}
+
 /**
  * \brief A pan-tilt(-zoom) device, seen by the node.
  *
@@ -61,6 +67,19 @@ public:
   /// Moves every present axis to \p position (pan, tilt in rad; zoom as X-factor). An axis given as NaN is left
   /// where it is: the goal leaves it alone on a device that cannot position or report it (see leavesAxisAlone()).
   virtual void goTo(const AxisValues& position) = 0;
+
+  /**
+   * \brief goTo() with each axis cruising at no more than \p speed (rad/s, X/s; 0: the backend's own speed, as goTo()).
+   *
+   * A backend whose device takes a speed with its absolute moves applies it on the axes its capabilities().speed
+   * says (SpeedControl::DEVICE) and moves the others at its own speed; by default the speed is ignored (the node's
+   * SpeedShapingBackend shapes the motion of the devices that take no speed).
+   */
+  virtual void goToAtSpeed(const AxisValues& position, const AxisValues& speed)
+  {
+    (void)speed;
+    goTo(position);
+  }
 
   /// Moves every present axis at \p velocity (rad/s, X/s) until stop(), another command or a limit.
   virtual void moveAtVelocity(const AxisValues& velocity) = 0;

@@ -48,8 +48,8 @@ struct ClosedLoopConfig
  * (lastFault()), never with an endless swing about the target.
  *
  * Devices whose axes all go to positions, and devices that cannot report state as it comes, pass through unchanged.
- * moveAtVelocity(), stop() and aimInView() end the steering. A lost link ends it too: the recovery never resumes an old
- * goal. Thread-safe.
+ * A goal's speed (goToAtSpeed()) caps the speed of its steered axes. moveAtVelocity(), stop() and aimInView() end the
+ * steering. A lost link ends it too: the recovery never resumes an old goal. Thread-safe.
  */
 class ClosedLoopBackend : public ForwardingBackend
 {
@@ -62,6 +62,8 @@ public:
   Capabilities capabilities() const override;
   void start() override;
   void goTo(const AxisValues& position) override;
+  /// goTo() at \p speed: a steered axis is driven no faster than its speed; the others get it from the device.
+  void goToAtSpeed(const AxisValues& position, const AxisValues& speed) override;
   void moveAtVelocity(const AxisValues& velocity) override;
   void stop() override;
   void aimInView(const ViewTarget& target) override;
@@ -112,6 +114,7 @@ private:
   std::array<bool, AXIS_COUNT> steered_{};  ///< axes run here (set once by start())
   bool steering_ = false;                   ///< a goTo() is under way
   AxisValues target_{};
+  AxisValues speed_cap_{};                      ///< the goal's speed per axis (0: the max speed)
   AxisValues sent_velocity_{};                  ///< the last speeds commanded while steering
   std::uint64_t steps_ = 0;                     ///< speed commands sent while steering
   std::array<TimedSteering, AXIS_COUNT> axes_;  ///< what each axis taught, and its timed move

@@ -47,6 +47,10 @@ public:
   {
     inner_->goTo(position);
   }
+  void goToAtSpeed(const AxisValues& position, const AxisValues& speed) override
+  {
+    inner_->goToAtSpeed(position, speed);
+  }
   void moveAtVelocity(const AxisValues& velocity) override
   {
     inner_->moveAtVelocity(velocity);

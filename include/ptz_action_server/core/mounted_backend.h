@@ -45,6 +45,7 @@ public:
 
   Capabilities capabilities() const override;
   void goTo(const AxisValues& position) override;
+  void goToAtSpeed(const AxisValues& position, const AxisValues& speed) override;
   void moveAtVelocity(const AxisValues& velocity) override;
   PtzSample sample() const override;
   /// The device's, then the mount and the device's own pan and tilt (as it reads them).

@@ -181,10 +181,47 @@ struct ViewTarget
   double magnification() const;
 };
 
+/// How a position goal's speed reaches an axis (PtzBackend::goToAtSpeed()).
+enum class SpeedControl : std::uint8_t
+{
+  NODE = 0,    ///< the node shapes the motion: it streams targets along a profile at the speed (SpeedShapingBackend)
+  DEVICE = 1,  ///< the device takes the speed with its absolute move (VISCA's speed bytes, Axis `speed=`, ...)
+  /// The node steers the axis on speed commands (ClosedLoopBackend, a device that only moves at a speed) and caps
+  /// them at the speed.
+  STEERED = 2,
+  /// The axis moves at its own speed whatever the goal asks (its device takes a speed on other axes only, and the
+  /// node does not stream one axis beside the device's own move).
+  OWN = 3,
+};
+
+/// The speed of position goals, per axis: who applies it and the slowest speed there is. The top speed is each
+/// AxisCapability::max_speed.
+struct MoveSpeedCapability
+{
+  std::array<SpeedControl, AXIS_COUNT> control{ { SpeedControl::NODE, SpeedControl::NODE, SpeedControl::NODE } };
+  /// The slowest speed of each axis (rad/s, X/s): the device's slowest step (VISCA's speed byte 1); 0: any speed.
+  AxisValues min_speed{};
+
+  /// True when the backend applies the speed itself on at least one axis (DEVICE or STEERED): goToAtSpeed() then
+  /// goes to it unshaped, and the axes it does not apply it on move at their own speed.
+  bool appliedByBackend() const
+  {
+    for (SpeedControl axis : control)
+    {
+      if (axis == SpeedControl::DEVICE || axis == SpeedControl::STEERED)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+};
+
 /// What a backend's device can do; the node intersects the ranges with the URDF joint limits.
 struct Capabilities
 {
   std::array<AxisCapability, AXIS_COUNT> axes;
+  MoveSpeedCapability speed;  ///< the speed of position goals (shaped by the node unless the backend says)
   /// Informative, for diagnostics and the capabilities topic (the node's own relative goals, presets and home work
   /// from the reported pose on every device that goes to positions):
   bool relative_moves = false;  ///< the device moves by an offset of its own (VAPIX rpan, ONVIF RelativeMove)

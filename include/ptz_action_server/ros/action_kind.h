@@ -20,6 +20,7 @@ enum class ActionKind
   PIXEL,
   TRACK_DETECTIONS,
   TOUR,
+  POSITION_ABS_SPEED,
   CLICKED_POINT,  ///< not an action: a point on the clicked point topic (LookAtClickedPoint)
   IMAGE_CLICK,    ///< not an action: a click on <image_topic>_mouse_left (ImageClicks)
 };

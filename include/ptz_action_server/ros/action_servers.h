@@ -22,6 +22,7 @@
 #include "ptz_action_server/PtzRelToAction.h"
 #include "ptz_action_server/PtzTrackDetectionsAction.h"
 #include "ptz_action_server/PtzTourAction.h"
+#include "ptz_action_server/PtzSpeedAction.h"
 #include "ptz_action_server/ros/action_kind.h"
 #include "ptz_action_server/ros/node_action_server.h"
 
@@ -55,6 +56,7 @@ inline constexpr std::tuple NODE_ACTIONS{
   ActionRow<PtzPixelAction>{ ActionKind::PIXEL, "pixel" },
   ActionRow<PtzTrackDetectionsAction>{ ActionKind::TRACK_DETECTIONS, "track_detections" },
   ActionRow<PtzTourAction>{ ActionKind::TOUR, "tour" },  // TourGoals: its moves are goals of their own
+  ActionRow<PtzSpeedAction>{ ActionKind::POSITION_ABS_SPEED, "position_abs_speed" },
 };
 
 /// How many actions the node serves.

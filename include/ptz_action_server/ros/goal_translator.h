@@ -16,6 +16,7 @@
 #include "ptz_action_server/PtzPixelAction.h"
 #include "ptz_action_server/PtzPresetAction.h"
 #include "ptz_action_server/PtzRelToAction.h"
+#include "ptz_action_server/PtzSpeedAction.h"
 #include "ptz_action_server/core/goal/goal_supervisor.h"
 #include "ptz_action_server/core/motion/kinematics.h"
 #include "ptz_action_server/ros/action_kind.h"
@@ -60,6 +61,8 @@ public:
   ConvertedGoal convert(const PtzRelToGoal& goal, ActionKind kind, const PtzSample& current) const;
   ConvertedGoal convert(const PtzFrameGoal& goal, ActionKind kind, const PtzSample& current) const;
   ConvertedGoal convert(const PtzPresetGoal& goal, ActionKind kind, const PtzSample& current) const;
+  /// position_abs with the goal's speed (GoalCommand::speed).
+  ConvertedGoal convert(const PtzSpeedGoal& goal, ActionKind kind, const PtzSample& current) const;
   /// A pixel of an image: the camera's pose at the image's stamp (PixelGoals).
   ConvertedGoal convert(const PtzPixelGoal& goal, ActionKind kind, const PtzSample& current) const;
   /// A clicked point: the optical axis through it, the zoom where it is.

@@ -13,6 +13,7 @@
 #include "ptz_action_server/ros/detection_tracking.h"
 #include "ptz_action_server/ros/lens_interface.h"
 #include "ptz_action_server/ros/look_at_clicked_point.h"
+#include "ptz_action_server/ros/velocity_topic.h"
 #include "ptz_action_server/ros/param_reader.h"
 #include "ptz_action_server/ros/pixel_goals.h"
 #include "ptz_action_server/ros/preset_services.h"
@@ -44,6 +45,7 @@ struct NodeConfig
   TourConfig tours;                                ///< the tours file, resuming tours, the idle return
   LookAtClickedPointConfig look_at_clicked_point;  ///< "look here" from rviz
   PixelConfig pixel;                               ///< aiming at pixels: the picture's lens, clicks on it
+  VelocityTopicConfig cmd_velocity;                ///< the cmd/velocity stream
   /// The node's private namespace (/left/ptz_action_server): its name in the diagnostics, as a process or a nodelet.
   std::string node_name;
 
@@ -52,7 +54,7 @@ struct NodeConfig
   /// ~status_list_timeout, ~frame_listen_time, ~frame_wait, ~track/rate, ~track/gain, ~track/feed_forward,
   /// ~track_timeout, ~track/lost_timeout, ~track/pose_history, ~status_hold, ~mount, ~pan_offset, ~field_of_view/*,
   /// ~camera_info_topic, ~camera_info_zoom, ~look_at_clicked_point, ~clicked_point_topic, ~image_upside_down,
-  /// ~image_topic, the presets' (see PresetConfig::load) and the tours' (TourConfig::load).
+  /// ~image_topic, ~cmd_velocity/*, the presets' (see PresetConfig::load) and the tours' (TourConfig::load).
   static NodeConfig load(const ParamReader& params);
 };
 

@@ -13,6 +13,7 @@
 #include "ptz_action_server/DeletePreset.h"
 #include "ptz_action_server/ListPresets.h"
 #include "ptz_action_server/SavePreset.h"
+#include "ptz_action_server/SetPresetSpeed.h"
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/presets/preset_store.h"
 #include "ptz_action_server/ros/param_reader.h"
@@ -57,11 +58,17 @@ public:
   {
     return store_->find(name);
   }
+  /// The speed of a goal to preset \p name (PresetStore::speed(): 0 for the default speed).
+  double speed(const std::string& name) const
+  {
+    return store_->speed(name);
+  }
 
 private:
   bool save(SavePreset::Request& request, SavePreset::Response& response);
   bool remove(DeletePreset::Request& request, DeletePreset::Response& response);
   bool list(ListPresets::Request& request, ListPresets::Response& response);
+  bool setSpeed(SetPresetSpeed::Request& request, SetPresetSpeed::Response& response);
 
   std::shared_ptr<SharedCallbackQueue> queue_;  ///< declared first: everything below registers on it
   ros::NodeHandle node_handle_;                 ///< the node's namespace, on queue_
@@ -74,6 +81,7 @@ private:
   ros::ServiceServer save_service_;
   ros::ServiceServer delete_service_;
   ros::ServiceServer list_service_;
+  ros::ServiceServer speed_service_;
 };
 
 }  // namespace ptz_action_server

@@ -29,6 +29,7 @@
 #include "ptz_action_server/ros/lens_interface.h"
 #include "ptz_action_server/ros/look_at_clicked_point.h"
 #include "ptz_action_server/ros/node_config.h"
+#include "ptz_action_server/ros/operator_controls.h"
 #include "ptz_action_server/ros/pixel_goals.h"
 #include "ptz_action_server/ros/pose_recorder.h"
 #include "ptz_action_server/ros/preset_services.h"
@@ -168,7 +169,9 @@ private:
   std::unique_ptr<ImageClicks> image_clicks_;                  ///< with ~image_topic only; built by start()
   std::uint64_t image_clicks_count_ = 0;                       ///< clicks on the image so far, for their ids
   std::unique_ptr<TourServices> tour_services_;                ///< the tour services; built by start()
-  std::unique_ptr<TourGoals> tours_;  ///< tour goals and the idle return; built by start(), destroyed first
+  std::unique_ptr<TourGoals> tours_;            ///< tour goals and the idle return; built by start(), destroyed first
+  std::unique_ptr<OperatorControls> controls_;  ///< ~default_speed and `controls`; built by start()
+  std::unique_ptr<VelocityTopic> velocity_topic_;  ///< cmd/velocity; built by start()
 };
 
 }  // namespace ptz_action_server

@@ -51,11 +51,20 @@ Capabilities AxisProtocol::capabilities() const
                                     settings_.acceleration);
   capabilities.axes[TILT] = fullAxis({ toRadians(limits.min_tilt), toRadians(limits.max_tilt) },
                                      settings_.tilt_max_speed, settings_.acceleration);
+  capabilities.speed = moveSpeed();
   capabilities.axes[ZOOM] =
       configured_table_.empty() ?
           absentAxis("the Axis camera has not been asked yet") :
           fullAxis({ configured_table_.minFactor(), configured_table_.maxFactor() }, settings_.zoom_max_rate, 0.0);
   return capabilities;
+}
+
+MoveSpeedCapability AxisProtocol::moveSpeed() const
+{
+  MoveSpeedCapability speed;
+  speed.control = { { SpeedControl::DEVICE, SpeedControl::DEVICE, SpeedControl::OWN } };
+  speed.min_speed = { { settings_.pan_max_speed / 100.0, settings_.tilt_max_speed / 100.0, 0.0 } };
+  return speed;
 }
 
 bool AxisProtocol::exchange(const std::string& path, const std::string& what, std::string& body, std::string& problem)
@@ -239,7 +248,21 @@ void AxisProtocol::command(const std::string& arguments)
 
 void AxisProtocol::goTo(const AxisValues& position)
 {
+  goToAtSpeed(position, AxisValues{});
+}
+
+void AxisProtocol::goToAtSpeed(const AxisValues& position, const AxisValues& speed)
+{
   arguments_.clear();
+  int percent = settings_.speed;
+  for (const auto& [axis, top] : { std::pair<Axis, double>{ PAN, settings_.pan_max_speed },
+                                   std::pair<Axis, double>{ TILT, settings_.tilt_max_speed } })
+  {
+    if (speed[axis] > 0.0 && top > 0.0)
+    {
+      percent = std::min(percent, static_cast<int>(std::ceil(100.0 * speed[axis] / top)));
+    }
+  }
   // A zoom it cannot map (no X-factor known) or read back is commanded only to its widest view, MinZoom (the goal
   // validation lets nothing else through); NaN leaves it alone.
   double zoom_value = 0.0;  // left out
@@ -251,8 +274,7 @@ void AxisProtocol::goTo(const AxisValues& position)
   {
     zoom_value = widest_zoom_value_;
   }
-  vapix::appendAbsoluteMove(arguments_, toDegrees(position[PAN]), toDegrees(position[TILT]), zoom_value,
-                            settings_.speed);
+  vapix::appendAbsoluteMove(arguments_, toDegrees(position[PAN]), toDegrees(position[TILT]), zoom_value, percent);
   command(arguments_);
 }
 

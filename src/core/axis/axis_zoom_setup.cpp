@@ -69,6 +69,7 @@ Capabilities AxisProtocol::cameraCapabilities(const vapix::Limits& limits, const
   capabilities.view_box_zoom =
       capabilities.view_centre && commands.has("areazoom") && zoom_source_ != AxisZoomSource::NO_ZOOM;
   capabilities.view_command = capabilities.view_box_zoom ? "VAPIX center, areazoom" : "VAPIX center";
+  capabilities.speed = moveSpeed();
 
   AxisCapability& zoom = capabilities.axes[ZOOM];
   if (zoom_source_ == AxisZoomSource::NO_ZOOM)

@@ -19,6 +19,11 @@ void DeviceBackend::goTo(const AxisValues& position)
   session_->command([this, position] { protocol_->goTo(position); });
 }
 
+void DeviceBackend::goToAtSpeed(const AxisValues& position, const AxisValues& speed)
+{
+  session_->command([this, position, speed] { protocol_->goToAtSpeed(position, speed); });
+}
+
 void DeviceBackend::moveAtVelocity(const AxisValues& velocity)
 {
   session_->command([this, velocity] { protocol_->moveAtVelocity(velocity); });

@@ -38,6 +38,9 @@ Capabilities FlirProtocol::capabilities() const
     moved.absolute = true;
     moved.velocity = true;
     moved.feedback = true;
+    // A position goal's `PS` / `TS` (in CI mode the speed of the move): one position a second at the slowest.
+    capabilities.speed.control[axis] = SpeedControl::DEVICE;
+    capabilities.speed.min_speed[axis] = axis == PAN ? pan_resolution_ : tilt_resolution_;
   }
   AxisCapability& zoom = capabilities.axes[ZOOM];
   zoom.present = false;
@@ -162,6 +165,11 @@ void FlirProtocol::request(const std::string& text, Tag tag)
 
 void FlirProtocol::goTo(const AxisValues& position)
 {
+  goToAtSpeed(position, AxisValues{});
+}
+
+void FlirProtocol::goToAtSpeed(const AxisValues& position, const AxisValues& speed)
+{
   if (!ready_)
   {
     return;
@@ -170,8 +178,12 @@ void FlirProtocol::goTo(const AxisValues& position)
   // Every goal states its mode: a mode switch queued for an earlier goal may have been dropped with the queue.
   request(flir::command("CI"), COMMAND);
   const Capabilities limits = unitCapabilities();
-  request(flir::command("PS", std::lround(limits.axes[PAN].max_speed / pan_resolution_)), COMMAND);
-  request(flir::command("TS", std::lround(limits.axes[TILT].max_speed / tilt_resolution_)), COMMAND);
+  const auto positions_a_second = [&](Axis axis, double resolution) {
+    const double top = limits.axes[axis].max_speed;
+    return std::max(1L, std::lround((speed[axis] > 0.0 ? std::min(speed[axis], top) : top) / resolution));
+  };
+  request(flir::command("PS", positions_a_second(PAN, pan_resolution_)), COMMAND);
+  request(flir::command("TS", positions_a_second(TILT, tilt_resolution_)), COMMAND);
   request(flir::command("PP", std::lround(-position[PAN] / pan_resolution_)), COMMAND);
   request(flir::command("TP", std::lround(position[TILT] / tilt_resolution_)), COMMAND);
 }

@@ -66,11 +66,36 @@ void GoalSupervisor::submit(std::unique_ptr<GoalHandle> goal, const PtzSample& c
   {
     note += (note.empty() ? "" : "; ") + validated.message;
   }
-  activate(std::move(goal), command, validated.judged, command.track ? std::string() : note);
+  ResolvedSpeed speed;
+  if (!command.velocity && !command.track)
+  {
+    speed = resolveSpeed(command.speed, default_speed_, limits_);
+    if (!speed.accepted)
+    {
+      goal->reject(speed.message);
+      return;
+    }
+    if (!speed.message.empty())
+    {
+      note += (note.empty() ? "" : "; ") + speed.message;
+    }
+  }
+  activate(std::move(goal), command, validated.judged, command.track ? std::string() : note, speed.speed);
+}
+
+std::string GoalSupervisor::setDefaultSpeed(double fraction)
+{
+  std::string reason = checkDefaultSpeed(fraction);
+  if (reason.empty())
+  {
+    default_speed_ = fraction;
+  }
+  return reason;
 }
 
 void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalCommand& command,
-                              const std::array<bool, AXIS_COUNT>& judged, const std::string& note)
+                              const std::array<bool, AXIS_COUNT>& judged, const std::string& note,
+                              const AxisValues& speed)
 {
   if (active_goal_)
   {
@@ -97,15 +122,23 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   {
     backend_->moveAtVelocity(command.values);
   }
+  else if (asksSpeed(speed))
+  {
+    backend_->goToAtSpeed(command.values, speed);
+  }
   else
   {
     backend_->goTo(command.values);
   }
-  // The goal is judged on the axes it asks for only.
+  // The goal is judged on the axes it asks for only, and expected to take as long as its speed makes it.
   Capabilities judged_axes = limits_;
   for (Axis axis : ALL_AXES)
   {
     judged_axes.axes[axis].present = judged[axis];
+    if (speed[axis] > 0.0)
+    {
+      judged_axes.axes[axis].max_speed = speed[axis];
+    }
   }
   if (command.view)
   {

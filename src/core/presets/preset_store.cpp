@@ -36,6 +36,34 @@ std::string exactText(double value)
 }
 
 /// Reads one preset's pose from \p node; "" or the reason.
+/// "" when \p fraction is a preset's speed (0: the default speed, or a fraction of the top speed in (0, 1]).
+std::string checkPresetSpeed(double fraction)
+{
+  return fraction >= 0.0 && fraction <= 1.0 ?
+             std::string() :
+             "speed " + exactText(fraction) + " is not in [0, 1] (0: the default speed)";
+}
+
+/// The optional `speed` of a preset's map into \p speed (0 without one).
+std::string readSpeed(const YAML::Node& node, double& speed)
+{
+  const YAML::Node value = node["speed"];
+  speed = 0.0;
+  if (!value)
+  {
+    return {};
+  }
+  try
+  {
+    speed = value.as<double>();
+  }
+  catch (const YAML::Exception&)
+  {
+    return "speed '" + (value.IsScalar() ? value.Scalar() : std::string("?")) + "' is not a number";
+  }
+  return checkPresetSpeed(speed);
+}
+
 std::string readPose(const YAML::Node& node, AxisValues& pose)
 {
   if (!node.IsMap())
@@ -45,9 +73,9 @@ std::string readPose(const YAML::Node& node, AxisValues& pose)
   for (const auto& entry : node)
   {
     const std::string key = entry.first.as<std::string>();
-    if (key != "pan" && key != "tilt" && key != "zoom")
+    if (key != "pan" && key != "tilt" && key != "zoom" && key != "speed")
     {
-      return "has an unknown key '" + key + "' (only pan, tilt and zoom)";
+      return "has an unknown key '" + key + "' (only pan, tilt, zoom and speed)";
     }
   }
   for (Axis axis : ALL_AXES)
@@ -74,7 +102,8 @@ std::string readPose(const YAML::Node& node, AxisValues& pose)
 }
 
 /// Reads the presets of a parsed file; "" or the reason.
-std::string readPresets(const YAML::Node& root, std::map<std::string, AxisValues>& presets)
+std::string readPresets(const YAML::Node& root, std::map<std::string, AxisValues>& presets,
+                        std::map<std::string, double>& speeds)
 {
   if (root.IsNull())
   {
@@ -108,6 +137,15 @@ std::string readPresets(const YAML::Node& root, std::map<std::string, AxisValues
     {
       reason = readPose(entry.second, presets[name]);
     }
+    double speed = 0.0;
+    if (reason.empty())
+    {
+      reason = readSpeed(entry.second, speed);
+    }
+    if (speed > 0.0)
+    {
+      speeds[name] = speed;
+    }
     if (!reason.empty())
     {
       return "preset '" + name + "' " + reason;
@@ -122,7 +160,7 @@ std::string readPresets(const YAML::Node& root, std::map<std::string, AxisValues
 }
 
 /// The file's text for \p presets.
-std::string formatPresets(const std::map<std::string, AxisValues>& presets)
+std::string formatPresets(const std::map<std::string, AxisValues>& presets, const std::map<std::string, double>& speeds)
 {
   YAML::Emitter out;
   out << YAML::BeginMap << YAML::Key << PRESETS_KEY << YAML::Value;
@@ -139,6 +177,11 @@ std::string formatPresets(const std::map<std::string, AxisValues>& presets)
       for (Axis axis : ALL_AXES)
       {
         out << YAML::Key << axisName(axis) << YAML::Value << exactText(preset.second[axis]);
+      }
+      const auto speed = speeds.find(preset.first);
+      if (speed != speeds.end())
+      {
+        out << YAML::Key << "speed" << YAML::Value << exactText(speed->second);
       }
       out << YAML::EndMap;
     }
@@ -185,6 +228,7 @@ std::string PresetStore::checkName(const std::string& name)
 std::string PresetStore::load()
 {
   std::map<std::string, AxisValues> presets;
+  std::map<std::string, double> speeds;
   std::string reason;
   std::error_code error;
   const fs::file_status status = fs::status(path_, error);
@@ -213,7 +257,7 @@ std::string PresetStore::load()
     {
       try
       {
-        reason = readPresets(YAML::Load(text.str()), presets);
+        reason = readPresets(YAML::Load(text.str()), presets, speeds);
       }
       catch (const YAML::Exception& exception)
       {
@@ -223,11 +267,13 @@ std::string PresetStore::load()
       {
         reason = "cannot read the presets in " + path_ + ": " + reason;
         presets.clear();
+        speeds.clear();
       }
     }
   }
   std::lock_guard<std::mutex> lock(mutex_);
   presets_ = std::move(presets);
+  speeds_ = std::move(speeds);
   load_error_ = reason;
   return reason;
 }
@@ -270,7 +316,7 @@ std::string PresetStore::save(const std::string& name, const AxisValues& pose)
   }
   if (reason.empty())
   {
-    reason = write(presets);
+    reason = write(presets, speeds_);
   }
   if (reason.empty())
   {
@@ -292,13 +338,55 @@ std::string PresetStore::remove(const std::string& name)
   {
     reason = "no preset named '" + name + "'";
   }
+  std::map<std::string, double> speeds = speeds_;
+  speeds.erase(name);
   if (reason.empty())
   {
-    reason = write(presets);
+    reason = write(presets, speeds);
   }
   if (reason.empty())
   {
     presets_ = std::move(presets);
+    speeds_ = std::move(speeds);
+  }
+  return reason;
+}
+
+double PresetStore::speed(const std::string& name) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto speed = speeds_.find(name);
+  return speed == speeds_.end() ? 0.0 : speed->second;
+}
+
+std::string PresetStore::setSpeed(const std::string& name, double fraction)
+{
+  std::string reason = name == HOME ? "'home' runs at the default speed (~default_speed)" : checkPresetSpeed(fraction);
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (reason.empty())
+  {
+    reason = checkWritable();
+  }
+  if (reason.empty() && presets_.count(name) == 0)
+  {
+    reason = "no preset named '" + name + "'";
+  }
+  std::map<std::string, double> speeds = speeds_;
+  if (fraction > 0.0)
+  {
+    speeds[name] = fraction;
+  }
+  else
+  {
+    speeds.erase(name);
+  }
+  if (reason.empty())
+  {
+    reason = write(presets_, speeds);
+  }
+  if (reason.empty())
+  {
+    speeds_ = std::move(speeds);
   }
   return reason;
 }
@@ -328,9 +416,10 @@ std::string PresetStore::checkWritable() const
          load_error_;
 }
 
-std::string PresetStore::write(const std::map<std::string, AxisValues>& presets) const
+std::string PresetStore::write(const std::map<std::string, AxisValues>& presets,
+                               const std::map<std::string, double>& speeds) const
 {
-  return writeFileAtomically(path_, formatPresets(presets));
+  return writeFileAtomically(path_, formatPresets(presets, speeds));
 }
 
 }  // namespace ptz_action_server

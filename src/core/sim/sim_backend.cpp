@@ -1,5 +1,6 @@
 #include "ptz_action_server/core/sim/sim_backend.h"
 
+#include <algorithm>
 #include <limits>
 
 #include "ptz_action_server/core/text.h"
@@ -12,6 +13,8 @@ Capabilities simCapabilities(const SimDeviceConfig& config, const SimLensConfig&
 {
   Capabilities capabilities = config.capabilities();
   capabilities.lens = simLensCapabilities(lens);
+  // The simulated device takes the speed of a position move on every axis it has (its model's cruise speed).
+  capabilities.speed.control.fill(SpeedControl::DEVICE);
   return capabilities;
 }
 }  // namespace
@@ -97,10 +100,22 @@ void SimBackend::reportEvent()
 
 void SimBackend::goTo(const AxisValues& position)
 {
+  goToAtSpeed(position, AxisValues{});
+}
+
+void SimBackend::goToAtSpeed(const AxisValues& position, const AxisValues& speed)
+{
   std::lock_guard<std::mutex> lock(mutex_);
   if (!dropCommand())
   {
-    model_.goTo(position, clock_->now());
+    const TimePoint now = clock_->now();
+    for (Axis axis : ALL_AXES)
+    {
+      const double top = model_.config().axes[axis].motion.max_speed;
+      commanded_speed_[axis] = speed[axis] > 0.0 ? std::min(speed[axis], top) : top;
+      model_.setCruiseSpeed(axis, commanded_speed_[axis], now);
+    }
+    model_.goTo(position, now);
     planChanged();
   }
 }
@@ -197,6 +212,9 @@ void SimBackend::diagnostics(std::vector<DiagnosticValue>& values) const
   }
   values.emplace_back("commands received", std::to_string(commands_received_));
   values.emplace_back("commands lost in dropout", std::to_string(commands_lost_));
+  values.emplace_back(
+      "speed of the last position move (rad/s, rad/s, X/s)",
+      formatText("%.4f, %.4f, %.4f", commanded_speed_[PAN], commanded_speed_[TILT], commanded_speed_[ZOOM]));
   values.emplace_back("fault: stalled axes", stalled.empty() ? "none" : stalled);
   values.emplace_back("fault: lag (s)", formatText("%.3f", faults.lag));
   values.emplace_back("fault: dropout", dropout_ ? "yes" : "no");

@@ -201,10 +201,11 @@ std::string TourRunner::describeStop() const
          tour_.stops[stop_].preset + ") of tour '" + tour_.name + "'";
 }
 
-GoalCommand tourMoveCommand(const AxisValues& pose, double /*speed*/)
+GoalCommand tourMoveCommand(const AxisValues& pose, double speed)
 {
   GoalCommand command;
   command.values = pose;
+  command.speed.fraction = speed;
   return command;
 }
 

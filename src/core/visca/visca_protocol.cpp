@@ -101,6 +101,11 @@ Capabilities ViscaProtocol::capabilities() const
     capabilities.axes[ZOOM].widest_view = capabilities.axes[ZOOM].present;  // zoom direct 0000 is the wide end
   }
   capabilities.relative_moves = true;  // 8x 01 06 03
+  for (Axis axis : { PAN, TILT })  // the absolute move's speed bytes VV, WW, 1 the slowest; the zoom direct has none
+  {
+    capabilities.speed.control[axis] = SpeedControl::DEVICE;
+    capabilities.speed.min_speed[axis] = settings_.model.speedOfByte(axis, 1);
+  }
   capabilities.device_presets = true;  // memory set / recall (8x 01 04 3F)
   capabilities.device_home = true;     // 8x 01 06 04
   capabilities.lens = settings_.lens.capabilities();
@@ -228,7 +233,7 @@ void ViscaProtocol::keepAlive()
   channel_.queue(TransactionChannel::Request{ bytesOf(keep_alive_), PROBE, true, 0, true });
 }
 
-void ViscaProtocol::goTo(const AxisValues& position)
+void ViscaProtocol::goToAtSpeed(const AxisValues& position, const AxisValues& speed)
 {
   if (!session_.connected())
   {
@@ -236,11 +241,15 @@ void ViscaProtocol::goTo(const AxisValues& position)
   }
   channel_.clearQueue();  // what the previous command had not sent yet
   const visca::ViscaModel& model = settings_.model;
+  const auto speed_byte = [&](Axis axis) {
+    const std::uint8_t top = model.axes[axis].max_speed_byte;
+    return speed[axis] > 0.0 ? std::clamp<std::uint8_t>(model.speedByte(axis, speed[axis]), 1, top) : top;
+  };
   if (!std::isnan(position[PAN]) && !std::isnan(position[TILT]))
   {
-    queuePacket(visca::panTiltPosition(settings_.address, model.axes[PAN].max_speed_byte,
-                                       model.axes[TILT].max_speed_byte, model.toSteps(PAN, position[PAN]),
-                                       model.toSteps(TILT, position[TILT]), model.layout),
+    queuePacket(visca::panTiltPosition(settings_.address, speed_byte(PAN), speed_byte(TILT),
+                                       model.toSteps(PAN, position[PAN]), model.toSteps(TILT, position[TILT]),
+                                       model.layout),
                 COMMAND);
   }
   if (model.has_zoom && !std::isnan(position[ZOOM]))

@@ -122,6 +122,8 @@ public:
   /// `pan tilt zoom speed`, fractional degrees, the zoom through the table (left out as NaN); without a table or zoom
   /// feedback a zoom of 1 is `zoom=` MinZoom (the widest view), any other left out.
   void goTo(const AxisValues& position) override;
+  /// The absolute move's `speed=` (one for pan and tilt): the slower of the two axes' shares of their top speeds.
+  void goToAtSpeed(const AxisValues& position, const AxisValues& speed) override;
   /// `continuouspantiltmove` and `continuouszoommove`, scaled by the max speeds.
   void moveAtVelocity(const AxisValues& velocity) override;
   /// `move=stop` (the camera decelerates).
@@ -155,6 +157,8 @@ private:
   /// Finds the zoom X-factor (zoom_table_, zoom_source_); false when the set-up cannot go on (it said why).
   bool findZoomTable(const vapix::Limits& limits);
   Capabilities cameraCapabilities(const vapix::Limits& limits, const vapix::CommandList& commands) const;
+  /// `speed=` of the absolute move, 1..100 of the top speeds of pan and tilt; the zoom moves at its own speed.
+  MoveSpeedCapability moveSpeed() const;
   // PTZ control queue (axis_control_queue.cpp).
   /// Whether the channel queues PTZ control (control_queue_, queue_poll_time_), as the settings or the camera say.
   void findControlQueue();

@@ -48,6 +48,7 @@ public:
     session_->start();
   }
   void goTo(const AxisValues& position) override;
+  void goToAtSpeed(const AxisValues& position, const AxisValues& speed) override;
   void moveAtVelocity(const AxisValues& velocity) override;
   void stop() override;
   void aimInView(const ViewTarget& target) override;

@@ -54,6 +54,13 @@ public:
 
   /// The node's commands (see PtzBackend); each supersedes the previous one.
   virtual void goTo(const AxisValues& position) = 0;
+  /// goTo() at \p speed per axis (rad/s, X/s; 0: the device's own), on a protocol that takes a speed with its
+  /// absolute move (its capabilities().speed says which axes); by default the speed is not the device's business.
+  virtual void goToAtSpeed(const AxisValues& position, const AxisValues& speed)
+  {
+    (void)speed;
+    goTo(position);
+  }
   virtual void moveAtVelocity(const AxisValues& velocity) = 0;
   virtual void stop() = 0;
   /// Focus and iris (see PtzBackend::lens(); the node checked it against capabilities().lens). Not a node command:

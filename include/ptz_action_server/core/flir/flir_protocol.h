@@ -97,6 +97,8 @@ public:
   void poll() override;
   /// `CI PS TS PP TP`, the pan inverted (the unit's positive pan is counter-clockwise).
   void goTo(const AxisValues& position) override;
+  /// `PS` / `TS` before `PP` / `TP` at the goal's speed (the unit's top speed where it asks none).
+  void goToAtSpeed(const AxisValues& position, const AxisValues& speed) override;
   /// `CV` and signed `PS TS`.
   void moveAtVelocity(const AxisValues& velocity) override;
   /// `H` at once, ahead of anything queued.

@@ -16,6 +16,7 @@
 
 #include "ptz_action_server/core/backend.h"
 #include "ptz_action_server/core/goal/goal_monitor.h"
+#include "ptz_action_server/core/goal/move_speed.h"
 #include "ptz_action_server/core/types.h"
 
 namespace ptz_action_server
@@ -39,6 +40,8 @@ struct GoalCommand
   /// goes, and the goal is judged on what it reports (GoalMonitor::forView()).
   std::optional<ViewTarget> view;
   AxisValues values{};
+  /// The speed of a position goal (neither velocity nor track); left at 0, the operator's default speed.
+  SpeedRequest speed;
   /// What the conversion left out of the goal ("zoom offset 2.0000 X ignored: ..."): goes into the goal's texts
   /// with the validation's notes.
   std::string note;
@@ -126,6 +129,14 @@ public:
    */
   void submit(std::unique_ptr<GoalHandle> goal, const PtzSample& current, const ConvertedGoal& converted);
 
+  /// Sets the speed position goals run at when they ask none (a fraction of each axis' top speed, in (0, 1]); from
+  /// the next goal on. Returns "" or why \p fraction is refused (checkDefaultSpeed()), keeping the one it had.
+  std::string setDefaultSpeed(double fraction);
+  double defaultSpeed() const
+  {
+    return default_speed_;
+  }
+
   /// Stops the device if the goal \p id of \p action is the active one; it ends once the device rests.
   void cancel(const std::string& action, const std::string& id);
 
@@ -172,9 +183,10 @@ public:
   }
 
 private:
-  /// Makes \p goal the active one and commands the device; the goal is judged on the \p judged axes only.
+  /// Makes \p goal the active one and commands the device (a position goal at \p speed, see goToAtSpeed()); the goal
+  /// is judged on the \p judged axes only.
   void activate(std::unique_ptr<GoalHandle> goal, const GoalCommand& command,
-                const std::array<bool, AXIS_COUNT>& judged, const std::string& note);
+                const std::array<bool, AXIS_COUNT>& judged, const std::string& note, const AxisValues& speed);
   /// The final status text keeps the note of the accepted goal (clamping, a zoom ignored).
   std::string withNote(const std::string& text) const;
   /// supervise() for a sample known to belong to the active goal, judged as at \p taken_at.
@@ -193,6 +205,7 @@ private:
   const std::shared_ptr<const Clock> clock_;
 
   // Touched only on the supervisor's thread.
+  double default_speed_ = FULL_SPEED;  ///< the operator's speed of position goals that ask none
   std::unique_ptr<GoalHandle> active_goal_;
   std::string note_;  ///< what validation changed in the active goal (clamping, a zoom ignored), empty if nothing
   std::unique_ptr<GoalMonitor> monitor_;

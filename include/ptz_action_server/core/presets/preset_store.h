@@ -55,6 +55,13 @@ public:
   /// Every preset: home first, then the saved ones by name.
   std::vector<NamedPose> list() const;
 
+  /// The speed a goal to preset \p name runs at, a fraction (0, 1] of the top speed; 0: the default speed (home, a
+  /// preset without one, or none of that name).
+  double speed(const std::string& name) const;
+  /// Sets the speed of the saved preset \p name (0: the default speed) and writes the file; "" or the reason it did
+  /// not. Saving the preset's pose again keeps it; deleting the preset deletes it.
+  std::string setSpeed(const std::string& name, double fraction);
+
   /// "" or why the file could not be read at load() (changes are refused while it is not "").
   std::string loadError() const;
 
@@ -68,7 +75,8 @@ public:
 
 private:
   /// Writes \p presets to the file atomically; "" or the reason.
-  std::string write(const std::map<std::string, AxisValues>& presets) const;
+  std::string write(const std::map<std::string, AxisValues>& presets,
+                    const std::map<std::string, double>& speeds) const;
   /// "" when the store may change, else why not.
   std::string checkWritable() const;
 
@@ -76,6 +84,7 @@ private:
   const AxisValues home_;
   mutable std::mutex mutex_;
   std::map<std::string, AxisValues> presets_;  ///< saved presets by name (never home)
+  std::map<std::string, double> speeds_;       ///< the saved presets' speeds, where they have one (> 0)
   std::string load_error_;
 };
 

@@ -41,6 +41,8 @@ public:
   Capabilities capabilities() const override;
   void start() override;
   void goTo(const AxisValues& position) override;
+  /// The model's cruise speeds set to \p speed (its max speed where 0) for this move: the sim takes a speed itself.
+  void goToAtSpeed(const AxisValues& position, const AxisValues& speed) override;
   void moveAtVelocity(const AxisValues& velocity) override;
   void stop() override;
   PtzSample sample() const override;
@@ -81,6 +83,7 @@ private:
   PtzSample frozen_sample_;                  ///< what the device last said before it dropped out
   std::uint64_t commands_received_ = 0;
   std::uint64_t commands_lost_ = 0;
+  AxisValues commanded_speed_{};  ///< the cruise speeds of the last position move (its max speed where 0)
 };
 
 }  // namespace ptz_action_server

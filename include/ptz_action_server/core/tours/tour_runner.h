@@ -144,8 +144,8 @@ private:
  * \brief The command of a move of the tours (a stop, the idle return) to \p pose at \p speed, a fraction of the
  * device's top speed (0: the default).
  *
- * Every move of the tours goes through here. Position goals have no speed yet: \p speed is carried by the tours and
- * dropped here, where it joins the command once GoalCommand takes one.
+ * Every move of the tours goes through here; the supervisor resolves the speed against the device as for
+ * move_ptz/position_abs_speed (GoalCommand::speed).
  */
 GoalCommand tourMoveCommand(const AxisValues& pose, double speed);
 

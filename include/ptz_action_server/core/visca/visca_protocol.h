@@ -130,7 +130,12 @@ public:
   }
   /// The pan-tilt and zoom inquiries, whenever the line is free.
   void poll() override;
-  void goTo(const AxisValues& position) override;
+  void goTo(const AxisValues& position) override
+  {
+    goToAtSpeed(position, AxisValues{});
+  }
+  /// The pan-tilt absolute move's speed bytes (VV, WW) at \p speed, the nearest byte (1 at the slowest).
+  void goToAtSpeed(const AxisValues& position, const AxisValues& speed) override;
   void moveAtVelocity(const AxisValues& velocity) override;
   /// The pan-tilt drive stop at once, ahead of anything queued, then the zoom stop.
   void stop() override;

@@ -38,6 +38,9 @@ struct ClassifiedCommand
   bool aims = false;  ///< the command carries a pan it aims at (pan)
   double pan = 0.0;   ///< rad, the contract's sign (positive: clockwise seen from above)
   double wire = 0.0;  ///< s it took on the wire (a serial line's bytes at its baud rate; 0 on a network)
+  /// rad/s a position move says the pan goes at (VISCA's VV, Pelco-D's, Axis' speed=, ...), as the device reads it;
+  /// 0 where the command says none.
+  double pan_speed = 0.0;
 };
 
 /// \p size bytes at \p data as upper-case hex pairs separated by spaces ("81 01 06 01 FF"), for
