@@ -46,6 +46,7 @@ ptz_protocol(pelco_d
 ptz_protocol(visca
   CORE src/core/visca/visca_codec.cpp src/core/visca/visca_model.cpp src/core/visca/visca_presets.cpp
     src/core/visca/visca_lens.cpp src/core/visca/visca_protocol.cpp src/core/visca/visca_protocol_lens.cpp
+    src/core/visca/visca_settings.cpp
     src/core/visca/visca_replies.cpp
   PLUGIN src/plugins/visca_backend_plugin.cpp
   EMULATOR src/emulators/visca_emulator.cpp src/emulators/visca_emulator_answers.cpp

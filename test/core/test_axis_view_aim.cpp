@@ -18,6 +18,7 @@
 #include "ptz_action_server/core/capabilities.h"
 #include "ptz_action_server/emulators/axis_camera_emulator.h"
 #include "wait_until.h"
+#include "view_target_support.h"
 
 namespace ptz_action_server
 {
@@ -76,14 +77,7 @@ struct AimingCamera
 
   static ViewTarget at(double x, double y, double box = 0.0)
   {
-    ViewTarget target;
-    target.x = x;
-    target.y = y;
-    target.box_width = box;
-    target.box_height = box;
-    target.image_width = 640;
-    target.image_height = 360;
-    return target;
+    return viewTargetAt(x, y, box);
   }
 
   AxisCameraEmulator camera;

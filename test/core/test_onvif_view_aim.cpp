@@ -17,6 +17,7 @@
 #include "ptz_action_server/core/onvif/onvif_codec.h"
 #include "ptz_action_server/core/onvif/onvif_xml.h"
 #include "wait_until.h"
+#include "view_target_support.h"
 
 namespace ptz_action_server
 {
@@ -111,14 +112,7 @@ struct AimingCamera
 
   static ViewTarget at(double x, double y, double box = 0.0)
   {
-    ViewTarget target;
-    target.x = x;
-    target.y = y;
-    target.box_width = box;
-    target.box_height = box;
-    target.image_width = 640;
-    target.image_height = 360;
-    return target;
+    return viewTargetAt(x, y, box);
   }
 
   OnvifCameraEmulator camera;

@@ -3,6 +3,8 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <vector>
 
 #include <fcntl.h>
@@ -99,6 +101,34 @@ std::string writeFileAtomically(const std::string& path, const std::string& text
   // The new file is in place whatever this says; a failed directory fsync only leaves the rename less durable, and
   // reporting it as a failed save would make the caller's view of the presets differ from the file's.
   syncDirectory(directory.string());
+  return {};
+}
+
+std::string readStoredFile(const std::string& path, std::optional<std::string>& text)
+{
+  text.reset();
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (status.type() == fs::file_type::not_found)
+  {
+    return {};  // no file yet
+  }
+  if (error)
+  {
+    return "cannot read " + path + ": " + error.message();
+  }
+  if (status.type() != fs::file_type::regular)
+  {
+    return path + " is not a regular file";
+  }
+  std::ifstream file(path);
+  std::stringstream content;
+  content << file.rdbuf();
+  if (!file)
+  {
+    return systemError("cannot read", path);
+  }
+  text = content.str();
   return {};
 }
 

@@ -3,12 +3,7 @@
 #include "ptz_action_server/core/presets/atomic_file.h"
 
 #include <charconv>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <yaml-cpp/yaml.h>
 
@@ -16,16 +11,9 @@ namespace ptz_action_server
 {
 namespace
 {
-namespace fs = std::filesystem;
-
 constexpr const char* PRESETS_KEY = "presets";
 constexpr const char* HEADER = "# ptz_action_server presets: pan and tilt in rad, zoom as X-factor.\n"
                                "# Rewritten on every save and delete: edit it only while the node is stopped.\n";
-
-std::string systemError(const std::string& what, const std::string& path)
-{
-  return what + " " + path + ": " + std::strerror(errno);
-}
 
 /// The shortest text that reads back as exactly \p value.
 std::string exactText(double value)
@@ -229,46 +217,23 @@ std::string PresetStore::load()
 {
   std::map<std::string, AxisValues> presets;
   std::map<std::string, double> speeds;
-  std::string reason;
-  std::error_code error;
-  const fs::file_status status = fs::status(path_, error);
-  if (status.type() == fs::file_type::not_found)
+  std::optional<std::string> text;
+  std::string reason = readStoredFile(path_, text);
+  if (text)
   {
-    // No file yet: no presets yet.
-  }
-  else if (error)
-  {
-    reason = "cannot read " + path_ + ": " + error.message();
-  }
-  else if (status.type() != fs::file_type::regular)
-  {
-    reason = path_ + " is not a regular file";
-  }
-  else
-  {
-    std::ifstream file(path_);
-    std::stringstream text;
-    text << file.rdbuf();
-    if (!file)
+    try
     {
-      reason = systemError("cannot read", path_);
+      reason = readPresets(YAML::Load(*text), presets, speeds);
     }
-    else
+    catch (const YAML::Exception& exception)
     {
-      try
-      {
-        reason = readPresets(YAML::Load(text.str()), presets, speeds);
-      }
-      catch (const YAML::Exception& exception)
-      {
-        reason = exception.what();
-      }
-      if (!reason.empty())
-      {
-        reason = "cannot read the presets in " + path_ + ": " + reason;
-        presets.clear();
-        speeds.clear();
-      }
+      reason = exception.what();
+    }
+    if (!reason.empty())
+    {
+      reason = "cannot read the presets in " + path_ + ": " + reason;
+      presets.clear();
+      speeds.clear();
     }
   }
   std::lock_guard<std::mutex> lock(mutex_);

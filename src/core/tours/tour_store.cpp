@@ -2,10 +2,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <system_error>
 #include <utility>
 
 #include <yaml-cpp/yaml.h>
@@ -174,29 +170,12 @@ TourStore::TourStore(std::string path) : path_(std::move(path))
 
 std::string TourStore::load()
 {
-  namespace fs = std::filesystem;
   std::map<std::string, Tour> tours;
-  std::string reason;
-  std::error_code error;
-  const fs::file_status status = fs::status(path_, error);
-  if (status.type() == fs::file_type::not_found)
+  std::optional<std::string> text;
+  std::string reason = readStoredFile(path_, text);
+  if (text)
   {
-    // No file yet: no tours yet.
-  }
-  else if (error)
-  {
-    reason = "cannot read " + path_ + ": " + error.message();
-  }
-  else if (status.type() != fs::file_type::regular)
-  {
-    reason = path_ + " is not a regular file";
-  }
-  else
-  {
-    std::ifstream file(path_);
-    std::stringstream text;
-    text << file.rdbuf();
-    reason = file ? parseTours(text.str(), tours) : "the file cannot be read";
+    reason = parseTours(*text, tours);
     if (!reason.empty())
     {
       reason = "cannot read the tours in " + path_ + ": " + reason;

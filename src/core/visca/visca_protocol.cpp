@@ -20,47 +20,6 @@ constexpr std::uint32_t RESETS_BEFORE_GOING_ON = 2;
 constexpr std::uint32_t TIMEOUTS_BEFORE_CYCLE = 1;
 }  // namespace
 
-bool parseViscaFraming(const std::string& text, ViscaFraming& framing)
-{
-  if (text == "raw" || text == "sony_ip")
-  {
-    framing = text == "raw" ? ViscaFraming::RAW : ViscaFraming::SONY_IP;
-    return true;
-  }
-  return false;
-}
-
-const char* toString(ViscaFraming framing)
-{
-  return framing == ViscaFraming::RAW ? "raw" : "sony_ip";
-}
-
-bool parseViscaZoomDrive(const std::string& text, ViscaZoomDrive& drive)
-{
-  for (ViscaZoomDrive candidate : { ViscaZoomDrive::AUTO, ViscaZoomDrive::VARIABLE, ViscaZoomDrive::STANDARD })
-  {
-    if (text == toString(candidate))
-    {
-      drive = candidate;
-      return true;
-    }
-  }
-  return false;
-}
-
-const char* toString(ViscaZoomDrive drive)
-{
-  switch (drive)
-  {
-    case ViscaZoomDrive::VARIABLE:
-      return "variable";
-    case ViscaZoomDrive::STANDARD:
-      return "standard";
-    default:
-      return "auto";
-  }
-}
-
 ViscaProtocol::ViscaProtocol(const ViscaSettings& settings, DeviceSession& session)
   : settings_(settings)
   , serial_(session.linkConfig().kind == LinkKind::SERIAL)
