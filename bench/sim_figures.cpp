@@ -171,24 +171,35 @@ void stormFigures(ros::NodeHandle& node_handle, SharedCounters* counters, pid_t 
     threads.emplace_back([&, index]() {
       actionlib::ActionClient<PtzAction> storm_client(node_handle, "move_ptz/position_abs");
       storm_client.waitForActionServerToStart(ros::Duration(10.0));
-      std::vector<actionlib::ClientGoalHandle<PtzAction>> handles;
+      // Each goal counts once as it ends; ended handles are let go, since actionlib's client matches every status
+      // list against every handle it tracks (keeping them all made its cost grow with the square of the storm's
+      // length, until a 40 s storm's last results came after the deadline).
+      using Handle = actionlib::ClientGoalHandle<PtzAction>;
+      std::vector<Handle> handles;
+      const auto count_done = [&goals_done](Handle handle) {
+        goals_done += handle.getCommState() == actionlib::CommState::DONE;
+      };
       ros::WallRate rate(50.0);
       int round = 0;
       while (storming)
       {
-        handles.push_back(storm_client.sendGoal(makePtzGoal(0.5 * std::sin(0.05 * round + index), 0.1 * index, 1.0)));
+        handles.erase(
+            std::remove_if(handles.begin(), handles.end(),
+                           [](const Handle& handle) { return handle.getCommState() == actionlib::CommState::DONE; }),
+            handles.end());
         ++goals_sent;
+        handles.push_back(
+            storm_client.sendGoal(makePtzGoal(0.5 * std::sin(0.05 * round + index), 0.1 * index, 1.0), count_done));
         ++round;
         rate.sleep();
       }
       const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(10.0);
-      for (auto& handle : handles)
+      for (Handle& handle : handles)
       {
         while (handle.getCommState() != actionlib::CommState::DONE && ros::WallTime::now() < deadline)
         {
           ros::WallDuration(0.01).sleep();
         }
-        goals_done += handle.getCommState() == actionlib::CommState::DONE;
       }
     });
   }

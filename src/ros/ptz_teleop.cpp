@@ -80,18 +80,23 @@ void TeleopGoals::execute(const std::vector<TeleopCommand>& commands)
                             node_handle_.resolveName("move_ptz/velocity").c_str());
         }
         velocity_client_.sendGoal(makePtzGoal(command.velocity[PAN], command.velocity[TILT], command.velocity[ZOOM]));
+        sent_stamp_ = ros::Time::now();
         sent_ = Sent::VELOCITY;
         last_command_ = formatText("velocity pan %+.2f tilt %+.2f zoom %+.2f", command.velocity[PAN],
                                    command.velocity[TILT], command.velocity[ZOOM]);
         break;
       case TeleopCommand::Type::STOP:
+        // A stop often comes a millisecond after its goal, before the node's first status of it: cancelGoal() would
+        // put the handle where a status list sent before the goal reached the node reads as "goal LOST" (and its
+        // result then comes to a handle already DONE). A cancel by time leaves the handle waiting for its first
+        // status, and cancels the same goal (and only older ones, which it preempted).
         if (sent_ == Sent::VELOCITY && !velocity_client_.getState().isDone())
         {
-          velocity_client_.cancelGoal();
+          velocity_client_.cancelGoalsAtAndBeforeTime(sent_stamp_);
         }
         else if (sent_ == Sent::PRESET && !preset_client_.getState().isDone())
         {
-          preset_client_.cancelGoal();
+          preset_client_.cancelGoalsAtAndBeforeTime(sent_stamp_);
         }
         sent_ = Sent::NONE;
         last_command_ = "stop";
@@ -105,6 +110,7 @@ void TeleopGoals::execute(const std::vector<TeleopCommand>& commands)
           break;
         }
         preset_client_.sendGoal(goal);
+        sent_stamp_ = ros::Time::now();
         sent_ = Sent::PRESET;
         last_command_ = "preset " + goal.name;
         break;

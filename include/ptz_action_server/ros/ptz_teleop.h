@@ -27,8 +27,9 @@ TeleopConfig loadTeleopConfig(const ParamReader& params);
 
 /**
  * \brief Sends what a TeleopController decides to one camera: goals to move_ptz/velocity and move_ptz/preset in
- * \p node_handle's namespace (the camera's: /ptz); a stop cancels the goal it sent last. A preset without a name is
- * the saved preset of its rank in move_ptz/list_presets (home excluded), asked for when it is wanted.
+ * \p node_handle's namespace (the camera's: /ptz); a stop cancels the goal it sent last, by its time (see execute()). A
+ * preset without a name is the saved preset of its rank in move_ptz/list_presets (home excluded), asked for when it is
+ * wanted.
  *
  * Used from one thread (the action clients' callbacks may run on another: they only update their own state).
  */
@@ -66,6 +67,7 @@ private:
 
   ros::NodeHandle node_handle_;
   Sent sent_ = Sent::NONE;
+  ros::Time sent_stamp_;  ///< the time sendGoal() of the last goal returned: its goal_id stamp is no later
   std::string last_command_;
   actionlib::SimpleActionClient<PtzAction> velocity_client_;
   actionlib::SimpleActionClient<PtzPresetAction> preset_client_;
