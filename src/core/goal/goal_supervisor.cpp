@@ -48,7 +48,7 @@ void GoalSupervisor::submit(std::unique_ptr<GoalHandle> goal, const PtzSample& c
     {
       judged[axis] = limits_.axes[axis].present;
     }
-    activate(std::move(goal), command, judged, command.note);
+    activate(std::move(goal), command, judged, command.note, AxisValues{});
     return;
   }
   // A tracked target outside the limits is followed as far as the limits allow.
