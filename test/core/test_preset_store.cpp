@@ -1,13 +1,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "ptz_action_server/core/presets/preset_store.h"
+#include "store_file_test_support.h"
 
 using namespace ptz_action_server;
 
@@ -17,33 +15,11 @@ namespace fs = std::filesystem;
 
 const AxisValues HOME_POSE{ { 0.25, -0.125, 2.0 } };
 
-/// A fresh directory under the system's temporary directory, removed with its content at the end of the test.
-class PresetStoreTest : public ::testing::Test
+class PresetStoreTest : public StoreFileTest
 {
 protected:
-  void SetUp() override
+  PresetStoreTest() : StoreFileTest("presets.yaml")
   {
-    std::string pattern = (fs::temp_directory_path() / "ptz_presets_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    directory_ = pattern;
-    path_ = (directory_ / "presets.yaml").string();
-  }
-  void TearDown() override
-  {
-    std::error_code ignored;
-    fs::remove_all(directory_, ignored);
-  }
-
-  std::string readFile() const
-  {
-    std::ifstream file(path_);
-    std::stringstream text;
-    text << file.rdbuf();
-    return text.str();
-  }
-  void writeFile(const std::string& text) const
-  {
-    std::ofstream(path_) << text;
   }
   /// Names of the files in the directory, to find stray temporary files.
   std::vector<std::string> files() const
@@ -55,9 +31,6 @@ protected:
     }
     return names;
   }
-
-  fs::path directory_;
-  std::string path_;
 };
 
 TEST_F(PresetStoreTest, MissingFileMeansNoPresetsButHome)

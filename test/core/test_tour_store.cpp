@@ -1,13 +1,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "ptz_action_server/core/tours/tour_store.h"
+#include "store_file_test_support.h"
 
 using namespace ptz_action_server;
 
@@ -15,37 +13,12 @@ namespace
 {
 namespace fs = std::filesystem;
 
-/// A fresh directory under the system's temporary directory, removed with its content at the end of the test.
-class TourStoreTest : public ::testing::Test
+class TourStoreTest : public StoreFileTest
 {
 protected:
-  void SetUp() override
+  TourStoreTest() : StoreFileTest("sub/tours.yaml")
   {
-    std::string pattern = (fs::temp_directory_path() / "ptz_tours_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    directory_ = pattern;
-    path_ = (directory_ / "sub" / "tours.yaml").string();
   }
-  void TearDown() override
-  {
-    std::error_code ignored;
-    fs::remove_all(directory_, ignored);
-  }
-  std::string readFile() const
-  {
-    std::ifstream file(path_);
-    std::stringstream text;
-    text << file.rdbuf();
-    return text.str();
-  }
-  void writeFile(const std::string& text) const
-  {
-    fs::create_directories(fs::path(path_).parent_path());
-    std::ofstream(path_) << text;
-  }
-
-  fs::path directory_;
-  std::string path_;
 };
 
 const Tour GATE_ROUND{ "gate round", { { "gate", 10.0, 0.5 }, { "yard", 0.1, 0.0 }, { "home", 2.5, 1.0 } } };
