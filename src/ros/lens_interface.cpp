@@ -47,10 +47,14 @@ LensInterface::LensInterface(const ros::NodeHandle& node_handle, std::shared_ptr
   , commander_(*backend_, lens, backend_name, config.velocity_timeout)
   , deadman_timer_(node_handle_.getCallbackQueue(), [this] { expire(); })
   , state_timer_(node_handle_.getCallbackQueue(), [this] { publishState(); })
+  , state_period_(1.0 / config.state_rate)
 {
   capabilities_publisher_ = node_handle_.advertise<PtzLensCapabilities>("lens_capabilities", 1, true);
   capabilities_publisher_.publish(toLensMessage(backend_name_, lens_));
-  state_publisher_ = node_handle_.advertise<PtzLensState>("lens_state", 1, true);
+  // The state is sampled only while someone listens: at rest with nobody listening the timer never wakes.
+  state_publisher_ = node_handle_.advertise<PtzLensState>(
+      "lens_state", 1, [this](const ros::SingleSubscriberPublisher&) { followListeners(); },
+      [this](const ros::SingleSubscriberPublisher&) { followListeners(); }, ros::VoidConstPtr(), true);
   const auto velocity = [this](LensFunction function) {
     return [this, function](const std_msgs::Float64::ConstPtr& message) {
       sendFromTopic(LensCommand::velocity(function, message->data));
@@ -75,7 +79,7 @@ LensInterface::LensInterface(const ros::NodeHandle& node_handle, std::shared_ptr
       });
   one_push_ = node_handle_.advertiseService("focus/one_push", &LensInterface::onePush, this);
   publishState();  // latched: a late subscriber gets the lens as it was at start-up at least
-  state_timer_.startPeriodic(1.0 / config.state_rate);
+  followListeners();
 }
 
 LensInterface::~LensInterface()
@@ -127,6 +131,21 @@ void LensInterface::expire()
               lensFunctionName(function));
   }
   deadman_timer_.startAt(commander_.nextDeadline());
+}
+
+void LensInterface::followListeners()
+{
+  const std::lock_guard<std::mutex> lock(state_timer_mutex_);  // the constructor's thread and the node's queue
+  const bool listened = state_publisher_.getNumSubscribers() > 0;
+  if (listened && !state_timer_running_)
+  {
+    state_timer_.startPeriodic(state_period_);
+  }
+  else if (!listened && state_timer_running_)
+  {
+    state_timer_.stop();
+  }
+  state_timer_running_ = listened;
 }
 
 void LensInterface::publishState()

@@ -21,6 +21,7 @@ TEST_F(GoalSupervisorTest, APositionGoalGivesFeedbackUntilTheDeviceRestsInsideTh
   EXPECT_TRUE(goal->end.empty());
   EXPECT_TRUE(supervisor_.goalActive());
   EXPECT_EQ(supervisor_.mode(), GoalMode::POSITION);
+  EXPECT_TRUE(goal->feedback.empty()) << "feedback comes with the state tick, not with the goal";
 
   backend_->at({ 0.4, -0.1, 1.0 }, true);
   tick();

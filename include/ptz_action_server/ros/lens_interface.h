@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <string>
 
 #include <ros/ros.h>
@@ -64,6 +65,8 @@ private:
   bool onePush(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
   void expire();
   void publishState();
+  /// Runs the state timer while lens_state has a subscriber, stops it when the last one leaves (on the node's queue).
+  void followListeners();
 
   ros::NodeHandle node_handle_;
   std::shared_ptr<PtzBackend> backend_;
@@ -82,8 +85,11 @@ private:
   ros::ServiceServer one_push_;
   PtzLensState state_message_;  ///< reused for every publication
   bool state_published_ = false;
-  QueueTimer deadman_timer_;  ///< the next velocity's end
-  QueueTimer state_timer_;    ///< lens_state
+  QueueTimer deadman_timer_;   ///< the next velocity's end
+  QueueTimer state_timer_;     ///< lens_state, while someone listens
+  const double state_period_;  ///< s
+  std::mutex state_timer_mutex_;
+  bool state_timer_running_ = false;  ///< under state_timer_mutex_
 };
 
 }  // namespace ptz_action_server

@@ -167,8 +167,10 @@ void GoalSupervisor::activate(std::unique_ptr<GoalHandle> goal, const GoalComman
   {
     activity_listener_(active_goal_.get());
   }
-  // A goal the device already satisfies (zero length, or a stop while at rest) ends here, not a tick later.
-  judge(backend_->sample(), true, clock_->now());
+  // A goal the device already satisfies (zero length, or a stop while at rest) ends here, not a tick later. Its
+  // feedback waits for the state tick: a goal replaced within milliseconds (a joystick, a storm of clients) would
+  // otherwise send one feedback to every client of the action, as many messages as results.
+  judge(backend_->sample(), false, clock_->now());
 }
 
 void GoalSupervisor::cancel(const std::string& action, const std::string& id)
