@@ -37,7 +37,9 @@ void ViscaProtocol::pollLens()
   // One lens inquiry a round at most, so that a round on a 9600 baud line grows by one exchange, never three.
   const double period = settings_.lens.poll_period;
   const TimePoint now = session_.now();
-  if (period <= 0.0 || (lens_polled_at_ != TimePoint{} && secondsBetween(lens_polled_at_, now) < period))
+  // Only once the camera answered the pose: a camera that answers no inquiry is learnt from those alone.
+  if (period <= 0.0 || inquiry_answers_ == 0 ||
+      (lens_polled_at_ != TimePoint{} && secondsBetween(lens_polled_at_, now) < period))
   {
     return;
   }
