@@ -105,7 +105,7 @@ void ViscaEmulator::answerInquiry(const visca::Packet& packet, TimePoint at, Rep
   {
     answer.push_back(0x02);  // on
   }
-  else
+  else if (!answerLensInquiry(packet, at, answer))
   {
     ++counters_.syntax_errors;
     replies.push_back(reply(ERROR, { visca::SYNTAX }));

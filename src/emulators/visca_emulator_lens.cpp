@@ -100,6 +100,31 @@ std::uint8_t ViscaEmulator::runLens(const visca::Packet& packet, TimePoint at)
   return visca::SYNTAX;
 }
 
+bool ViscaEmulator::answerLensInquiry(const visca::Packet& packet, TimePoint at, visca::Packet& answer) const
+{
+  const visca::ViscaLens& lens = config_.lens;
+  const std::uint8_t address = config_.address;
+  const LensState state = lensStateOf(lens_model_, at);
+  if (lens.focus && packet == visca::focusModeInquiry(address))
+  {
+    answer.push_back(state.modeOf(LensFunction::FOCUS) == LensMode::AUTO ? 0x02 : 0x03);
+  }
+  else if (lens.focus && packet == visca::focusPositionInquiry(address))
+  {
+    visca::putNibbles(answer, lens.focusPosition(state.positionOf(LensFunction::FOCUS)), 4);
+  }
+  else if (lens.iris && packet == visca::irisPositionInquiry(address))
+  {
+    answer.insert(answer.end(), { 0x00, 0x00 });
+    visca::putNibbles(answer, lens.irisPosition(state.positionOf(LensFunction::IRIS)), 2);
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+
 LensState ViscaEmulator::lensState() const
 {
   std::lock_guard<std::mutex> lock(mutex_);

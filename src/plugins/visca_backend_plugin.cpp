@@ -128,6 +128,7 @@ void readViscaSettings(const ParamReader& params, ViscaSettings& visca)
   visca.lens.iris = iris.flag("present", visca.lens.iris);
   visca.lens.iris_closed = static_cast<std::uint8_t>(iris.integer("closed", visca.lens.iris_closed, 0, 0xFF));
   visca.lens.iris_open = static_cast<std::uint8_t>(iris.integer("open", visca.lens.iris_open, 0, 0xFF));
+  visca.lens.poll_period = params.child("lens").number("poll_period", visca.lens.poll_period, 0.0, 60.0);
   visca.sequence_cycle = static_cast<std::uint32_t>(params.integer("sequence_cycle", 0, 0, 1 << 30));
   const std::string problem = visca.model.check();
   if (!problem.empty())

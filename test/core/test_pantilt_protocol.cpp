@@ -11,6 +11,8 @@
 #include <functional>
 #include <thread>
 
+#include "ptz_action_server/core/units.h"
+
 #include "ptz_action_server/core/pantilt/pantilt_protocol.h"
 #include "ptz_action_server/emulators/pantilt_emulator.h"
 #include "ptz_action_server/emulators/ports/udp_socket.h"
@@ -146,6 +148,61 @@ TEST_P(PanTiltUdpTest, VelocityGoalsMoveAndStop)
   // The next position goal runs at the configured speed again.
   backend_->goTo({ 2.0, 0.0, 1.0 });
   EXPECT_TRUE(waitUntil([&] { return backend_->sample().velocity[PAN] > 1.4; }, 10.0));
+}
+
+TEST_P(PanTiltUdpTest, AGoalsSpeedIsItsMotorSpeeds)
+{
+  const WireFormat format = GetParam();
+  const Capabilities capabilities = backend_->capabilities();
+  EXPECT_EQ(capabilities.speed.control[PAN], SpeedControl::DEVICE);
+  EXPECT_EQ(capabilities.speed.control[TILT], SpeedControl::DEVICE);
+  EXPECT_NEAR(capabilities.speed.min_speed[PAN], 0.015, 1e-9);  // 1 % of pan/max_speed 1.5 rad/s
+  device_->received().clear();
+  // 0.75 of 1.5 rad/s: 50 %; 0.1 of 1.0 rad/s: 10 %.
+  backend_->goToAtSpeed({ 1.0, 0.3, 1.0 }, { 0.75, 0.1, 0.0 });
+  ASSERT_TRUE(waitUntil([&] { return commandsReceived(*device_).size() >= 3; }, 10.0));
+  // Golden SET_PARAMs (published-wire-facts.md 2.1: `01 01 MINOR id:i32 value:f32`; PAN_MOTOR_SPEED is 7 in the
+  // seed's ids and 5 in v1.x's, TILT_MOTOR_SPEED 8 and 6).
+  const Bytes golden_pan[] = { { 0x01, 0x01, 0x00, 0x07, 0x00, 0x00, 0x00, 0x00, 0x00, 0x48, 0x42 },
+                               { 0x01, 0x01, 0x00, 0x05, 0x00, 0x00, 0x00, 0x00, 0x00, 0x48, 0x42 },
+                               { 0x01, 0x01, 0x01, 0x05, 0x00, 0x00, 0x00, 0x00, 0x00, 0x48, 0x42 } };
+  const Bytes golden_tilt[] = { { 0x01, 0x01, 0x00, 0x08, 0x00, 0x00, 0x00, 0x00, 0x00, 0x20, 0x41 },
+                                { 0x01, 0x01, 0x00, 0x06, 0x00, 0x00, 0x00, 0x00, 0x00, 0x20, 0x41 },
+                                { 0x01, 0x01, 0x01, 0x06, 0x00, 0x00, 0x00, 0x00, 0x00, 0x20, 0x41 } };
+  const std::size_t row = format == WireFormat::SEED ? 0 : (format == WireFormat::V1_0 ? 1 : 2);
+  const std::vector<Bytes> commands = commandsReceived(*device_);
+  EXPECT_EQ(commands[0], golden_pan[row]);
+  EXPECT_EQ(commands[1], golden_tilt[row]);
+  if (hasCommandArguments(format))
+  {
+    EXPECT_EQ(commands[2], commandFrame(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, format,
+                                        static_cast<float>(toDegrees(1.0)), static_cast<float>(toDegrees(0.3))));
+  }
+  // The device took them and cruises at them.
+  EXPECT_FLOAT_EQ(device_->panTilt().getParam(PanTiltParam::PAN_MOTOR_SPEED), 50.0f);
+  EXPECT_FLOAT_EQ(device_->panTilt().getParam(PanTiltParam::TILT_MOTOR_SPEED), 10.0f);
+  double fastest = 0.0;
+  ASSERT_TRUE(waitUntil(
+      [&] {
+        const PtzSample device = device_->panTilt().sample();
+        fastest = std::max(fastest, device.velocity[PAN]);
+        return std::abs(device.position[PAN] - 1.0) < 1e-3 && !device.moving;
+      },
+      20.0));
+  EXPECT_NEAR(fastest, 0.75, 0.01);
+  EXPECT_TRUE(waitForRest(1.0, 0.3));
+
+  // Above the configured speed it is the configured speed; below 1 % it is 1 %; without a speed, the configured.
+  device_->received().clear();
+  backend_->goToAtSpeed({ 0.9, 0.3, 1.0 }, { 9.0, 1e-4, 0.0 });
+  ASSERT_TRUE(waitUntil([&] { return commandsReceived(*device_).size() >= 2; }, 10.0));
+  EXPECT_EQ(commandsReceived(*device_)[0], setParamFrame(PanTiltParam::PAN_MOTOR_SPEED, 100.0f, format));
+  EXPECT_EQ(commandsReceived(*device_)[1], setParamFrame(PanTiltParam::TILT_MOTOR_SPEED, 1.0f, format));
+  device_->received().clear();
+  backend_->goTo({ 0.8, 0.3, 1.0 });
+  ASSERT_TRUE(waitUntil([&] { return commandsReceived(*device_).size() >= 2; }, 10.0));
+  EXPECT_EQ(commandsReceived(*device_)[1], setParamFrame(PanTiltParam::TILT_MOTOR_SPEED, 100.0f, format));
+  EXPECT_TRUE(waitForRest(0.8, 0.3));
 }
 
 TEST_P(PanTiltUdpTest, MalformedDatagramsAreCountedOnceAndDropped)

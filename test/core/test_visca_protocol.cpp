@@ -229,6 +229,7 @@ protected:
     config_.link.local_host = "127.0.0.1";
     config_.session.state_timeout = 60.0;  // the lost answers below are the test's, not a silence of the link
     config_.session.startup_timeout = WAIT;
+    config_.settings.lens.poll_period = 0.0;  // rounds of the pose alone (test_visca_lens.cpp polls the lens)
     model_ = config_.settings.model;
   }
   /// Starts the backend: the camera answers the first round at pan 0.

@@ -143,6 +143,9 @@ private:
   /// focus, an iris position in automatic exposure, as Sony's cameras refuse them).
   std::uint8_t runLens(const visca::Packet& packet, TimePoint at);
   void answerInquiry(const visca::Packet& packet, TimePoint at, Replies& replies);
+  /// CAM_FocusModeInq, CAM_FocusPosInq, CAM_IrisPosInq from the lens model: their data appended to \p answer; false
+  /// for another packet, or one of a function the camera lacks (it answers a syntax error, as a camera without it).
+  bool answerLensInquiry(const visca::Packet& packet, TimePoint at, visca::Packet& answer) const;
   visca::Packet reply(std::uint8_t kind, std::initializer_list<std::uint8_t> rest = {}) const;
   /// Sends raw VISCA replies (wrapped as replies to \p sequence over VISCA over IP).
   void sendAll(const Replies& replies, std::uint32_t sequence, std::uint16_t type = visca::IP_REPLY);

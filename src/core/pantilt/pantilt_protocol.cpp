@@ -28,6 +28,10 @@ Capabilities PanTiltProtocol::capabilities() const
   {
     capabilities.axes[axis] = settings_.axes[axis];
     capabilities.axes[axis].max_speed *= speed_share[axis];
+    // A position goal's speed is its motor-speed params, set before its move.
+    capabilities.speed.control[axis] = SpeedControl::DEVICE;
+    capabilities.speed.min_speed[axis] =
+        std::min(MIN_SPEED_PERCENT / 100.0 * settings_.axes[axis].max_speed, capabilities.axes[axis].max_speed);
   }
   capabilities.axes[ZOOM] = absentAxis("a PanTilt controller has no zoom");
   capabilities.device_home = true;  // GO_TO_HOME
@@ -115,7 +119,21 @@ void PanTiltProtocol::poll()
 
 void PanTiltProtocol::goTo(const AxisValues& position)
 {
-  sendSpeeds();
+  goToAtSpeed(position, AxisValues{});
+}
+
+void PanTiltProtocol::goToAtSpeed(const AxisValues& position, const AxisValues& speed)
+{
+  const double configured[] = { settings_.pan_speed, settings_.tilt_speed };
+  double percent[2] = {};
+  for (Axis axis : { PAN, TILT })
+  {
+    const double asked = 100.0 * speed[axis] / settings_.axes[axis].max_speed;
+    percent[axis] = speed[axis] > 0.0 ?
+                        std::clamp(asked, std::min(MIN_SPEED_PERCENT, configured[axis]), configured[axis]) :
+                        configured[axis];
+  }
+  sendSpeeds(percent[PAN], percent[TILT]);
   if (cr::pantilt::hasCommandArguments(settings_.format))
   {
     sendCommand(PanTiltCommand::GO_TO_PAN_TILT_ANGLE, toDegrees(position[PAN]), toDegrees(position[TILT]));
@@ -198,8 +216,13 @@ void PanTiltProtocol::sendCommand(PanTiltCommand id, double arg1, double arg2)
 
 void PanTiltProtocol::sendSpeeds()
 {
-  sendSetParam(PanTiltParam::PAN_MOTOR_SPEED, settings_.pan_speed);
-  sendSetParam(PanTiltParam::TILT_MOTOR_SPEED, settings_.tilt_speed);
+  sendSpeeds(settings_.pan_speed, settings_.tilt_speed);
+}
+
+void PanTiltProtocol::sendSpeeds(double pan_percent, double tilt_percent)
+{
+  sendSetParam(PanTiltParam::PAN_MOTOR_SPEED, pan_percent);
+  sendSetParam(PanTiltParam::TILT_MOTOR_SPEED, tilt_percent);
 }
 
 void PanTiltProtocol::sendStateRequest()

@@ -11,6 +11,7 @@ namespace visca
 namespace
 {
 constexpr std::uint8_t VISCA_LENS_COMMAND = 0x01;
+constexpr std::uint8_t VISCA_LENS_INQUIRY = 0x09;
 constexpr std::uint8_t VISCA_LENS_CAMERA = 0x04;
 
 std::uint8_t lensHeader(std::uint8_t address)
@@ -50,17 +51,22 @@ double ViscaLens::irisShare(std::uint8_t position) const
   return lensShare(position, iris_closed, iris_open);
 }
 
-LensCapabilities ViscaLens::capabilities() const
+LensCapabilities ViscaLens::capabilities(bool focus_polled, bool iris_polled) const
 {
   LensCapabilities lens;
   lens.focus.present = focus;
   lens.focus.auto_mode = lens.focus.velocity = lens.focus.absolute = lens.focus.one_push = focus;
-  lens.focus.limitation = focus ? "VISCA: the focus position is not polled" : "the VISCA camera is set without focus";
+  lens.focus.feedback = focus && focus_polled;
+  lens.focus.limitation = !focus        ? "the VISCA camera is set without focus" :
+                          !focus_polled ? "VISCA: the focus position is not polled" :
+                                          "";
   lens.iris.present = iris;
   lens.iris.auto_mode = lens.iris.absolute = iris;
-  lens.iris.limitation = iris ? "VISCA CAM_Iris up/down are single steps, not a drive; the iris position is not "
-                                "polled" :
-                                "the VISCA camera is set without iris";
+  lens.iris.feedback = iris && iris_polled;
+  lens.iris.limitation = !iris        ? "the VISCA camera is set without iris" :
+                         !iris_polled ? "VISCA CAM_Iris up/down are single steps, not a drive; the iris position is "
+                                        "not polled" :
+                                        "VISCA CAM_Iris up/down are single steps, not a drive";
   return lens;
 }
 
@@ -102,6 +108,51 @@ Packet irisDirect(std::uint8_t address, std::uint8_t position)
   putNibbles(packet, position, 2);
   packet.push_back(TERMINATOR);
   return packet;
+}
+
+Packet focusModeInquiry(std::uint8_t address)
+{
+  return { lensHeader(address), VISCA_LENS_INQUIRY, VISCA_LENS_CAMERA, 0x38, TERMINATOR };
+}
+
+Packet focusPositionInquiry(std::uint8_t address)
+{
+  return { lensHeader(address), VISCA_LENS_INQUIRY, VISCA_LENS_CAMERA, 0x48, TERMINATOR };
+}
+
+Packet irisPositionInquiry(std::uint8_t address)
+{
+  return { lensHeader(address), VISCA_LENS_INQUIRY, VISCA_LENS_CAMERA, 0x4B, TERMINATOR };
+}
+
+bool decodeFocusModeAnswer(const Reply& reply, LensMode& mode)
+{
+  if (reply.kind != Reply::Kind::ANSWER || reply.data.size() != 1 || reply.data[0] < 0x02 || reply.data[0] > 0x04)
+  {
+    return false;
+  }
+  mode = reply.data[0] == 0x02 ? LensMode::AUTO : LensMode::MANUAL;
+  return true;
+}
+
+bool decodeFocusPositionAnswer(const Reply& reply, std::uint16_t& position)
+{
+  if (reply.kind != Reply::Kind::ANSWER || reply.data.size() != 4)
+  {
+    return false;
+  }
+  position = static_cast<std::uint16_t>(getNibbles(reply.data.data(), 4));
+  return true;
+}
+
+bool decodeIrisPositionAnswer(const Reply& reply, std::uint8_t& position)
+{
+  if (reply.kind != Reply::Kind::ANSWER || reply.data.size() != 4 || reply.data[0] != 0x00 || reply.data[1] != 0x00)
+  {
+    return false;
+  }
+  position = static_cast<std::uint8_t>(getNibbles(reply.data.data() + 2, 2));
+  return true;
 }
 
 int focusSpeed(double share)

@@ -32,6 +32,8 @@ ViscaProtocol::ViscaProtocol(const ViscaSettings& settings, DeviceSession& sessi
   , feedback_(settings.inquiries)
   , variable_zoom_(settings.zoom_drive != ViscaZoomDrive::STANDARD)
   , sequence_cycle_(settings.sequence_cycle)
+  , focus_polled_(settings.inquiries && settings.lens.focus && settings.lens.poll_period > 0.0)
+  , iris_polled_(settings.inquiries && settings.lens.iris && settings.lens.poll_period > 0.0)
   , round_(settings.model.has_zoom ? 2 : 1)
 {
 }
@@ -67,7 +69,7 @@ Capabilities ViscaProtocol::capabilities() const
   }
   capabilities.device_presets = true;  // memory set / recall (8x 01 04 3F)
   capabilities.device_home = true;     // 8x 01 06 04
-  capabilities.lens = settings_.lens.capabilities();
+  capabilities.lens = settings_.lens.capabilities(feedback_ && focus_polled_, feedback_ && iris_polled_);
   return capabilities;
 }
 
@@ -175,6 +177,7 @@ void ViscaProtocol::poll()
   {
     queuePacket(visca::zoomInquiry(settings_.address), ZOOM_INQUIRY, true);
   }
+  pollLens();
 }
 
 void ViscaProtocol::keepAlive()
@@ -305,6 +308,14 @@ void ViscaProtocol::onReplyTimeout(const TransactionChannel::Request& lost)
         }
       }
       break;
+    case FOCUS_MODE_INQUIRY:
+    case FOCUS_INQUIRY:
+    case IRIS_INQUIRY:
+      if (++lens_timeouts_ >= INQUIRIES_BEFORE_PROBE)
+      {
+        stopLensPolling(static_cast<Tag>(lost.tag), 0);  // a camera that answers the pose but not these
+      }
+      break;
     default:
       break;
   }
@@ -389,6 +400,12 @@ void ViscaProtocol::diagnostics(std::vector<DiagnosticValue>& values) const
   values.push_back(DiagnosticValue{ "framing", toString(settings_.framing) });
   values.push_back(DiagnosticValue{ "position feedback", feedback_ ? "inquiries" : "none (no inquiry answered)" });
   values.push_back(DiagnosticValue{ "zoom drive", variable_zoom_ ? "variable" : "standard" });
+  const bool focus_polled = feedback_ && focus_polled_;
+  const bool iris_polled = feedback_ && iris_polled_;
+  values.push_back(DiagnosticValue{ "lens inquiries", focus_polled && iris_polled ? "focus mode, focus, iris" :
+                                                      focus_polled                ? "focus mode, focus" :
+                                                      iris_polled                 ? "iris" :
+                                                                                    "none" });
   const int reply_address = reply_address_;
   values.push_back(
       DiagnosticValue{ "replies from address", std::to_string(reply_address < 0 ? settings_.address : reply_address) });

@@ -120,7 +120,7 @@ void ViscaProtocol::handle(const visca::Packet& packet)
   // ACK, ANSWER, ADDRESS_SET, IF_CLEAR: the reply to the one request on the wire, if it can be its reply (an ACK to a
   // command, an answer of its inquiry's size); otherwise the late reply of one before it.
   const visca::PositionLayout& layout = settings_.model.layout;
-  const auto can_answer = [&reply, &layout](const TransactionChannel::Request& on_wire) {
+  const auto can_answer = [this, &reply, &layout](const TransactionChannel::Request& on_wire) {
     std::int32_t pan = 0;
     std::int32_t tilt = 0;
     std::uint16_t zoom = 0;
@@ -129,6 +129,10 @@ void ViscaProtocol::handle(const visca::Packet& packet)
       case Kind::ACK:
         return on_wire.tag == COMMAND || on_wire.tag == PROBE || on_wire.tag == LENS;
       case Kind::ANSWER:
+        if (isLensInquiry(on_wire.tag))
+        {
+          return answersLensInquiry(reply, on_wire.tag);
+        }
         return on_wire.tag == PAN_TILT_INQUIRY ? visca::decodePanTiltAnswer(reply, layout, pan, tilt) :
                                                  on_wire.tag == ZOOM_INQUIRY && visca::decodeZoomAnswer(reply, zoom);
       case Kind::ADDRESS_SET:
@@ -174,6 +178,11 @@ void ViscaProtocol::handle(const visca::Packet& packet)
 void ViscaProtocol::handleAnswer(const visca::Reply& reply, Tag tag)
 {
   // The answer of the inquiry on the wire, whose size can_answer checked.
+  if (isLensInquiry(tag))
+  {
+    handleLensAnswer(reply, tag);
+    return;
+  }
   std::int32_t pan = 0;
   std::int32_t tilt = 0;
   std::uint16_t zoom = 0;
@@ -227,6 +236,11 @@ void ViscaProtocol::handleError(const visca::Reply& reply)
   if (answered && answered->tag == LENS)
   {
     session_.lens().fault(refusal(answered->bytes, reply.error));
+    return;
+  }
+  if (answered && isLensInquiry(answered->tag))
+  {
+    stopLensPolling(static_cast<Tag>(answered->tag), reply.error);  // a camera without that function, or its inquiry
     return;
   }
   if (!answered || answered->tag != COMMAND)

@@ -50,7 +50,8 @@ struct PanTiltCounters
  * \brief PanTilt over a DeviceSession: UDP (a frame per datagram) or a serial line (SLIP frames, RFC 1055).
  *
  * Goals become SET_PARAM (speeds, angles in degrees) + COMMAND GO_TO_PAN_TILT_ANGLE frames (v1.0 and v1.1: one
- * COMMAND with the angles as arguments); velocity goals become MOVE_PAN_TILT in v1.x and, in the seed's format, which
+ * COMMAND with the angles as arguments); a goal's speed becomes its PAN_MOTOR_SPEED / TILT_MOTOR_SPEED (in % of each
+ * axis' max_speed); velocity goals become MOVE_PAN_TILT in v1.x and, in the seed's format, which
  * has no velocity command, a speed setting plus a move towards the limit; cancel becomes STOP. State comes from the
  * device's params frames of the configured format (see PanTiltEmulator for the reporting rules), asked for while the
  * device is quiet; frames of another format are counted and never taken as state. After a loss the device is held
@@ -85,7 +86,8 @@ public:
   {
     return "a PanTilt device controller";
   }
-  /// From the settings: the PanTilt protocol cannot tell limits or speeds. No zoom.
+  /// From the settings: the PanTilt protocol cannot tell limits or speeds. No zoom. Pan and tilt take a position
+  /// goal's speed (SpeedControl::DEVICE), down to MIN_SPEED_PERCENT of their max_speed.
   Capabilities capabilities() const override;
   /// The speeds and a state request (a params frame with an empty mask).
   void onConnected() override;
@@ -95,8 +97,11 @@ public:
   void onReceived(const std::uint8_t* data, std::size_t size) override;
   /// A state request while the device is quiet (it reports on its own otherwise).
   void poll() override;
-  /// The speeds, the angles in degrees and GO_TO_PAN_TILT_ANGLE (v1.x: one COMMAND with the angles).
+  /// The configured speeds, the angles in degrees and GO_TO_PAN_TILT_ANGLE (v1.x: one COMMAND with the angles).
   void goTo(const AxisValues& position) override;
+  /// goTo() with each axis' motor speed at \p speed's share of its max_speed (0: the configured speed), up to the
+  /// configured speed and down to MIN_SPEED_PERCENT.
+  void goToAtSpeed(const AxisValues& position, const AxisValues& speed) override;
   /// v1.x: MOVE_PAN_TILT in % of the max speed; seed: a speed and a move towards the limit.
   void moveAtVelocity(const AxisValues& velocity) override;
   /// COMMAND STOP.
@@ -110,6 +115,10 @@ public:
     return counters_;
   }
 
+  /// The slowest motor speed a goal asks (% of max_speed): the PanTilt library sets no floor, 1 % is the slowest
+  /// the node's own shaping streams.
+  static constexpr double MIN_SPEED_PERCENT = 1.0;
+
 private:
   void handleFrame(const std::uint8_t* data, std::size_t size);
   /// One frame to the device: a datagram, or a SLIP frame on a byte stream.
@@ -117,6 +126,7 @@ private:
   void sendSetParam(cr::pantilt::PanTiltParam id, double value);
   void sendCommand(cr::pantilt::PanTiltCommand id, double arg1 = 0.0, double arg2 = 0.0);
   void sendSpeeds();
+  void sendSpeeds(double pan_percent, double tilt_percent);
   void sendStateRequest();
 
   const PanTiltSettings settings_;

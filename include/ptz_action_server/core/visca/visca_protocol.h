@@ -128,7 +128,8 @@ public:
   {
     channel_.close();
   }
-  /// The pan-tilt and zoom inquiries, whenever the line is free.
+  /// The pan-tilt and zoom inquiries, whenever the line is free; after them, every `lens.poll_period` at most, one
+  /// lens inquiry in turn (focus mode, focus position, iris position) for the functions the camera has.
   void poll() override;
   void goTo(const AxisValues& position) override
   {
@@ -159,6 +160,9 @@ private:
     COMMAND,
     PROBE,  ///< a command sent to learn whether a camera that answers no inquiry answers commands
     LENS,   ///< a focus or iris command: its refusal is a lens fault, never the goal's
+    FOCUS_MODE_INQUIRY,
+    FOCUS_INQUIRY,
+    IRIS_INQUIRY,
   };
   /// The command a socket runs: the node command it serves, and its bytes (for messages).
   struct SocketUse
@@ -191,6 +195,18 @@ private:
   void runWithoutFeedback();
   /// The packet of a zoom drive at \p speed (1..8, signed) as this camera takes it.
   visca::Packet zoomDrivePacket(int speed) const;
+  /// The next lens inquiry in turn, if one is due (visca_protocol_lens.cpp).
+  void pollLens();
+  static bool isLensInquiry(int tag)
+  {
+    return tag == FOCUS_MODE_INQUIRY || tag == FOCUS_INQUIRY || tag == IRIS_INQUIRY;
+  }
+  /// The answer \p reply fits the lens inquiry \p tag.
+  bool answersLensInquiry(const visca::Reply& reply, int tag) const;
+  void handleLensAnswer(const visca::Reply& reply, Tag tag);
+  /// The camera refused a lens inquiry (\p error), or answered none of several (\p error 0): that function (every
+  /// function on silence) is not polled any more, said in one warning.
+  void stopLensPolling(Tag tag, std::uint8_t error);
   /// Without feedback: repeats the last pan-tilt drive (a stop at first) now and then, the ACK keeping the link alive.
   void keepAlive();
   /// Completes the request on the wire (see TransactionChannel::complete()) and forgets its sequence number; notes
@@ -219,6 +235,8 @@ private:
   std::atomic<bool> variable_zoom_;  ///< false: the standard zoom drive
   std::atomic<std::uint32_t> sequence_cycle_;
   std::atomic<int> reply_address_{ -1 };  ///< the other address the camera answers from; -1: its own
+  std::atomic<bool> focus_polled_;        ///< the focus mode and position are asked (until the camera refuses)
+  std::atomic<bool> iris_polled_;         ///< the iris position is asked
   std::uint32_t inquiry_answers_ = 0;     ///< answers to inquiries (on any connection)
   // Learning on this connection.
   std::uint32_t inquiry_timeouts_ = 0;  ///< inquiries without answer since the last answer
@@ -231,7 +249,10 @@ private:
   TimePoint kept_alive_at_{};
   std::array<std::optional<SocketUse>, 16> sockets_;
   AxisValues polled_{ { 0.0, 0.0, 1.0 } };
-  PollRound round_;                     ///< the pan-tilt answer, then the zoom answer (where the model has zoom)
+  PollRound round_;            ///< the pan-tilt answer, then the zoom answer (where the model has zoom)
+  std::size_t lens_turn_ = 0;  ///< the next lens inquiry: focus mode, focus position, iris position
+  TimePoint lens_polled_at_{};
+  std::uint32_t lens_timeouts_ = 0;     ///< lens inquiries without answer in a row
   std::vector<visca::Packet> packets_;  ///< reused for every read
 };
 
