@@ -241,6 +241,7 @@ void PtzPanel::build()
     }
   });
   layout->addWidget(preset_box);
+  buildTours(layout);
 
   message_ = new QLabel;
   message_->setObjectName("message");
@@ -312,6 +313,8 @@ void PtzPanel::setNamespace(const QString& ns)
   client_->setNamespace(ns.toStdString());
   presets_serial_ = 0;
   presets_->clear();
+  tours_serial_ = 0;
+  tours_->clear();
   if (camera_->findText(ns) < 0)
   {
     camera_->addItem(ns);
@@ -386,6 +389,7 @@ void PtzPanel::refresh()
     widget->setEnabled(e.presets);
   }
   look_->setEnabled(e.look_switch);
+  refreshTours(inputs.fresh, e.presets);
   refreshImage(inputs.fresh && s.link != Link::DOWN);
   if (look_->isChecked() != s.look_enabled)
   {
