@@ -1,22 +1,23 @@
 /**
  * \file
- * \brief PtzPanel's Tours box: the node's tours, Start (a move_ptz/tour goal), Stop (cancels it), Delete, Refresh, and
- * the tour line (any client's tour goal: where it is, or how it ended).
+ * \brief PtzPanel's Tours tab (beside the Presets tab, for the panel's height): the node's tours, Start (a
+ * move_ptz/tour goal), Stop (cancels it), Delete, Refresh; and the Tour row among the state's (any client's tour goal:
+ * where it is, or how it ended).
  */
 #include <QGridLayout>
-#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QTabWidget>
 #include <QVBoxLayout>
 
 #include "ptz_action_server/panel/ptz_panel.h"
 
 namespace ptz_action_server::panel
 {
-void PtzPanel::buildTours(QVBoxLayout* layout)
+void PtzPanel::buildTours(QVBoxLayout* layout, QWidget* presets)
 {
   const auto make_button = [](const QString& text, const QString& name, const QString& tip) {
     auto* result = new QPushButton(text);
@@ -24,7 +25,13 @@ void PtzPanel::buildTours(QVBoxLayout* layout)
     result->setToolTip(tip);
     return result;
   };
-  auto* box = new QGroupBox("Tours");
+  auto* tabs = new QTabWidget;
+  tabs->setObjectName("preset_tabs");
+  presets->setObjectName("presets_page");
+  tabs->addTab(presets, "Presets");
+  auto* box = new QWidget;
+  box->setObjectName("tours_page");
+  tabs->addTab(box, "Tours");
   auto* grid = new QGridLayout(box);
   tours_ = new QListWidget;
   tours_->setObjectName("tours");
@@ -47,12 +54,7 @@ void PtzPanel::buildTours(QVBoxLayout* layout)
   rounds_row->addWidget(new QLabel("Rounds"));
   rounds_row->addWidget(tour_rounds_, 1);
   grid->addLayout(rounds_row, 4, 0, 1, 2);
-  tour_progress_ = new QLabel("no tour");
-  tour_progress_->setObjectName("tour_progress");
-  tour_progress_->setWordWrap(true);
-  tour_progress_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  grid->addWidget(tour_progress_, 5, 0, 1, 2);
-  layout->addWidget(box);
+  layout->addWidget(tabs);
 
   const auto start = [this] {
     if (!selectedTour().isEmpty())
@@ -85,6 +87,9 @@ void PtzPanel::refreshTours(bool fresh, bool moves)
   tour_stop_->setEnabled(fresh && s.tour_connected);  // as ■: a stop is always offered
   tour_delete_->setEnabled(fresh);
   tour_progress_->setText(QString::fromStdString(s.tour));
+  const bool heard = s.tour != NO_TOUR_TEXT;
+  tour_label_->setVisible(heard);
+  tour_progress_->setVisible(heard);
   if (s.tours_serial == tours_serial_)
   {
     return;

@@ -94,7 +94,7 @@ std::string tourEndText(const std::string& tour, std::uint8_t status, const std:
   {
     line += name + ": " + text;
   }
-  if (status == SUCCEEDED || status == PREEMPTED || status == ABORTED)
+  if (status == PREEMPTED || status == ABORTED || (status == SUCCEEDED && text.empty()))
   {
     line += " (" + count(stops_visited, "stop", "stops") + " visited)";
   }
@@ -189,7 +189,7 @@ std::string TourWatch::text(const std::vector<TourListing>& tours) const
       last = &goal;
     }
   }
-  return last == nullptr ? "no tour" : tourEndText(last->tour, last->status, last->text, last->stops_visited);
+  return last == nullptr ? NO_TOUR_TEXT : tourEndText(last->tour, last->status, last->text, last->stops_visited);
 }
 
 }  // namespace ptz_action_server::panel

@@ -218,6 +218,8 @@ TEST(PanelModel, TourProgressSaysTheStopItsPresetAndTheTimeLeft)
 TEST(PanelModel, TourEndSaysHowAndWhy)
 {
   EXPECT_EQ(tourEndText("gate_round", 3, "", 6), "gate_round: succeeded (6 stops visited)");
+  EXPECT_EQ(tourEndText("gate_round", 3, "visited 6 stops in 2 rounds", 6), "gate_round: succeeded: visited 6 stops in "
+                                                                            "2 rounds");
   // The node's texts that start with the status are not said twice.
   EXPECT_EQ(
       tourEndText("gate_round", 2, "preempted at stop 2 of 3 (yard) of tour 'gate_round' by a new velocity goal", 1),

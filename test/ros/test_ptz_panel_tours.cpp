@@ -7,6 +7,7 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QTabWidget>
 #include <QtTest/QTest>
 #include <cmath>
 #include <mutex>
@@ -128,6 +129,12 @@ protected:
     return tours->item(row)->text().toStdString();
   }
 
+  /// Shows the Presets or the Tours tab ("presets_page", "tours_page"), as a click on it does.
+  void showTab(const char* page)
+  {
+    child<QTabWidget>("preset_tabs")->setCurrentWidget(child<QWidget>(page));
+  }
+
   bool at(double pan, double tilt)
   {
     std::lock_guard<std::mutex> lock(observer_.mutex);
@@ -148,6 +155,7 @@ TEST_F(PanelToursTest, ListsStartsAndStopsATourAndSaysHowItEnded)
   ASSERT_TRUE(savePresetAt(0.4, 0.15, pan, tilt));
   ASSERT_TRUE(moveTo(-0.2, 0.0));  // away from the first stop
   ASSERT_TRUE(saveTour("panel_round", { { STOP_PRESET, 60.0 }, { "home", 1.0 } }));
+  showTab("tours_page");
   EXPECT_EQ(listAndSelect("panel_round"), "panel_round  (2 stops)");
   child<QSpinBox>("tour_rounds")->setValue(0);  // loop
 
@@ -170,6 +178,7 @@ TEST_F(PanelToursTest, ListsStartsAndStopsATourAndSaysHowItEnded)
   EXPECT_TRUE(waitFor([&] { return lineStartsWith("panel_round: stop 1 of 2 (panel_tour_stop), "); })) << text("tour_"
                                                                                                                "progres"
                                                                                                                "s");
+  showTab("presets_page");
   QTest::mouseClick(child<QPushButton>("preset_home"), Qt::LeftButton);
   EXPECT_TRUE(waitFor([&] {
     return lineStartsWith("panel_round: preempted at stop 1 of 2 (panel_tour_stop) of tour 'panel_round' by a new "
@@ -177,6 +186,7 @@ TEST_F(PanelToursTest, ListsStartsAndStopsATourAndSaysHowItEnded)
   })) << text("tour_progress");
 
   // Delete: the list loses it.
+  showTab("tours_page");
   ASSERT_FALSE(listAndSelect("panel_round").empty());
   QTest::mouseClick(child<QPushButton>("tour_delete"), Qt::LeftButton);
   EXPECT_TRUE(waitFor([&] {
@@ -190,15 +200,17 @@ TEST_F(PanelToursTest, ATourOfOneRoundSucceeds)
   double pan = 0.0, tilt = 0.0;
   ASSERT_TRUE(savePresetAt(0.3, -0.1, pan, tilt));
   ASSERT_TRUE(saveTour("panel_once", { { "home", 0.2 }, { STOP_PRESET, 0.2 } }));
+  showTab("tours_page");
   ASSERT_EQ(listAndSelect("panel_once"), "panel_once  (2 stops)");
   child<QSpinBox>("tour_rounds")->setValue(1);
   QTest::mouseClick(child<QPushButton>("tour_start"), Qt::LeftButton);
-  EXPECT_TRUE(waitFor([&] { return text("tour_progress") == "panel_once: succeeded (2 stops visited)"; })) << text("tou"
-                                                                                                                   "r_"
-                                                                                                                   "pro"
-                                                                                                                   "gre"
-                                                                                                                   "s"
-                                                                                                                   "s");
+  EXPECT_TRUE(waitFor([&] { return text("tour_progress") == "panel_once: succeeded: visited 2 stops in 1 round"; }))
+      << text("tou"
+              "r_"
+              "pro"
+              "gre"
+              "s"
+              "s");
   EXPECT_TRUE(waitFor([&] { return at(pan, tilt); }));  // its last stop
 }
 

@@ -89,7 +89,7 @@ struct PanelSnapshot
   std::optional<PixelAim> pixel_aim;      ///< the pixel goal to draw (any client's), while pending or active
   std::vector<TourListing> tours;         ///< move_ptz/list_tours' answer
   std::uint64_t tours_serial = 0;         ///< counts tour list replies, as presets_serial
-  std::string tour = "no tour";           ///< the tour line (TourWatch): any client's tour goal
+  std::string tour = NO_TOUR_TEXT;        ///< the tour line (TourWatch): any client's tour goal
   bool tour_connected = false;            ///< the move_ptz/tour server is connected
 };
 

@@ -63,8 +63,8 @@ private:
   /// Subscribes to the image while the view is on and visible, to nothing otherwise.
   void updateImageSubscription();
   void refreshImage(bool aims);
-  // The Tours box (ptz_panel_tours.cpp).
-  void buildTours(QVBoxLayout* layout);
+  // The Tours tab (ptz_panel_tours.cpp), beside the Presets tab `presets`.
+  void buildTours(QVBoxLayout* layout, QWidget* presets);
   /// Fills the box from last_: the list on news, the tour line, the greying (`moves`: presets may be used).
   void refreshTours(bool fresh, bool moves);
   QString selectedTour() const;
@@ -113,7 +113,8 @@ private:
   QPushButton* tour_stop_ = nullptr;
   QPushButton* tour_delete_ = nullptr;
   QPushButton* tour_refresh_ = nullptr;
-  QLabel* tour_progress_ = nullptr;
+  QLabel* tour_label_ = nullptr;
+  QLabel* tour_progress_ = nullptr;  ///< the tour line, in the state's rows
   QCheckBox* look_ = nullptr;
   QLabel* message_ = nullptr;
   QCheckBox* image_on_ = nullptr;

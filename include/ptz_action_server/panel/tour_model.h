@@ -17,6 +17,8 @@ namespace ptz_action_server::panel
 inline constexpr std::uint8_t TOUR_MOVING = 1;
 inline constexpr std::uint8_t TOUR_DWELLING = 2;
 inline constexpr std::uint8_t TOUR_PAUSED = 3;
+/// The tour line before any tour goal is heard of.
+inline constexpr const char* NO_TOUR_TEXT = "no tour";
 
 /// One tour as move_ptz/list_tours lists it.
 struct TourListing
@@ -45,9 +47,9 @@ struct TourFeedback
 /// A running tour's line: "gate_round: stop 2 of 3 (yard), 3.5 s left, round 1 of 2". `stops` is the tour's number
 /// of stops (0: unknown, then "stop 2 (yard)"), `rounds` the goal's (0: until stopped, "round 1"; or unknown).
 std::string tourProgressText(const TourFeedback& feedback, std::size_t stops, std::uint32_t rounds);
-/// An ended tour goal's line: "gate_round: succeeded (6 stops visited)", "gate_round: preempted: cancelled at stop 1
-/// of 2 (door) of tour 'gate_round' (1 stop visited)", "x: rejected: no tour named 'x'". `status` is actionlib's
-/// GoalStatus; the count is left out for a goal that never ran (rejected, recalled).
+/// An ended tour goal's line: "gate_round: succeeded: visited 6 stops in 2 rounds", "gate_round: preempted: cancelled
+/// at stop 1 of 2 (door) of tour 'gate_round' (1 stop visited)", "x: rejected: no tour named 'x'". `status` is
+/// actionlib's GoalStatus; the count is added for a preempted or aborted goal and a success without a text.
 std::string tourEndText(const std::string& tour, std::uint8_t status, const std::string& text,
                         std::uint32_t stops_visited);
 
@@ -55,7 +57,7 @@ std::string tourEndText(const std::string& tour, std::uint8_t status, const std:
  * \brief Follows the node's tour goals, whoever sent them, for the tour line.
  *
  * The line shows the newest goal still running (its progress, or "starting" before its first feedback); with none
- * running, how the last goal to end ended; "no tour" before any. A goal first heard through its feedback or result
+ * running, how the last goal to end ended; NO_TOUR_TEXT before any. A goal first heard through its feedback or result
  * (the panel started after it was sent) counts from then. Keeps the last few goals only.
  */
 class TourWatch
