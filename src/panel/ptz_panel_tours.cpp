@@ -25,14 +25,20 @@ void PtzPanel::buildTours(QVBoxLayout* layout, QWidget* presets)
     result->setToolTip(tip);
     return result;
   };
+  // No frame and narrow margins: the tabs take no more height than the Presets box they replace, so the image view
+  // keeps its size.
+  constexpr int MARGIN = 2;
   auto* tabs = new QTabWidget;
   tabs->setObjectName("preset_tabs");
+  tabs->setDocumentMode(true);
   presets->setObjectName("presets_page");
+  presets->layout()->setContentsMargins(MARGIN, MARGIN, MARGIN, MARGIN);
   tabs->addTab(presets, "Presets");
   auto* box = new QWidget;
   box->setObjectName("tours_page");
   tabs->addTab(box, "Tours");
   auto* grid = new QGridLayout(box);
+  grid->setContentsMargins(MARGIN, MARGIN, MARGIN, MARGIN);
   tours_ = new QListWidget;
   tours_->setObjectName("tours");
   tours_->setMaximumHeight(90);
