@@ -63,7 +63,7 @@ void PtzPanel::buildTours(QVBoxLayout* layout, QWidget* presets)
   layout->addWidget(tabs);
 
   const auto start = [this] {
-    if (!selectedTour().isEmpty())
+    if (tour_start_->isEnabled() && !selectedTour().isEmpty())  // a double click on the list too, not while greyed
     {
       client_->startTour(selectedTour().toStdString(), static_cast<std::uint32_t>(tour_rounds_->value()));
     }
