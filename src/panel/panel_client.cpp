@@ -1,12 +1,18 @@
 #include "ptz_action_server/panel/panel_client.h"
 
+#include <array>
+#include <tuple>
+
+// Only the node's table of actions (constexpr names), not its servers: the panel links nothing of the node.
+#include "ptz_action_server/ros/action_servers.h"
+
 namespace ptz_action_server::panel
 {
 namespace
 {
-/// The node's actions whose status topics feed the goal line.
-const char* const STATUS_ACTIONS[] = { "position_abs", "position_rel", "velocity", "position_abs_tf",
-                                       "frame",        "track_frame",  "preset",   "pixel" };
+/// The node's actions whose status topics feed the goal line: every one the node serves, from its own table.
+constexpr std::array<const char*, NODE_ACTION_COUNT> STATUS_ACTIONS = std::apply(
+    [](const auto&... row) { return std::array<const char*, NODE_ACTION_COUNT>{ row.name... }; }, NODE_ACTIONS);
 
 AxisAbility toAbility(const PtzAxisCapability& axis)
 {
@@ -53,6 +59,7 @@ PanelClient::~PanelClient()
   absolute_client_.reset();
   preset_client_.reset();
   pixel_client_.reset();
+  tour_client_.reset();
 }
 
 double PanelClient::now() const
@@ -69,6 +76,7 @@ void PanelClient::setNamespace(const std::string& ns)
   std::unique_ptr<PtzClient> old_absolute_client;
   std::unique_ptr<PresetClient> old_preset_client;
   std::unique_ptr<PixelClient> old_pixel_client;
+  std::unique_ptr<TourClient> old_tour_client;
   std::uint64_t generation = 0;
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -83,12 +91,15 @@ void PanelClient::setNamespace(const std::string& ns)
     old_absolute_client = std::move(absolute_client_);
     old_preset_client = std::move(preset_client_);
     old_pixel_client = std::move(pixel_client_);
+    old_tour_client = std::move(tour_client_);
     jogging_ = false;
     watch_.reset();
     statuses_.clear();
     last_finished_.reset();
     views_.clear();
     pixel_goals_.clear();
+    tour_goals_.clear();
+    tour_listed_for_.clear();
     const std::vector<std::string> namespaces = snapshot_.namespaces;
     const std::vector<std::string> image_topics = snapshot_.image_topics;
     snapshot_ = PanelSnapshot();
@@ -130,6 +141,7 @@ void PanelClient::setNamespace(const std::string& ns)
     preset_client_ = std::make_unique<PresetClient>(node, "move_ptz/preset", false);
     pixel_client_ = std::make_unique<PixelClient>(node, "move_ptz/pixel", false);
     subscribeImageParts(node, generation);
+    subscribeTourParts(node, generation);
   }
   discovery_wake_.notify_all();
 }
@@ -162,6 +174,8 @@ PanelSnapshot PanelClient::snapshot() const
   copy.image_message = image_message_;
   copy.pixel_connected = pixel_client_ && pixel_client_->isServerConnected();
   copy.pixel_aim = pixel_goals_.active(t);
+  copy.tour = tour_goals_.text(snapshot_.tours);
+  copy.tour_connected = tour_client_ && tour_client_->isServerConnected();
   return copy;
 }
 
@@ -177,7 +191,10 @@ void PanelClient::onState(std::uint64_t generation, const PtzState::ConstPtr& st
   {
     // The camera appeared or came back (a restarted node may have other presets): list them again.
     const std::string ns = ns_;
-    post([this, ns, generation] { listPresets(ns, generation); });
+    post([this, ns, generation] {
+      listPresets(ns, generation);
+      listTours(ns, generation);
+    });
   }
   watch_.received(t);
   snapshot_.has_state = true;

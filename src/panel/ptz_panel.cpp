@@ -107,6 +107,9 @@ void PtzPanel::build()
   state->addRow("Link", link_ = valueLabel("state_link"));
   state->addRow("Goal", goal_ = valueLabel("state_goal"));
   goal_->setWordWrap(true);
+  tour_label_ = new QLabel("Tour");  // shown once a tour goal is heard of
+  state->addRow(tour_label_, tour_progress_ = valueLabel("tour_progress"));
+  tour_progress_->setWordWrap(true);
   layout->addLayout(state);
   buildImage(layout);
 
@@ -191,7 +194,7 @@ void PtzPanel::build()
   pose->addLayout(pose_buttons, 2, 2);
   layout->addWidget(pose_box);
 
-  auto* preset_box = new QGroupBox("Presets");
+  auto* preset_box = new QWidget;  // a tab beside the Tours (buildTours)
   auto* presets = new QGridLayout(preset_box);
   presets_ = new QListWidget;
   presets_->setObjectName("presets");
@@ -240,7 +243,7 @@ void PtzPanel::build()
       client_->savePreset(preset_name_->text().trimmed().toStdString());
     }
   });
-  layout->addWidget(preset_box);
+  buildTours(layout, preset_box);
 
   message_ = new QLabel;
   message_->setObjectName("message");
@@ -312,6 +315,8 @@ void PtzPanel::setNamespace(const QString& ns)
   client_->setNamespace(ns.toStdString());
   presets_serial_ = 0;
   presets_->clear();
+  tours_serial_ = 0;
+  tours_->clear();
   if (camera_->findText(ns) < 0)
   {
     camera_->addItem(ns);
@@ -386,6 +391,7 @@ void PtzPanel::refresh()
     widget->setEnabled(e.presets);
   }
   look_->setEnabled(e.look_switch);
+  refreshTours(inputs.fresh, e.presets);
   refreshImage(inputs.fresh && s.link != Link::DOWN);
   if (look_->isChecked() != s.look_enabled)
   {

@@ -1,10 +1,11 @@
-// The rviz panel's plain logic: namespace discovery, texts, jog velocities, greying.
+// The rviz panel's plain logic: namespace discovery, texts, jog velocities, greying, the tour line.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
 #include "ptz_action_server/panel/panel_model.h"
+#include "ptz_action_server/panel/tour_model.h"
 
 using namespace ptz_action_server::panel;
 
@@ -182,4 +183,99 @@ TEST(PanelModel, RateLimiterLetsOneEventThroughPerPeriod)
   EXPECT_TRUE(limiter.allow(10.3));
   RateLimiter never(0.0);
   EXPECT_FALSE(never.allow(1.0));
+}
+
+TEST(PanelModel, TourListLines)
+{
+  const TourListing tour{ "gate_round", { "gate", "yard", "home" }, { 10.0, 4.5, 0.0 } };
+  EXPECT_EQ(tourListText(tour), "gate_round  (3 stops)");
+  EXPECT_EQ(tourStopsText(tour), "gate 10 s, yard 4.5 s, home 0 s");
+  EXPECT_EQ(tourListText({ "one", { "home" }, { 2.0 } }), "one  (1 stop)");
+}
+
+TEST(PanelModel, TourProgressSaysTheStopItsPresetAndTheTimeLeft)
+{
+  TourFeedback feedback;
+  feedback.tour = "gate_round";
+  feedback.stop = 1;
+  feedback.preset = "yard";
+  feedback.state = TOUR_DWELLING;
+  feedback.time_left = 3.46;
+  EXPECT_EQ(tourProgressText(feedback, 3, 2), "gate_round: stop 2 of 3 (yard), 3.5 s left, round 1 of 2");
+  feedback.round = 4;  // looping (rounds 0), a tour the panel has not listed (0 stops)
+  EXPECT_EQ(tourProgressText(feedback, 0, 0), "gate_round: stop 2 (yard), 3.5 s left, round 4");
+  feedback.state = TOUR_MOVING;
+  feedback.time_left = 10.0;
+  EXPECT_EQ(tourProgressText(feedback, 3, 0), "gate_round: stop 2 of 3 (yard), moving there (dwell 10.0 s), round 4");
+  feedback.state = TOUR_PAUSED;
+  feedback.time_left = -1.0;
+  EXPECT_EQ(tourProgressText(feedback, 3, 0), "gate_round: stop 2 of 3 (yard), paused while another goal runs, round "
+                                              "4");
+  feedback.time_left = 5.0;
+  EXPECT_EQ(tourProgressText(feedback, 3, 0), "gate_round: stop 2 of 3 (yard), paused, resumes in 5.0 s, round 4");
+}
+
+TEST(PanelModel, TourEndSaysHowAndWhy)
+{
+  EXPECT_EQ(tourEndText("gate_round", 3, "", 6), "gate_round: succeeded (6 stops visited)");
+  EXPECT_EQ(tourEndText("gate_round", 3, "visited 6 stops in 2 rounds", 6), "gate_round: succeeded: visited 6 stops in "
+                                                                            "2 rounds");
+  // The node's texts that start with the status are not said twice.
+  EXPECT_EQ(
+      tourEndText("gate_round", 2, "preempted at stop 2 of 3 (yard) of tour 'gate_round' by a new velocity goal", 1),
+      "gate_round: preempted at stop 2 of 3 (yard) of tour 'gate_round' by a new velocity goal (1 stop visited)");
+  EXPECT_EQ(tourEndText("gate_round", 2, "cancelled at stop 1 of 3 (gate) of tour 'gate_round'", 1), "gate_round: "
+                                                                                                     "preempted: "
+                                                                                                     "cancelled at "
+                                                                                                     "stop 1 of 3 "
+                                                                                                     "(gate) of tour "
+                                                                                                     "'gate_round' (1 "
+                                                                                                     "stop visited)");
+  EXPECT_EQ(tourEndText("gate_round", 4, "stop 2 of 3 (yard) of tour 'gate_round': stalled: pan made no progress", 1),
+            "gate_round: aborted: stop 2 of 3 (yard) of tour 'gate_round': stalled: pan made no progress (1 stop "
+            "visited)");
+  EXPECT_EQ(tourEndText("x", 5, "no tour named 'x'", 0), "x: rejected: no tour named 'x'");  // it never ran
+  EXPECT_EQ(tourEndText("", 8, "", 0), "tour: recalled");
+}
+
+TEST(PanelModel, TourWatchShowsTheNewestRunningGoalElseHowTheLastEnded)
+{
+  const std::vector<TourListing> tours = { { "round_a", { "door", "home" }, { 5.0, 1.0 } } };
+  TourWatch watch;
+  EXPECT_EQ(watch.text(tours), "no tour");
+  watch.goal("g1", "round_a", 0);
+  EXPECT_EQ(watch.text(tours), "round_a: starting");
+  TourFeedback feedback;
+  feedback.tour = "round_a";
+  feedback.preset = "door";
+  feedback.state = TOUR_DWELLING;
+  feedback.time_left = 4.0;
+  watch.feedback("g1", feedback);
+  EXPECT_EQ(watch.text(tours), "round_a: stop 1 of 2 (door), 4.0 s left, round 1");
+  // A second goal replaces it: the node ends the first preempted, the line follows the second.
+  watch.goal("g2", "round_a", 3);
+  watch.result("g1", 2, "preempted by a new tour goal", 1);
+  EXPECT_EQ(watch.text(tours), "round_a: starting");
+  watch.feedback("g2", feedback);
+  EXPECT_EQ(watch.text(tours), "round_a: stop 1 of 2 (door), 4.0 s left, round 1 of 3");
+  watch.result("g2", 2, "cancelled at stop 1 of 2 (door) of tour 'round_a'", 1);
+  watch.feedback("g2", feedback);  // a late feedback does not bring it back
+  EXPECT_EQ(watch.text(tours), "round_a: preempted: cancelled at stop 1 of 2 (door) of tour 'round_a' (1 stop "
+                               "visited)");
+  // A goal heard first through its feedback (sent before the panel started) has its tour from there.
+  feedback.tour = "unlisted";
+  watch.feedback("g3", feedback);
+  EXPECT_EQ(watch.text(tours), "unlisted: stop 1 (door), 4.0 s left, round 1");
+  watch.result("g3", 4, "stop 1 of 4 (door) of tour 'unlisted': link down", 0);
+  EXPECT_EQ(watch.text(tours), "unlisted: aborted: stop 1 of 4 (door) of tour 'unlisted': link down (0 stops visited)");
+  watch.clear();
+  EXPECT_EQ(watch.text(tours), "no tour");
+  // Many goals: only the last few are kept, and the running one is still shown.
+  for (int i = 0; i < 20; ++i)
+  {
+    watch.goal("many" + std::to_string(i), "round_a", 1);
+    watch.result("many" + std::to_string(i), 3, "", 2);
+  }
+  watch.goal("last", "round_a", 1);
+  EXPECT_EQ(watch.text(tours), "round_a: starting");
 }

@@ -7,7 +7,8 @@
  * service calls run one at a time on a worker thread; the master's topic list and the look_at_clicked_point service
  * are polled once a second on a discovery thread (a master call can wait for a master that is gone). Every result
  * goes into one mutex-protected snapshot that the widget reads on its timer. Goals are sent from the caller's thread:
- * actionlib's sendGoal and cancelGoal only publish.
+ * actionlib's sendGoal and cancelGoal only publish. The tours part (tours list, tour goals, the tour line) is in
+ * panel_client_tours.cpp.
  */
 #pragma once
 
@@ -40,9 +41,11 @@
 #include "ptz_action_server/PtzPixelAction.h"
 #include "ptz_action_server/PtzPresetAction.h"
 #include "ptz_action_server/PtzState.h"
+#include "ptz_action_server/PtzTourAction.h"
 #include "ptz_action_server/panel/image_frame.h"
 #include "ptz_action_server/panel/image_view_model.h"
 #include "ptz_action_server/panel/panel_model.h"
+#include "ptz_action_server/panel/tour_model.h"
 
 namespace ptz_action_server::panel
 {
@@ -84,6 +87,10 @@ struct PanelSnapshot
   std::string image_message;              ///< "" while images arrive and show, else what the view says instead
   bool pixel_connected = false;           ///< the move_ptz/pixel server is connected
   std::optional<PixelAim> pixel_aim;      ///< the pixel goal to draw (any client's), while pending or active
+  std::vector<TourListing> tours;         ///< move_ptz/list_tours' answer
+  std::uint64_t tours_serial = 0;         ///< counts tour list replies, as presets_serial
+  std::string tour = NO_TOUR_TEXT;        ///< the tour line (TourWatch): any client's tour goal
+  bool tour_connected = false;            ///< the move_ptz/tour server is connected
 };
 
 class PanelClient
@@ -116,6 +123,14 @@ public:
   void savePreset(const std::string& name);
   void deletePreset(const std::string& name);
   void setLookAt(bool enabled);
+  /// A move_ptz/tour goal: the tour `name`, `rounds` rounds (0: until stopped or preempted).
+  void startTour(const std::string& name, std::uint32_t rounds);
+  /// Cancels every move_ptz/tour goal, whoever sent it: the device stops and the tour ends preempted.
+  void stopTour();
+  /// move_ptz/list_tours on the worker (also done whenever the presets are listed on ptz_state's arrival).
+  void refreshTours();
+  /// move_ptz/delete_tour on the worker, then the list again.
+  void deleteTour(const std::string& name);
 
   /// Subscribes to the image `topic` through image_transport ("" for none), dropping the previous one and its image.
   void setImageTopic(const std::string& topic);
@@ -133,6 +148,7 @@ private:
   using PtzClient = actionlib::SimpleActionClient<PtzAction>;
   using PresetClient = actionlib::SimpleActionClient<PtzPresetAction>;
   using PixelClient = actionlib::SimpleActionClient<PtzPixelAction>;
+  using TourClient = actionlib::SimpleActionClient<PtzTourAction>;
 
   void onState(std::uint64_t generation, const PtzState::ConstPtr& state);
   void onCapabilities(std::uint64_t generation, const PtzCapabilities::ConstPtr& capabilities);
@@ -145,12 +161,19 @@ private:
   void onPixelGoal(std::uint64_t generation, const PtzPixelActionGoal::ConstPtr& goal);
   /// The picture's subscriptions of the camera in ns_ (field_of_view, the pixel goals), under mutex_.
   void subscribeImageParts(ros::NodeHandle& node, std::uint64_t generation);
+  /// The tours' subscriptions (the tour action's goal, feedback and result topics) and client, under mutex_.
+  void subscribeTourParts(ros::NodeHandle& node, std::uint64_t generation);
+  void onTourGoal(std::uint64_t generation, const PtzTourActionGoal::ConstPtr& goal);
+  void onTourFeedback(std::uint64_t generation, const PtzTourActionFeedback::ConstPtr& feedback);
+  void onTourResult(std::uint64_t generation, const PtzTourActionResult::ConstPtr& result);
   /// Queues a job for the worker thread.
   void post(std::function<void()> job);
   void workerLoop();
   void discoveryLoop();
   /// The worker's preset list call for the camera in `ns`.
   void listPresets(const std::string& ns, std::uint64_t generation);
+  /// The worker's tour list call for the camera in `ns`.
+  void listTours(const std::string& ns, std::uint64_t generation);
   void setMessage(std::uint64_t generation, const std::string& message);
   /// Calls the preset service `move_ptz/<service>` with \p name on the worker, shows its answer, lists the presets.
   template <class Service>
@@ -169,6 +192,7 @@ private:
   std::unique_ptr<PtzClient> absolute_client_;
   std::unique_ptr<PresetClient> preset_client_;
   std::unique_ptr<PixelClient> pixel_client_;
+  std::unique_ptr<TourClient> tour_client_;
   bool jogging_ = false;  ///< the panel's velocity goal may still run
   StateWatch watch_;
   PanelSnapshot snapshot_;
@@ -176,8 +200,10 @@ private:
   /// The newest goal seen to end: the node drops finished goals from its status lists after a second, the panel keeps
   /// showing how the last one ended.
   std::optional<GoalStatusEntry> last_finished_;
-  ViewTrack views_;             ///< the camera's recent views, for drawing the aim on later images
-  PixelGoalWatch pixel_goals_;  ///< the pixel goal to draw
+  ViewTrack views_;              ///< the camera's recent views, for drawing the aim on later images
+  PixelGoalWatch pixel_goals_;   ///< the pixel goal to draw
+  TourWatch tour_goals_;         ///< the tour line's goals
+  std::string tour_listed_for_;  ///< a tour heard in feedback that was not listed: listed once for it
 
   std::uint64_t image_generation_ = 0;  ///< counts setImageTopic calls: images of an earlier topic are dropped
   std::string image_topic_;

@@ -22,6 +22,7 @@ class QLineEdit;
 class QListWidget;
 class QPushButton;
 class QSlider;
+class QSpinBox;
 class QTimer;
 class QVBoxLayout;
 
@@ -62,11 +63,17 @@ private:
   /// Subscribes to the image while the view is on and visible, to nothing otherwise.
   void updateImageSubscription();
   void refreshImage(bool aims);
+  // The Tours tab (ptz_panel_tours.cpp), beside the Presets tab `presets`.
+  void buildTours(QVBoxLayout* layout, QWidget* presets);
+  /// Fills the box from last_: the list on news, the tour line, the greying (`moves`: presets may be used).
+  void refreshTours(bool fresh, bool moves);
+  QString selectedTour() const;
 
   std::unique_ptr<PanelClient> client_;
   QString ns_;
   std::optional<Jog> pressed_;  ///< the jog control held down
   std::uint64_t presets_serial_ = 0;
+  std::uint64_t tours_serial_ = 0;
   PanelSnapshot last_;
   QString image_choice_;  ///< the image topic picked, "" for the camera's own
 
@@ -100,6 +107,14 @@ private:
   QPushButton* preset_save_ = nullptr;
   QPushButton* preset_delete_ = nullptr;
   QPushButton* preset_refresh_ = nullptr;
+  QListWidget* tours_ = nullptr;
+  QSpinBox* tour_rounds_ = nullptr;
+  QPushButton* tour_start_ = nullptr;
+  QPushButton* tour_stop_ = nullptr;
+  QPushButton* tour_delete_ = nullptr;
+  QPushButton* tour_refresh_ = nullptr;
+  QLabel* tour_label_ = nullptr;
+  QLabel* tour_progress_ = nullptr;  ///< the tour line, in the state's rows
   QCheckBox* look_ = nullptr;
   QLabel* message_ = nullptr;
   QCheckBox* image_on_ = nullptr;
