@@ -101,25 +101,44 @@ bool OnvifProtocol::bringUpLens(std::string& problem)
   lens_ = imagingLens(imaging_options_, reading);
   report(session_.lens(), lens_, imaging_options_, reading);
   lens_polls_ = LENS_POLL_EVERY;
+  lens_status_next_ = false;
   return true;
 }
 
 void OnvifProtocol::pollLens()
 {
-  if ((!lens_.focus.present && !lens_.iris.present) || --lens_polls_ > 0)
+  if (!lens_.focus.present && !lens_.iris.present)
   {
     return;
   }
-  lens_polls_ = LENS_POLL_EVERY;
+  // One lens request in a poll at most (a slow camera's poll round stays short): the settings, and at the next poll
+  // the focus' status.
   onvif::ImagingReading reading;
   std::string problem;
-  if (call(paths_.imaging, onvif::getImagingSettings(profile_.video_source), true, problem))
+  if (lens_status_next_)
   {
-    onvif::readImagingSettings(message_.content, reading);
+    lens_status_next_ = false;
+    if (call(paths_.imaging, onvif::getImagingStatus(profile_.video_source), true, problem))
+    {
+      onvif::readImagingStatus(message_.content, reading);
+    }
   }
-  if (lens_.focus.feedback && call(paths_.imaging, onvif::getImagingStatus(profile_.video_source), true, problem))
+  else if (--lens_polls_ <= 0)
   {
-    onvif::readImagingStatus(message_.content, reading);
+    lens_polls_ = LENS_POLL_EVERY;
+    lens_status_next_ = lens_.focus.feedback;
+    if (call(paths_.imaging, onvif::getImagingSettings(profile_.video_source), true, problem))
+    {
+      onvif::readImagingSettings(message_.content, reading);
+    }
+  }
+  else
+  {
+    return;
+  }
+  if (problem.empty())
+  {
+    session_.reportAlive();  // an answer keeps the link alive, as the status does
   }
   report(session_.lens(), lens_, imaging_options_, reading);  // what was not answered is left as it was
 }
@@ -128,12 +147,16 @@ bool OnvifProtocol::lensCall(const std::string& body)
 {
   std::string problem;
   lens_polls_ = 1;  // read back at the next poll
-  if (call(paths_.imaging, body, true, problem))
+  const bool done = call(paths_.imaging, body, true, problem);
+  if (done || !problem.empty())
   {
-    return true;
+    session_.reportAlive();  // answered: the link is alive, even if the camera refused it
   }
-  session_.lens().fault(problem.empty() ? "not sent: the link to the ONVIF camera was lost" : problem);
-  return false;
+  if (!done)
+  {
+    session_.lens().fault(problem.empty() ? "not sent: the link to the ONVIF camera was lost" : problem);
+  }
+  return done;
 }
 
 void OnvifProtocol::lens(const LensCommand& command)

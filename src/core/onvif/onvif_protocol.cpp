@@ -329,7 +329,6 @@ void OnvifProtocol::poll()
   observed.pan_tilt_status = status.move_status;
   observed.zoom_status = status.zoom_move_status;
   onFinding(motion_check_.observe(observed));
-  pollLens();
   if (pan_tilt_.feedback || zoom_.feedback)
   {
     session_.reportState(position);
@@ -338,6 +337,7 @@ void OnvifProtocol::poll()
   {
     session_.reportAlive();
   }
+  pollLens();  // after the state: a slow camera's lens answer does not hold it back
 }
 
 void OnvifProtocol::diagnostics(std::vector<DiagnosticValue>& values) const

@@ -231,7 +231,8 @@ private:
   /// Asks the Imaging service what the lens has (GetOptions, GetMoveOptions, GetImagingSettings, GetStatus) and
   /// decides lens_; false only when the link went (a camera without it, or refusing it, has no lens).
   bool bringUpLens(std::string& problem);
-  /// Reads the lens' settings and focus status into the session's LensReport, every few polls and after a command.
+  /// Reads the lens' settings and, at the next poll, the focus' status into the session's LensReport, every few polls
+  /// and after a command.
   void pollLens();
   /// Sends a lens request; false with the lens fault counted.
   bool lensCall(const std::string& body);
@@ -276,6 +277,7 @@ private:
   onvif::ImagingOptions imaging_options_;  ///< the lens' ranges and modes (Imaging GetOptions, GetMoveOptions)
   LensCapabilities lens_;                  ///< what the lens takes, as the bring-up found it
   int lens_polls_ = 0;                     ///< polls until the lens is read again
+  bool lens_status_next_ = false;          ///< the next poll reads the focus' status (Imaging GetStatus)
   TimePoint velocity_sent_at_{};
 };
 
