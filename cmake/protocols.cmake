@@ -122,18 +122,20 @@ ptz_protocol(onvif
   CORE src/core/onvif/onvif_bring_up.cpp src/core/onvif/onvif_codec.cpp src/core/onvif/onvif_commands.cpp
     src/core/onvif/onvif_motion_check.cpp src/core/onvif/onvif_protocol.cpp src/core/onvif/onvif_ws_security.cpp
     src/core/onvif/onvif_xml.cpp src/core/onvif/onvif_requests.cpp src/core/onvif/onvif_view_aim.cpp
+    src/core/onvif/onvif_imaging.cpp src/core/onvif/onvif_lens.cpp
   PLUGIN src/plugins/onvif_backend_plugin.cpp
   EMULATOR src/emulators/onvif_camera_emulator.cpp src/emulators/onvif_camera_emulator_ptz.cpp
     src/emulators/onvif_camera_emulator_modes.cpp src/emulators/onvif_camera_emulator_moves.cpp
-    src/emulators/onvif_camera_classify.cpp
+    src/emulators/onvif_camera_classify.cpp src/emulators/onvif_camera_emulator_imaging.cpp
   PROGRAM onvif_camera_emulator src/emulators/programs/onvif_camera_emulator_main.cpp
   HARNESS onvifHarnesses test/harness/onvif_harness.cpp
   TESTS test/core/test_onvif_cheap_cameras.cpp test/core/test_onvif_codec.cpp test/core/test_onvif_requests.cpp
     test/core/test_onvif_emulator.cpp test/core/test_onvif_emulator_modes.cpp test/core/test_onvif_motion_check.cpp
     test/core/test_onvif_protocol.cpp test/core/test_onvif_field_modes.cpp test/core/test_onvif_view_aim.cpp
+    test/core/test_onvif_move_speed.cpp test/core/test_onvif_lens.cpp
     test/core/contract/onvif_fixtures.cpp
   FUZZ soap_reply src/core/onvif/onvif_codec.cpp src/core/onvif/onvif_requests.cpp src/core/onvif/onvif_ws_security.cpp
-    src/core/onvif/onvif_xml.cpp src/core/http/crypto.cpp src/core/types.cpp
+    src/core/onvif/onvif_xml.cpp src/core/onvif/onvif_imaging.cpp src/core/http/crypto.cpp src/core/types.cpp
   FUZZ_LIBS tinyxml2::tinyxml2 OpenSSL::Crypto
   ROSTESTS test/ros/onvif_node.test test/ros/onvif_field_node.test test/ros/onvif_continuous_node.test
     test/ros/onvif_no_position_node.test test/ros/onvif_cheap_cameras_node.test

@@ -135,6 +135,9 @@ OnvifCameraEmulator::OnvifCameraEmulator(const OnvifCameraEmulatorConfig& config
   , lens_(FieldOfViewModel::fromWideEnd(config.field_of_view))
 {
   approach_.fill(std::numeric_limits<double>::quiet_NaN());
+  commanded_speed_ = { { config.device.axes[PAN].motion.max_speed, config.device.axes[TILT].motion.max_speed,
+                         config.device.axes[ZOOM].motion.max_speed } };
+  focus_iris_ = SimLensModel(config.lens, clock_->now());
   home_ = { { config.device.axes[PAN].initial_position, config.device.axes[TILT].initial_position,
               config.device.axes[ZOOM].initial_position } };
   server_ = std::make_unique<HttpCameraServer>(
@@ -195,7 +198,8 @@ std::string OnvifCameraEmulator::checkToken(const SoapMessage& message) const
 
 HttpAnswer OnvifCameraEmulator::handle(const std::string& target, const std::string& body)
 {
-  if (target != DEVICE_PATH && target != MEDIA_PATH && target != PTZ_PATH)
+  const bool imaging_target = config_.imaging && target == IMAGING_PATH;
+  if (target != DEVICE_PATH && target != MEDIA_PATH && target != PTZ_PATH && !imaging_target)
   {
     return HttpAnswer{ 404, "text/html", "<html><body>404 Not Found</body></html>" };
   }
@@ -206,7 +210,10 @@ HttpAnswer OnvifCameraEmulator::handle(const std::string& target, const std::str
   }
   const std::string operation = localName(*message.content);
   const std::string service = namespaceOf(*message.content);
-  const char* expected = target == DEVICE_PATH ? ns::DEVICE : target == MEDIA_PATH ? ns::MEDIA : ns::PTZ;
+  const char* expected = target == DEVICE_PATH ? ns::DEVICE :
+                         target == MEDIA_PATH  ? ns::MEDIA :
+                         imaging_target        ? ns::IMAGING :
+                                                 ns::PTZ;
   if (service != expected)
   {
     return fault(false, { "ter:ActionNotSupported" }, operation + " is not an operation of " + target);
@@ -241,6 +248,10 @@ HttpAnswer OnvifCameraEmulator::handle(const std::string& target, const std::str
   {
     return device(operation, message);
   }
+  if (imaging_target)
+  {
+    return imaging(operation, message.content, now);
+  }
   return target == MEDIA_PATH ? media(operation, message) : ptz(operation, message, now);
 }
 
@@ -262,10 +273,14 @@ HttpAnswer OnvifCameraEmulator::device(const std::string& operation, const SoapM
   }
   if (operation == "GetCapabilities")
   {
-    return respond(ns::DEVICE, "GetCapabilitiesResponse><Capabilities><sch:Device><sch:XAddr>" + host + DEVICE_PATH +
-                                   "</sch:XAddr></sch:Device><sch:Media><sch:XAddr>" + host + MEDIA_PATH +
-                                   "</sch:XAddr></sch:Media><sch:PTZ><sch:XAddr>" + host + PTZ_PATH +
-                                   "</sch:XAddr></sch:PTZ></Capabilities></GetCapabilitiesResponse>");
+    return respond(ns::DEVICE,
+                   "GetCapabilitiesResponse><Capabilities><sch:Device><sch:XAddr>" + host + DEVICE_PATH +
+                       "</sch:XAddr></sch:Device>" +
+                       (config_.imaging ?
+                            "<sch:Imaging><sch:XAddr>" + host + IMAGING_PATH + "</sch:XAddr></sch:Imaging>" :
+                            std::string()) +
+                       "<sch:Media><sch:XAddr>" + host + MEDIA_PATH + "</sch:XAddr></sch:Media><sch:PTZ><sch:XAddr>" +
+                       host + PTZ_PATH + "</sch:XAddr></sch:PTZ></Capabilities></GetCapabilitiesResponse>");
   }
   if (operation == "GetServices")
   {
@@ -293,6 +308,10 @@ HttpAnswer OnvifCameraEmulator::device(const std::string& operation, const SoapM
                                                "GetCompatibleConfigurations=\"false\" MoveStatus=\"true\" "
                                                "StatusPosition=\"" +
                                                (config_.status_position ? "true" : "false") + "\"/>") +
+                                   (config_.imaging ? service(ns::IMAGING, IMAGING_PATH,
+                                                              std::string("<i:Capabilities xmlns:i=\"") + ns::IMAGING +
+                                                                  "\" ImageStabilization=\"false\"/>") :
+                                                      std::string()) +
                                    "</GetServicesResponse>");
   }
   if (operation == "GetDeviceInformation")

@@ -3,7 +3,7 @@
  * \brief Private to OnvifCameraEmulator, what its parts share: the services' paths and tokens, and the SOAP answers
  * and faults in the camera's own prefixes. onvif_camera_emulator.cpp is the camera (WS-Security, the device and media
  * services), onvif_camera_emulator_modes.cpp its modes, onvif_camera_emulator_ptz.cpp its PTZ service and
- * onvif_camera_emulator_moves.cpp how it moves.
+ * onvif_camera_emulator_moves.cpp how it moves, onvif_camera_emulator_imaging.cpp its Imaging service (focus, iris).
  */
 #pragma once
 
@@ -20,6 +20,7 @@ namespace onvif_emulator
 constexpr const char* DEVICE_PATH = "/onvif/device_service";
 constexpr const char* MEDIA_PATH = "/onvif/media_service";
 constexpr const char* PTZ_PATH = "/onvif/ptz_service";
+constexpr const char* IMAGING_PATH = "/onvif/imaging_service";
 constexpr const char* CONTENT_TYPE = "application/soap+xml; charset=utf-8";
 constexpr const char* PROFILE = "profile_1";  ///< the profile with PTZ
 constexpr const char* PROFILE_WITHOUT_PTZ = "profile_0";

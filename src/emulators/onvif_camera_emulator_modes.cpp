@@ -16,7 +16,8 @@ const char* const OnvifCameraEmulatorConfig::MODES = "standard, generic-status, 
                                                      "no-relative, generic-only, wrong-address, ptz-profile-second, "
                                                      "timeout-range, axis-401, stop-keeps-moving, "
                                                      "absolute-never-moves, speed-ignores-magnitude, "
-                                                     "zoom-only-moves-pantilt, zoom-range-not-honoured";
+                                                     "zoom-only-moves-pantilt, zoom-range-not-honoured, "
+                                                     "no-speed-space, no-imaging";
 
 SimDeviceConfig OnvifCameraEmulatorConfig::defaultDevice()
 {
@@ -105,6 +106,14 @@ bool OnvifCameraEmulatorConfig::applyMode(const std::string& mode)
   else if (mode == "zoom-range-not-honoured")
   {
     honoured_zoom = 0.5;
+  }
+  else if (mode == "no-imaging")
+  {
+    imaging = false;
+  }
+  else if (mode == "no-speed-space")
+  {
+    speed_space = false;
   }
   else if (mode != "standard")
   {

@@ -26,10 +26,47 @@ namespace
 constexpr double MOVING = 1e-6;  ///< rad/s (X/s) an axis moves faster than when MoveStatus says MOVING
 }  // namespace
 
+std::string OnvifCameraEmulator::setMoveSpeed(const Element* speed, TimePoint now)
+{
+  // Shares 0..1 of each axis' top speed (GenericSpeedSpace: PanTilt x the pan's, y the tilt's); without a Speed, the
+  // configuration's DefaultPTZSpeed (1: the top speed).
+  AxisValues share{ { 1.0, 1.0, 1.0 } };
+  const PanTiltArgument pan_tilt = panTiltOf(speed);
+  const ZoomArgument zoom = zoomOf(speed);
+  if (config_.speed_space && speed != nullptr)
+  {
+    if ((pan_tilt.given && !pan_tilt.space.empty() && pan_tilt.space != GENERIC_PAN_TILT_SPEED) ||
+        (zoom.given && !zoom.space.empty() && zoom.space != GENERIC_ZOOM_SPEED))
+    {
+      return "space";
+    }
+    const auto within = [](double value) { return value >= 0.0 && value <= 1.0; };
+    if (!pan_tilt.numbers || !zoom.number || (pan_tilt.given && !(within(pan_tilt.x) && within(pan_tilt.y))) ||
+        (zoom.given && !within(zoom.x)))
+    {
+      return "speed";
+    }
+    share = { { pan_tilt.given ? pan_tilt.x : 1.0, pan_tilt.given ? pan_tilt.y : 1.0, zoom.given ? zoom.x : 1.0 } };
+  }
+  for (Axis axis : ALL_AXES)
+  {
+    commanded_speed_[axis] = share[axis] * config_.device.axes[axis].motion.max_speed;
+    model_.setCruiseSpeed(axis, commanded_speed_[axis], now);
+  }
+  return {};
+}
+
+AxisValues OnvifCameraEmulator::commandedSpeed() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return commanded_speed_;
+}
+
 void OnvifCameraEmulator::goToAll(const AxisValues& position, TimePoint now)
 {
   velocity_axes_ = {};
   approach_.fill(std::numeric_limits<double>::quiet_NaN());
+  setMoveSpeed(nullptr, now);  // the default speed
   for (Axis axis : ALL_AXES)
   {
     driving_[axis] = true;
@@ -210,6 +247,15 @@ HttpAnswer OnvifCameraEmulator::move(const std::string& operation, const Element
     {
       return absolute ? invalid("ter:InvalidPosition", "The requested position is out of bounds") :
                         invalid("ter:InvalidTranslation", "The requested translation is out of bounds");
+    }
+    const std::string speed_problem = setMoveSpeed(child(request, ns::PTZ, "Speed"), now);
+    if (speed_problem == "space")
+    {
+      return invalid("ter:SpaceNotSupported", "A speed space is referenced that is not supported by the PTZ node");
+    }
+    if (!speed_problem.empty())
+    {
+      return invalid("ter:InvalidSpeed", "The requested speed is out of bounds");
     }
     if (absolute && config_.absolute_never_moves)
     {

@@ -69,7 +69,7 @@ std::string OnvifCameraEmulator::supportedSpaces() const
   }
   spaces += space("ContinuousPanTiltVelocitySpace", GENERIC_PAN_TILT_VELOCITY, -1, 1, -1, 1) +
             space("ContinuousZoomVelocitySpace", GENERIC_ZOOM_VELOCITY, -1, 1);
-  if (config_.absolute)
+  if (config_.absolute && config_.speed_space)
   {
     spaces +=
         space("PanTiltSpeedSpace", GENERIC_PAN_TILT_SPEED, 0, 1) + space("ZoomSpeedSpace", GENERIC_ZOOM_SPEED, 0, 1);

@@ -51,7 +51,9 @@ TimePoint passed(const std::vector<PtzSample>& samples, double from, double to, 
 /// (MAVLink: the managers in the field do not read a rate beside an angle as a speed, doc/backends/mavlink_gimbal.md).
 SpeedControl expectedControl(const std::string& plugin)
 {
-  const bool device = plugin == "visca" || plugin == "axis" || plugin == "flir" || plugin == "pantilt";
+  // The emulated ONVIF camera lists GenericSpeedSpace: the speed goes with AbsoluteMove's Speed.
+  const bool device =
+      plugin == "visca" || plugin == "axis" || plugin == "flir" || plugin == "pantilt" || plugin == "onvif";
   return device ? SpeedControl::DEVICE : SpeedControl::NODE;
 }
 

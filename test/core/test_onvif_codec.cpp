@@ -232,7 +232,9 @@ TEST(OnvifCodec, ProfilesNameTheirConfigurationsDefaultSpaces)
 {
   SoapMessage message;
   ASSERT_EQ(parseSoap(reply("<trt:GetProfilesResponse><trt:Profiles token=\"main\" fixed=\"true\"><tt:Name>main"
-                            "</tt:Name><tt:PTZConfiguration token=\"ptz\"><tt:Name>ptz</tt:Name><tt:UseCount>1"
+                            "</tt:Name><tt:VideoSourceConfiguration token=\"vsc\"><tt:SourceToken>cam_0"
+                            "</tt:SourceToken></tt:VideoSourceConfiguration><tt:PTZConfiguration "
+                            "token=\"ptz\"><tt:Name>ptz</tt:Name><tt:UseCount>1"
                             "</tt:UseCount><tt:NodeToken>node</tt:NodeToken><tt:DefaultAbsolutePantTiltPositionSpace>"
                             "http://www.onvif.org/ver10/tptz/PanTiltSpaces/PositionGenericSpace"
                             "</tt:DefaultAbsolutePantTiltPositionSpace><tt:DefaultAbsoluteZoomPositionSpace>"
@@ -250,8 +252,10 @@ TEST(OnvifCodec, ProfilesNameTheirConfigurationsDefaultSpaces)
   EXPECT_EQ(profile.node, "node");
   EXPECT_EQ(profile.default_pan_tilt_space, GENERIC_PAN_TILT_SPACE);
   EXPECT_EQ(profile.default_zoom_space, GENERIC_ZOOM_SPACE);
+  EXPECT_EQ(profile.video_source, "cam_0");  // what the Imaging service's requests name
   ASSERT_EQ(readProfiles(message.content, "bare", profile), "");
   EXPECT_EQ(profile.default_pan_tilt_space, "");  // declares none
+  EXPECT_EQ(profile.video_source, "");
 }
 
 TEST(OnvifCodec, NodesListTheirSpacesRangesPresetsAndHome)
@@ -348,6 +352,7 @@ TEST(OnvifCodec, ServicesPresetsAndTheirRequests)
   ASSERT_EQ(readServices(message.content, paths), "");
   EXPECT_EQ(paths.media, "/onvif/Media");
   EXPECT_EQ(paths.ptz, "/onvif/PTZ");
+  EXPECT_EQ(paths.imaging, "");  // no Imaging service listed: no focus or iris
 
   ASSERT_EQ(parseSoap(reply("<tptz:GetPresetsResponse><tptz:Preset token=\"1\"><tt:Name>door</tt:Name><tt:PTZPosition>"
                             "<tt:PanTilt x=\"0.5\" y=\"-0.25\" space=\"http://www.onvif.org/ver10/tptz/PanTiltSpaces/"

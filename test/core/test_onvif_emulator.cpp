@@ -25,12 +25,13 @@ TEST(OnvifEmulatorAsACamera, AStandardClientFindsItsProfileAndRecallsAPreset)
   Camera camera;
   OnvifClient client(camera.emulator->port());
 
-  // GetServices: the media and PTZ services, with their capabilities when asked.
+  // GetServices: the media, PTZ and Imaging services, with their capabilities when asked.
   ASSERT_TRUE(client.call("/onvif/device_service", getServices(true))) << client.message().fault_text;
   ServicePaths paths;
   ASSERT_EQ(readServices(client.content(), paths), "");
   EXPECT_EQ(paths.media, "/onvif/media_service");
   EXPECT_EQ(paths.ptz, "/onvif/ptz_service");
+  EXPECT_EQ(paths.imaging, "/onvif/imaging_service");  // ver20/imaging: focus and iris
   const Element* ptz_capabilities = nullptr;
   for (const Element* service : children(client.content(), ns::DEVICE, "Service"))
   {

@@ -89,6 +89,48 @@ TEST(OnvifCodec, AbsoluteMoveEnvelopeIsGolden)
       "</tptz:Position></tptz:AbsoluteMove></s:Body></s:Envelope>");
 }
 
+TEST(OnvifCodec, AbsoluteMoveWithASpeedIsGolden)
+{
+  // PTZ specification: AbsoluteMove{ProfileToken, Position, Speed?}; the Speed a PTZSpeed in the generic speed spaces,
+  // shares 0..1 of the top speed.
+  const Vector position = Vector::of(true, -0.5, 0.25, GENERIC_PAN_TILT_SPACE, true, 0.5, GENERIC_ZOOM_SPACE);
+  const Vector speed = Vector::of(true, 0.25, 1.0, GENERIC_PAN_TILT_SPEED, true, 0.1, GENERIC_ZOOM_SPEED);
+  EXPECT_EQ(absoluteMove("profile_1", position, speed), "<tptz:AbsoluteMove><tptz:ProfileToken>profile_1</"
+                                                        "tptz:ProfileToken><tptz:Position>"
+                                                        "<tt:PanTilt x=\"-0.500000\" y=\"0.250000\" "
+                                                        "space=\"http://www.onvif.org/ver10/tptz/PanTiltSpaces/"
+                                                        "PositionGenericSpace\"/>"
+                                                        "<tt:Zoom x=\"0.500000\" "
+                                                        "space=\"http://www.onvif.org/ver10/tptz/ZoomSpaces/"
+                                                        "PositionGenericSpace\"/>"
+                                                        "</tptz:Position><tptz:Speed>"
+                                                        "<tt:PanTilt x=\"0.250000\" y=\"1.000000\" "
+                                                        "space=\"http://www.onvif.org/ver10/tptz/PanTiltSpaces/"
+                                                        "GenericSpeedSpace\"/>"
+                                                        "<tt:Zoom x=\"0.100000\" "
+                                                        "space=\"http://www.onvif.org/ver10/tptz/ZoomSpaces/"
+                                                        "ZoomGenericSpeedSpace\"/>"
+                                                        "</tptz:Speed></tptz:AbsoluteMove>");
+  // Only the zoom's speed; and none at all: no Speed element (the camera's default speed).
+  const Vector zoom_only = Vector::of(false, 0.0, 0.0, "", true, 0.3, GENERIC_ZOOM_SPEED);
+  EXPECT_EQ(absoluteMove("p", Vector::of(false, 0.0, 0.0, "", true, 1.0, ""), zoom_only), "<tptz:AbsoluteMove><tptz:"
+                                                                                          "ProfileToken>p</"
+                                                                                          "tptz:ProfileToken><tptz:"
+                                                                                          "Position><tt:Zoom "
+                                                                                          "x=\"1.000000\"/>"
+                                                                                          "</"
+                                                                                          "tptz:Position><tptz:Speed><"
+                                                                                          "tt:Zoom x=\"0.300000\" "
+                                                                                          "space=\"http://"
+                                                                                          "www.onvif.org/ver10/tptz/"
+                                                                                          "ZoomSpaces/"
+                                                                                          "ZoomGenericSpeedSpace\"/></"
+                                                                                          "tptz:Speed>"
+                                                                                          "</tptz:AbsoluteMove>");
+  EXPECT_EQ(absoluteMove("p", position, Vector()), absoluteMove("p", position));
+  EXPECT_EQ(absoluteMove("p", position).find("Speed"), std::string::npos);
+}
+
 TEST(OnvifCodec, OtherRequestBodiesAreGolden)
 {
   const std::string unsigned_request = envelope(getSystemDateAndTime());

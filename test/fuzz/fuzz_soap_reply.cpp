@@ -1,7 +1,7 @@
 /**
  * \file
- * \brief libFuzzer target: the SOAP envelope reader and every ONVIF reply reader on arbitrary bytes. They never read
- * out of bounds, never crash on a missing element, and what they accept is sane.
+ * \brief libFuzzer target: the SOAP envelope reader and every ONVIF reply reader (PTZ and Imaging) on arbitrary bytes.
+ * They never read out of bounds, never crash on a missing element, and what they accept is sane.
  */
 #include <cmath>
 #include <cstdint>
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ptz_action_server/core/onvif/onvif_codec.h"
+#include "ptz_action_server/core/onvif/onvif_imaging.h"
 
 using namespace ptz_action_server::onvif;
 
@@ -82,6 +83,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   std::string token;
   if (readPresetToken(message.content, token).empty() && token.empty())
+  {
+    std::abort();
+  }
+  // The Imaging service's readers: ranges they accept are ordered, values finite, shares within 0..1.
+  ImagingOptions options;
+  readImagingOptions(message.content, options);
+  readMoveOptions(message.content, options);
+  for (const FloatRange* range : { &options.iris, &options.focus_position, &options.focus_speed })
+  {
+    if (range->known && !(range->min <= range->max && std::isfinite(range->min) && std::isfinite(range->max)))
+    {
+      std::abort();
+    }
+  }
+  ImagingReading reading;
+  readImagingSettings(message.content, reading);
+  readImagingStatus(message.content, reading);
+  if ((reading.has_iris && !std::isfinite(reading.iris)) || (reading.has_focus && !std::isfinite(reading.focus)))
+  {
+    std::abort();
+  }
+  const double share = irisShare(options.iris, reading.iris);
+  if (options.iris.known && !(share >= 0.0 && share <= 1.0))
   {
     std::abort();
   }

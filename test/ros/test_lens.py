@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """rostest client for focus and iris: lens_capabilities, lens_state, the cmd/ topics with their dead-man, the
-set_auto and one_push services on the sim's lens, and a device without a lens refusing with the reason.
+set_auto and one_push services on the sim's lens, a device without a lens refusing with the reason, and an ONVIF
+camera's lens through its Imaging service (onvif_camera_emulator).
 
 It waits on conditions with deadlines, never on bare sleeps.
 """
@@ -64,7 +65,8 @@ class LensTest(unittest.TestCase):
         rospy.init_node('lens_test')
         cls.sim = Camera('/ptz')
         cls.nolens = Camera('/nolens')
-        for camera in (cls.sim, cls.nolens):
+        cls.onvif = Camera('/onvif')
+        for camera in (cls.sim, cls.nolens, cls.onvif):
             assert wait_until(lambda: camera.capabilities is not None and camera.latest() is not None, START_WAIT)
             for publisher in (camera.focus, camera.focus_position, camera.iris_position):
                 assert wait_until(lambda: publisher.get_num_connections() > 0, START_WAIT)
@@ -126,6 +128,27 @@ class LensTest(unittest.TestCase):
         self.assertEqual(state.focus_mode, PtzLensState.MODE_UNKNOWN)
         self.assertTrue(math.isnan(state.focus) and math.isnan(state.iris))
         self.assertEqual(state.faults, 0)
+
+    def test_an_onvif_camera_drives_its_lens_through_the_imaging_service(self):
+        capabilities = self.onvif.capabilities
+        self.assertTrue(capabilities.focus.present and capabilities.focus.auto_mode and capabilities.focus.velocity)
+        self.assertTrue(capabilities.focus.absolute and capabilities.focus.feedback)
+        self.assertFalse(capabilities.focus.one_push)
+        self.assertTrue(capabilities.iris.present and capabilities.iris.absolute and capabilities.iris.feedback)
+        self.assertFalse(capabilities.iris.velocity)
+        self.onvif.focus_position.publish(Float64(0.25))  # Move Absolute Position 250 of 0..1000, after MANUAL
+        self.assertTrue(wait_until(lambda: abs(self.onvif.latest().focus - 0.25) < 1e-3, WAIT))
+        self.assertEqual(self.onvif.latest().focus_mode, PtzLensState.MODE_MANUAL)
+        self.onvif.iris_position.publish(Float64(0.5))  # Exposure MANUAL, Iris -11 dB of -22..0
+        self.assertTrue(wait_until(lambda: abs(self.onvif.latest().iris - 0.5) < 1e-3, WAIT))
+        self.assertEqual(self.onvif.latest().iris_mode, PtzLensState.MODE_MANUAL)
+        answer = self.onvif.focus_auto(True)
+        self.assertTrue(answer.success, answer.message)
+        self.assertTrue(wait_until(lambda: self.onvif.latest().focus_mode == PtzLensState.MODE_AUTO, WAIT))
+        answer = self.onvif.one_push()
+        self.assertFalse(answer.success)
+        self.assertIn('the ONVIF Imaging service has no one-push focus', answer.message)
+        self.assertEqual(self.onvif.latest().faults, 0)
 
 
 if __name__ == '__main__':

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "ptz_action_server/core/sim/sim_device_model.h"
+#include "ptz_action_server/core/sim/sim_lens_model.h"
 #include "ptz_action_server/emulators/http_camera_emulator.h"
 #include "ptz_action_server/emulators/http_camera_server.h"
 
@@ -61,6 +62,16 @@ struct OnvifCameraEmulatorConfig
   bool fov_space = true;
   /// The lens at zoom 1 (full angles, rad), narrowing as an ideal zoom lens with the zoom's X.
   FieldOfViewAngles field_of_view = HttpCameraEmulator::defaultFieldOfView();
+  /// GetNodes lists PanTiltSpeedSpace and ZoomSpeedSpace (GenericSpeedSpace, 0..1) and AbsoluteMove, RelativeMove
+  /// take a Speed in them: each axis moves at that share of its max speed. False: field case "no speed space" (a
+  /// Speed is ignored, every move runs at the top speed).
+  bool speed_space = true;
+  /// An Imaging service (ver20/imaging, `/onvif/imaging_service`, in GetCapabilities and GetServices) drives the
+  /// lens below on video_source_0. False: field case "no imaging" (a camera with PTZ only).
+  bool imaging = true;
+  /// Its focus and iris (either may be absent): focus Position 0..1000 (near..far) and Continuous Speed -5..5, iris
+  /// -22..0 dB (0 fully open), as GetOptions and GetMoveOptions list them.
+  SimLensConfig lens;
   bool status_position = true;  ///< GetStatus carries a Position (false: field case "no position in the status")
   /// Preset operations work (false: field case "no presets": they answer ter:ActionNotSupported although GetNodes
   /// still lists MaximumNumberOfPresets, as those cameras do).
@@ -107,7 +118,8 @@ struct OnvifCameraEmulatorConfig
   /// generic-status with the generic pan listed as 0..1, starting at pan -155.6 deg, generic -0.864666, so the
   /// contradiction shows at once), "no-relative", "generic-only", "wrong-address", "ptz-profile-second",
   /// "timeout-range", "axis-401", "stop-keeps-moving", "absolute-never-moves", "speed-ignores-magnitude",
-  /// "zoom-only-moves-pantilt", "zoom-range-not-honoured". False for another name.
+  /// "zoom-only-moves-pantilt", "zoom-range-not-honoured", "no-speed-space",
+  /// "no-imaging". False for another name.
   bool applyMode(const std::string& mode);
   static const char* const MODES;  ///< the names, for help texts
 };
@@ -160,6 +172,11 @@ public:
   std::vector<ClassifiedCommand> classify() const;
   static constexpr const char* REFUSAL = "PTZ is locked by another user";
 
+  /// The lens now: focus and iris modes and positions (shares 0..1), for tests.
+  LensState lensState() const;
+  /// The cruise speed of the last position move per axis (rad/s, X/s): its Speed's share of the max speed.
+  AxisValues commandedSpeed() const;
+
   /// Tokens the camera refused (a wrong password, a stale Created).
   std::uint64_t refusedTokens() const;
 
@@ -174,6 +191,10 @@ private:
   HttpAnswer device(const std::string& operation, const onvif::SoapMessage& message);
   HttpAnswer media(const std::string& operation, const onvif::SoapMessage& message);
   HttpAnswer ptz(const std::string& operation, const onvif::SoapMessage& message, TimePoint now);
+  /// The Imaging service: focus and iris (onvif_camera_emulator_imaging.cpp).
+  HttpAnswer imaging(const std::string& operation, const tinyxml2::XMLElement* request, TimePoint now);
+  HttpAnswer setImagingSettings(const tinyxml2::XMLElement* settings, TimePoint now);
+  HttpAnswer moveFocus(const tinyxml2::XMLElement* focus, TimePoint now);
   /// The PTZ operations on a profile: moves, status, presets, home.
   HttpAnswer move(const std::string& operation, const tinyxml2::XMLElement* request, TimePoint now);
   HttpAnswer presets(const std::string& operation, const tinyxml2::XMLElement* request, TimePoint now);
@@ -191,6 +212,9 @@ private:
   std::string supportedSpaces() const;
   /// A PTZVector (Position, PTZPosition) of \p position in the default spaces.
   std::string positionVector(const char* element, const AxisValues& position) const;
+  /// Sets each axis' cruise speed from a move's Speed (nullptr: the default, the top speed); "" or "space" / "speed"
+  /// (a space it does not list, a share outside 0..1). mutex_ held.
+  std::string setMoveSpeed(const tinyxml2::XMLElement* speed, TimePoint now);
   /// Moves to \p position on every axis (a preset, home).
   void goToAll(const AxisValues& position, TimePoint now);
   /// Moves pan or tilt to \p target as the camera does (from below by the backlash, if it has one).
@@ -213,6 +237,8 @@ private:
   /// Axes a command drives (a position not yet reached, a speed): MoveStatus says MOVING for them, even when a fault
   /// blocks the axis (a blocked motor's controller still drives it).
   mutable std::array<bool, AXIS_COUNT> driving_{};
+  AxisValues commanded_speed_{};   ///< the last position move's cruise speeds
+  SimLensModel focus_iris_;        ///< the Imaging service's lens
   std::map<int, Preset> presets_;  ///< by token number
   int next_preset_ = 1;
   AxisValues home_{ { 0.0, 0.0, 1.0 } };

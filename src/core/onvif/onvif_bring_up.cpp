@@ -192,6 +192,10 @@ bool OnvifProtocol::bringUp(std::string& problem, onvif::Status& status)
       problem.clear();
     }
   }
+  if (!bringUpLens(problem))
+  {
+    return false;
+  }
   if (!call(paths_.ptz, getStatus(profile_.token), true, problem))
   {
     return false;
@@ -242,6 +246,11 @@ void OnvifProtocol::plan(const onvif::Status& status)
     pan_tilt.y = corrected != nullptr ? corrected->y : chosen->y;
   }
   pan_tilt.velocity = findSpace(node_.continuous_pan_tilt, GENERIC_PAN_TILT_VELOCITY) != nullptr;
+  if (const Space* speed = findSpace(node_.pan_tilt_speed, GENERIC_PAN_TILT_SPEED))
+  {
+    pan_tilt.speed = true;
+    pan_tilt.speed_range = speed->x;
+  }
   std::vector<std::string> lacks;
   if (!pan_tilt.absolute && !absolute_refused_.empty())
   {
@@ -282,6 +291,11 @@ void OnvifProtocol::plan(const onvif::Status& status)
   zoom.present = findSpace(node_.absolute_zoom, GENERIC_ZOOM_SPACE) != nullptr;
   zoom.absolute = zoom.present && absolute_refused_.empty() && !zoom_ignores_absolute_;
   zoom.velocity = zoom.present && findSpace(node_.continuous_zoom, GENERIC_ZOOM_VELOCITY) != nullptr;
+  if (const Space* speed = findSpace(node_.zoom_speed, GENERIC_ZOOM_SPEED))
+  {
+    zoom.speed = zoom.present;
+    zoom.speed_range = speed->x;
+  }
   const std::string zoom_space = zoomStatusSpace(status);
   zoom.feedback = zoom.present && status.has_zoom && zoom_space == GENERIC_ZOOM_SPACE;
   if (!zoom.present && !node_.absolute_zoom.empty())

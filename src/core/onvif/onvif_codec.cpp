@@ -170,6 +170,7 @@ std::string readCapabilities(const Element* response, ServicePaths& paths)
       return std::string("no ") + service.first + " XAddr";
     }
   }
+  read.imaging = servicePath(text(path(child(capabilities, ns::SCHEMA, "Imaging"), ns::SCHEMA, { "XAddr" })));
   paths = read;
   return {};
 }
@@ -188,6 +189,10 @@ std::string readServices(const Element* response, ServicePaths& paths)
     else if (name == ns::PTZ)
     {
       read.ptz = address;
+    }
+    else if (name == ns::IMAGING)
+    {
+      read.imaging = address;
     }
   }
   if (read.media.empty() || read.ptz.empty())
@@ -218,6 +223,7 @@ std::string readProfiles(const Element* response, const std::string& wanted, Pro
     read.node = text(child(configuration, ns::SCHEMA, "NodeToken"));
     read.default_pan_tilt_space = text(child(configuration, ns::SCHEMA, "DefaultAbsolutePantTiltPositionSpace"));
     read.default_zoom_space = text(child(configuration, ns::SCHEMA, "DefaultAbsoluteZoomPositionSpace"));
+    read.video_source = text(path(item, ns::SCHEMA, { "VideoSourceConfiguration", "SourceToken" }));
     profile = read;
     return {};
   }
@@ -242,7 +248,9 @@ std::string readNode(const Element* response, const std::string& token, Node& no
                                 readSpaces(spaces, "RelativePanTiltTranslationSpace", true, read.relative_pan_tilt) +
                                 readSpaces(spaces, "RelativeZoomTranslationSpace", false, read.relative_zoom) +
                                 readSpaces(spaces, "ContinuousPanTiltVelocitySpace", true, read.continuous_pan_tilt) +
-                                readSpaces(spaces, "ContinuousZoomVelocitySpace", false, read.continuous_zoom);
+                                readSpaces(spaces, "ContinuousZoomVelocitySpace", false, read.continuous_zoom) +
+                                readSpaces(spaces, "PanTiltSpeedSpace", false, read.pan_tilt_speed) +
+                                readSpaces(spaces, "ZoomSpeedSpace", false, read.zoom_speed);
     if (!problem.empty())
     {
       return "PTZ node '" + read.token + "': " + problem;

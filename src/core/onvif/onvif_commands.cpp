@@ -143,6 +143,11 @@ void OnvifProtocol::absoluteMoveRefused(const std::string& answer)
 
 void OnvifProtocol::goTo(const AxisValues& position)
 {
+  goToAtSpeed(position, AxisValues{});
+}
+
+void OnvifProtocol::goToAtSpeed(const AxisValues& position, const AxisValues& speed)
+{
   velocity_body_.clear();
   motion_check_.clear();
   const bool pan_tilt = !(std::isnan(position[PAN]) && std::isnan(position[TILT]));
@@ -198,9 +203,23 @@ void OnvifProtocol::goTo(const AxisValues& position)
     target.z = std::clamp(std::log(std::max(1.0, position[ZOOM])) / std::log(settings_.zoom_max), 0.0, 1.0);
     sent[ZOOM] = std::pow(settings_.zoom_max, target.z);
   }
+  // The Speed, where the node lists its space and the goal asks one (0: the camera's default speed, no Speed sent).
+  // PanTilt x is the pan's share of its top speed and y the tilt's; an axis that asks none goes at its top.
+  const auto share = [](double asked, double top, const onvif::Range& range) {
+    const double slowest = std::max(range.min, 0.0);
+    return std::clamp(asked > 0.0 && top > 0.0 ? asked / top : 1.0, slowest, std::max(range.max, slowest));
+  };
+  onvif::Vector move_speed;
+  move_speed.pan_tilt = target.pan_tilt && pan_tilt_.speed && (speed[PAN] > 0.0 || speed[TILT] > 0.0);
+  move_speed.x = share(speed[PAN], settings_.pan_max_speed, pan_tilt_.speed_range);
+  move_speed.y = share(speed[TILT], settings_.tilt_max_speed, pan_tilt_.speed_range);
+  move_speed.pan_tilt_space = onvif::GENERIC_PAN_TILT_SPEED;
+  move_speed.zoom = target.zoom && zoom_.speed && speed[ZOOM] > 0.0;
+  move_speed.z = share(speed[ZOOM], settings_.zoom_max_rate, zoom_.speed_range);
+  move_speed.zoom_space = onvif::GENERIC_ZOOM_SPEED;
   if (target.pan_tilt || target.zoom)
   {
-    if (command(paths_.ptz, onvif::absoluteMove(profile_.token, target), "AbsoluteMove"))
+    if (command(paths_.ptz, onvif::absoluteMove(profile_.token, target, move_speed), "AbsoluteMove"))
     {
       watched_command_ = session_.currentCommand();
       motion_check_.absoluteMoveSent(session_.now(), now.position, sent);

@@ -98,6 +98,8 @@ Capabilities OnvifProtocol::cameraCapabilities() const
   // The listed range, unless the camera showed it does not reach its end.
   zoom.range = { 1.0, !zoom_.present ? 1.0 : honoured_zoom_max_ > 0.0 ? honoured_zoom_max_ : settings_.zoom_max };
   zoom.max_speed = settings_.zoom_max_rate;
+  capabilities.speed = moveSpeed();
+  capabilities.lens = lens_;
   capabilities.relative_moves = !node_.relative_pan_tilt.empty() || !node_.relative_zoom.empty();
   capabilities.device_presets = device_presets_;
   capabilities.device_home = node_.home_supported;
@@ -105,6 +107,22 @@ Capabilities OnvifProtocol::cameraCapabilities() const
   capabilities.view_box_zoom = view_.centre && view_.zoom != ViewPlan::Zoom::NONE;
   capabilities.view_command = "ONVIF RelativeMove in TranslationSpaceFov";
   return capabilities;
+}
+
+MoveSpeedCapability OnvifProtocol::moveSpeed() const
+{
+  MoveSpeedCapability speed;
+  const bool pan_tilt = pan_tilt_.absolute && pan_tilt_.speed;
+  const bool zoom = zoom_.absolute && zoom_.speed;
+  // An axis beside one the camera takes a speed for moves at its own speed: the node shapes no axis of such a move.
+  const SpeedControl without = pan_tilt || zoom ? SpeedControl::OWN : SpeedControl::NODE;
+  speed.control = { { pan_tilt ? SpeedControl::DEVICE : without, pan_tilt ? SpeedControl::DEVICE : without,
+                      zoom ? SpeedControl::DEVICE : without } };
+  // The slowest: the listed range's low end (0 lists any speed).
+  speed.min_speed = { { pan_tilt ? std::max(pan_tilt_.speed_range.min, 0.0) * settings_.pan_max_speed : 0.0,
+                        pan_tilt ? std::max(pan_tilt_.speed_range.min, 0.0) * settings_.tilt_max_speed : 0.0,
+                        zoom ? std::max(zoom_.speed_range.min, 0.0) * settings_.zoom_max_rate : 0.0 } };
+  return speed;
 }
 
 double OnvifProtocol::angleOf(const GenericAxisMapping& mapping, double x) const
@@ -319,6 +337,7 @@ void OnvifProtocol::poll()
   {
     session_.reportAlive();
   }
+  pollLens();  // after the state: a slow camera's lens answer does not hold it back
 }
 
 void OnvifProtocol::diagnostics(std::vector<DiagnosticValue>& values) const

@@ -115,8 +115,15 @@ std::string getStatus(const std::string& profile)
 
 std::string absoluteMove(const std::string& profile, const Vector& position)
 {
+  return absoluteMove(profile, position, Vector());
+}
+
+std::string absoluteMove(const std::string& profile, const Vector& position, const Vector& speed)
+{
+  const std::string speed_elements = vectorElements(speed);
   return "<tptz:AbsoluteMove><tptz:ProfileToken>" + escaped(profile) + "</tptz:ProfileToken><tptz:Position>" +
-         vectorElements(position) + "</tptz:Position></tptz:AbsoluteMove>";
+         vectorElements(position) + "</tptz:Position>" +
+         (speed_elements.empty() ? "" : "<tptz:Speed>" + speed_elements + "</tptz:Speed>") + "</tptz:AbsoluteMove>";
 }
 
 std::string absoluteMove(const std::string& profile, double x, double y, const char* space, bool with_zoom, double zoom)

@@ -97,6 +97,10 @@ std::string getConfigurationOptions(const std::string& configuration_token);
 std::string getStatus(const std::string& profile);
 /// AbsoluteMove{ProfileToken, Position}: only the parts \p position has.
 std::string absoluteMove(const std::string& profile, const Vector& position);
+/// AbsoluteMove{ProfileToken, Position, Speed}: the Speed's parts \p speed has (none: no Speed element, the camera's
+/// default speed), e.g. PanTilt x, y and Zoom x in GenericSpeedSpace / ZoomGenericSpeedSpace, shares 0..1 of the top
+/// speed.
+std::string absoluteMove(const std::string& profile, const Vector& position, const Vector& speed);
 /// The usual AbsoluteMove: pan-tilt in \p space, and the generic zoom when \p with_zoom.
 std::string absoluteMove(const std::string& profile, double x, double y, const char* space, bool with_zoom,
                          double zoom);
@@ -119,8 +123,9 @@ std::string setHomePosition(const std::string& profile);
 /// What the bring-up learns.
 struct ServicePaths
 {
-  std::string media;  ///< path of the media service ("/onvif/media_service")
-  std::string ptz;    ///< path of the PTZ service
+  std::string media;    ///< path of the media service ("/onvif/media_service")
+  std::string ptz;      ///< path of the PTZ service
+  std::string imaging;  ///< path of the Imaging service (focus, iris), "" when the camera lists none
 };
 /// The profile the backend drives, and the default spaces of its PTZConfiguration.
 struct Profile
@@ -132,6 +137,8 @@ struct Profile
   /// none; "" when the configuration declares none.
   std::string default_pan_tilt_space;
   std::string default_zoom_space;  ///< DefaultAbsoluteZoomPositionSpace, or ""
+  /// VideoSourceConfiguration/SourceToken: the video source the Imaging service's requests name ("" if none)
+  std::string video_source;
 };
 /// A range of one axis of a space. The specification writes an unbounded one as -INF / INF.
 struct Range
@@ -162,6 +169,8 @@ struct Node
   std::vector<Space> relative_zoom;        ///< RelativeZoomTranslationSpace
   std::vector<Space> continuous_pan_tilt;  ///< ContinuousPanTiltVelocitySpace
   std::vector<Space> continuous_zoom;      ///< ContinuousZoomVelocitySpace
+  std::vector<Space> pan_tilt_speed;       ///< PanTiltSpeedSpace (one-dimensional: x only)
+  std::vector<Space> zoom_speed;           ///< ZoomSpeedSpace
   int max_presets = 0;                     ///< MaximumNumberOfPresets (0 when absent)
   bool home_supported = false;             ///< HomeSupported
 };
@@ -189,7 +198,8 @@ struct Preset
 
 /// Readers of a response element (SoapMessage::content); each returns "" or what is missing.
 std::string readSystemTime(const Element* response, double& utc_seconds);
-/// Keeps only the path of each XAddr (some firmware advertises a wrong host: the configured one is used).
+/// Keeps only the path of each XAddr (some firmware advertises a wrong host: the configured one is used); the Imaging
+/// XAddr is optional.
 std::string readCapabilities(const Element* response, ServicePaths& paths);
 /// The media and PTZ paths of a GetServicesResponse (by each Service's Namespace).
 std::string readServices(const Element* response, ServicePaths& paths);

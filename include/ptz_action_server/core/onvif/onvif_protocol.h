@@ -14,6 +14,7 @@
 #include "ptz_action_server/core/device/device_backend.h"
 #include "ptz_action_server/core/http/http_device_protocol.h"
 #include "ptz_action_server/core/onvif/onvif_codec.h"
+#include "ptz_action_server/core/onvif/onvif_imaging.h"
 #include "ptz_action_server/core/onvif/onvif_motion_check.h"
 
 namespace ptz_action_server
@@ -118,12 +119,20 @@ public:
   void onConnected() override;
   void poll() override;
   void goTo(const AxisValues& position) override;
+  /// AbsoluteMove with a Speed (GenericSpeedSpace, ZoomGenericSpeedSpace: \p speed / the axis' max speed, within the
+  /// listed range) on the axes whose speed space the node lists (capabilities().speed says DEVICE for them).
+  void goToAtSpeed(const AxisValues& position, const AxisValues& speed) override;
   void moveAtVelocity(const AxisValues& velocity) override;
   void stop() override;
   /// RelativeMove with the pan-tilt in TranslationSpaceFov (x = 2 X - 1, y = 1 - 2 Y of the picture's shares) and, for
   /// a box, the zoom by its magnification: in the zoom's TranslationSpaceFov where the options list it, else in the
   /// generic translation space by the zoom law (X = zoom_max ^ z).
   void aimInView(const ViewTarget& target) override;
+  /// Focus and iris through the Imaging service (onvif_lens.cpp): SetImagingSettings for the modes and the iris (its
+  /// Exposure Mode MANUAL with the Iris), Move (Continuous Speed, Absolute Position) and Stop for the focus, after a
+  /// SetImagingSettings AutoFocusMode MANUAL where the focus is not known to be manual (some cameras refuse a Move in
+  /// AUTO). A refusal is a lens fault, never the goal's.
+  void lens(const LensCommand& command) override;
   void diagnostics(std::vector<DiagnosticValue>& values) const override;
 
   const OnvifCounters& counters() const
@@ -147,6 +156,8 @@ private:
     onvif::Range x, y;         ///< its ranges as used (the listed ones, unless the status contradicted them)
     std::string status_space;  ///< the space of the first status' position
     std::string limitation;    ///< what the camera lacks, in its terms ("" if nothing)
+    bool speed = false;        ///< the node lists GenericSpeedSpace: AbsoluteMove takes a Speed
+    onvif::Range speed_range;  ///< its listed range
   };
   struct ZoomPlan
   {
@@ -155,6 +166,8 @@ private:
     bool velocity = false;
     bool feedback = false;
     std::string limitation;
+    bool speed = false;  ///< the node lists ZoomGenericSpeedSpace
+    onvif::Range speed_range;
   };
   /// How a point of the camera's picture is centred (PtzBackend::aimInView()), as the node's spaces allow.
   struct ViewPlan
@@ -206,12 +219,23 @@ private:
   void checkRanges(const onvif::Status& status, const std::string& space);
   void warnOnce(const std::string& key, const std::string& text);
   Capabilities cameraCapabilities() const;
+  /// The speed of position goals: DEVICE where the node lists the generic speed space (and the axis takes
+  /// AbsoluteMove), OWN beside one that does, NODE where none does.
+  MoveSpeedCapability moveSpeed() const;
   double angleOf(const GenericAxisMapping& mapping, double x) const;
   double genericOf(const GenericAxisMapping& mapping, double angle) const;
   /// The status' pan-tilt space: the one it names, else the configuration's default, else the generic space.
   std::string statusSpace(const onvif::Status& status) const;
   std::string zoomStatusSpace(const onvif::Status& status) const;
   double cameraTime() const;
+  /// Asks the Imaging service what the lens has (GetOptions, GetMoveOptions, GetImagingSettings, GetStatus) and
+  /// decides lens_; false only when the link went (a camera without it, or refusing it, has no lens).
+  bool bringUpLens(std::string& problem);
+  /// Reads the lens' settings and, at the next poll, the focus' status into the session's LensReport, every few polls
+  /// and after a command.
+  void pollLens();
+  /// Sends a lens request; false with the lens fault counted.
+  bool lensCall(const std::string& body);
 
   const OnvifSettings settings_;
   OnvifCounters counters_;
@@ -250,6 +274,10 @@ private:
   onvif::SoapMessage message_;
   bool unauthorized_ = false;  ///< the last call() was refused for its authentication (HTTP 401, ter:NotAuthorized)
   std::string velocity_body_;  ///< the ContinuousMove in force ("" when none)
+  onvif::ImagingOptions imaging_options_;  ///< the lens' ranges and modes (Imaging GetOptions, GetMoveOptions)
+  LensCapabilities lens_;                  ///< what the lens takes, as the bring-up found it
+  int lens_polls_ = 0;                     ///< polls until the lens is read again
+  bool lens_status_next_ = false;          ///< the next poll reads the focus' status (Imaging GetStatus)
   TimePoint velocity_sent_at_{};
 };
 

@@ -21,6 +21,7 @@ constexpr const char* SOAP = "http://www.w3.org/2003/05/soap-envelope";
 constexpr const char* DEVICE = "http://www.onvif.org/ver10/device/wsdl";
 constexpr const char* MEDIA = "http://www.onvif.org/ver10/media/wsdl";
 constexpr const char* PTZ = "http://www.onvif.org/ver20/ptz/wsdl";
+constexpr const char* IMAGING = "http://www.onvif.org/ver20/imaging/wsdl";  ///< focus and iris (timg)
 constexpr const char* SCHEMA = "http://www.onvif.org/ver10/schema";
 constexpr const char* WSSE = "http://docs.oasis-open.org/wss/2004/01/oasis-200401-wss-wssecurity-secext-1.0.xsd";
 constexpr const char* WSU = "http://docs.oasis-open.org/wss/2004/01/oasis-200401-wss-wssecurity-utility-1.0.xsd";
