@@ -276,12 +276,18 @@ void ClosedLoopBackend::steerLocked()
     {
       return;  // it gave up
     }
-    moving = moving || velocity[axis] != 0.0 || axes_[axis].busy();  // a timed move's axis may coast, stopped
     const double floor = config_.min_speed_share * capabilities_.axes[axis].max_speed;
-    // An axis at one speed keeps its speed through a timed move; far from its target it is given what an axis that
-    // obeys would be, which tells one taken for it wrongly.
-    changed = changed || std::abs(velocity[axis] - sent_velocity_[axis]) >
-                             RESEND_SHARE * std::max(std::abs(sent_velocity_[axis]), floor);
+    // A timed move's axis may coast, stopped; one that obeys is stopped where it is near enough, and steered on until
+    // it rests there (a report held up may have let it pass the target at speed).
+    moving = moving || velocity[axis] != 0.0 || axes_[axis].busy() ||
+             (!axes_[axis].fixedSpeed() && std::abs(sample.velocity[axis]) > floor);
+    // An axis at one speed keeps its speed through a timed move (a command then would only delay the stop); far from
+    // its target it is given what an axis that obeys would be, which tells one taken for it wrongly.
+    const auto sign = [](double speed) { return speed > 0.0 ? 1 : (speed < 0.0 ? -1 : 0); };
+    changed = changed || (axes_[axis].fixedSpeed() && axes_[axis].busy() ?
+                              sign(velocity[axis]) != sign(sent_velocity_[axis]) :
+                              std::abs(velocity[axis] - sent_velocity_[axis]) >
+                                  RESEND_SHARE * std::max(std::abs(sent_velocity_[axis]), floor));
   }
   if (!moving)
   {
