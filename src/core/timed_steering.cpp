@@ -134,19 +134,19 @@ void TimedSteering::learn(TimePoint at, double position)
   if (!evidence)
   {
     evidence_intervals_ = 0;
-    evidence_seconds_ = evidence_distance_ = 0.0;
+    evidence_seconds_ = evidence_speed_ = 0.0;
   }
   else
   {
     ++evidence_intervals_;
     evidence_seconds_ += seconds;
-    evidence_distance_ += std::abs(moved);
+    evidence_speed_ = std::max(evidence_speed_, std::abs(moved) / seconds);
   }
   if (evidence_intervals_ >= 2 && evidence_seconds_ >= EVIDENCE_SPAN)
   {
     if (speed_ == 0.0)
     {
-      speed_ = evidence_distance_ / evidence_seconds_;
+      speed_ = evidence_speed_;  // an interval it turned in (past the target) goes slower
     }
     else
     {
@@ -158,7 +158,7 @@ void TimedSteering::learn(TimePoint at, double position)
       rejudged_ = true;
     }
     evidence_intervals_ = 0;
-    evidence_seconds_ = evidence_distance_ = 0.0;
+    evidence_seconds_ = evidence_speed_ = 0.0;
   }
   have_reference_ = true;
   reference_at_ = at;

@@ -20,7 +20,7 @@ namespace ptz_action_server
  * COMMAND_LAG for the command to reach the device), and the speed it had when the goal began. An axis that went at
  * least 1.5 times that fast, in the commanded direction, over report intervals in a row spanning EVIDENCE_SPAN (a
  * report closer than MIN_INTERVAL to the last is measured with the next), moves at one speed whatever the magnitude:
- * its mean speed over them is its speed from then on. An axis that obeys but brakes at its own pace (a report held
+ * the fastest of them is its speed from then on. An axis that obeys but brakes at its own pace (a report held
  * up on a busy machine let it run past where it should have begun to) never goes faster than that bound, and a report
  * late or bunched with the next cannot make one short interval the evidence.
  *
@@ -142,7 +142,7 @@ private:
   double reference_position_ = 0.0;
   int evidence_intervals_ = 0;
   double evidence_seconds_ = 0.0;
-  double evidence_distance_ = 0.0;
+  double evidence_speed_ = 0.0;  ///< the fastest of them
   double speed_ = 0.0;   ///< > 0: its one speed
   double coast_ = -1.0;  ///< learnt coast (-1: not yet)
   bool rejudged_ = false;
