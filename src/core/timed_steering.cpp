@@ -11,7 +11,7 @@ namespace
 /// it was given. The bound is already the fastest it could go: any excess is evidence; this margin is for noise.
 constexpr double FAST_RATIO = 1.5;
 /// s a command may take to reach the device and show in its reports (a busy machine's, not an idle one's).
-constexpr double COMMAND_LAG = 0.1;
+constexpr double COMMAND_LAG = 0.05;
 /// s: a report closer than this to the one before (bunched: both held up, then read at once) is measured with the next.
 constexpr double MIN_INTERVAL = 0.025;
 /// s the evidence must span (two report intervals at least): a report's time errs by less than a poll, not by this.
