@@ -162,9 +162,11 @@ void ClosedLoopBackend::goToAtSpeed(const AxisValues& position, const AxisValues
   speed_cap_ = speed;
   steering_ = true;
   sent_velocity_ = AxisValues{};
+  const PtzSample now = inner().sample();
   for (Axis axis : ALL_AXES)
   {
-    axes_[axis].startGoal(position[axis], capabilities_.axes[axis].acceleration);
+    // Its speed now: it may be braking from a goal before, not at a speed this one gave.
+    axes_[axis].startGoal(position[axis], capabilities_.axes[axis].acceleration, now.velocity[axis], now.stamp);
   }
   if (any_direct)
   {
@@ -255,6 +257,13 @@ void ClosedLoopBackend::steerLocked()
       continue;
     }
     axes_[axis].observe(sample.stamp, sample.position[axis]);
+    if (axes_[axis].rejudged())
+    {
+      told_[axis] = false;  // told again if it is judged so again
+      warnings_.push_back(formatText("the %s moves at the speed it is given after all: position goals steer it on its "
+                                     "speeds again",
+                                     axisName(axis)));
+    }
     if (axes_[axis].fixedSpeed() && !told_[axis])
     {
       told_[axis] = true;
@@ -267,14 +276,18 @@ void ClosedLoopBackend::steerLocked()
     {
       return;  // it gave up
     }
-    moving = moving || velocity[axis] != 0.0 || axes_[axis].busy();  // a timed move's axis may coast, stopped
     const double floor = config_.min_speed_share * capabilities_.axes[axis].max_speed;
-    // An axis at one speed changes only when it starts, stops or turns: its magnitude means nothing to it.
-    changed = changed ||
-              (axes_[axis].fixedSpeed() ? std::copysign(1.0, velocity[axis]) * (velocity[axis] != 0.0) !=
-                                              std::copysign(1.0, sent_velocity_[axis]) * (sent_velocity_[axis] != 0.0) :
-                                          std::abs(velocity[axis] - sent_velocity_[axis]) >
-                                              RESEND_SHARE * std::max(std::abs(sent_velocity_[axis]), floor));
+    // A timed move's axis may coast, stopped; one that obeys is stopped where it is near enough, and steered on until
+    // it rests there (a report held up may have let it pass the target at speed).
+    moving = moving || velocity[axis] != 0.0 || axes_[axis].busy() ||
+             (!axes_[axis].fixedSpeed() && std::abs(sample.velocity[axis]) > floor);
+    // An axis at one speed keeps its speed through a timed move (a command then would only delay the stop); far from
+    // its target it is given what an axis that obeys would be, which tells one taken for it wrongly.
+    const auto sign = [](double speed) { return speed > 0.0 ? 1 : (speed < 0.0 ? -1 : 0); };
+    changed = changed || (axes_[axis].fixedSpeed() && axes_[axis].busy() ?
+                              sign(velocity[axis]) != sign(sent_velocity_[axis]) :
+                              std::abs(velocity[axis] - sent_velocity_[axis]) >
+                                  RESEND_SHARE * std::max(std::abs(sent_velocity_[axis]), floor));
   }
   if (!moving)
   {
@@ -296,7 +309,7 @@ double ClosedLoopBackend::nextSpeed(Axis axis, const PtzSample& sample)
   {
     return speedFor(axis, sample.position[axis]);
   }
-  const TimedSteering::Step step = steering.step(report_period_);
+  const TimedSteering::Step step = steering.step(report_period_, speedFor(axis, sample.position[axis]));
   if (step.gave_up)
   {
     giveUpLocked(axis);

@@ -40,17 +40,21 @@ TEST(TimedSteering, AnAxisAtOneSpeedIsLearntAndGetsATimedMoveNearItsTarget)
 {
   TimedSteering axis(0.005, 3.0);
   axis.startGoal(0.5);
-  // Commanded lower and lower, it goes on at 0.75 rad/s.
-  const double commanded[] = { 0.6, 0.3, 0.15 };
-  for (int report = 0; report < 3; ++report)
+  // Commanded lower and lower, it goes on at 0.75 rad/s: faster than one that obeys could, braking at 3 rad/s^2 from
+  // 0.3 rad/s a command's lag (0.1 s) after it was told 0.15, over two reports (0.2 s).
+  const double commanded[] = { 0.3, 0.15 };
+  for (int report = 0; report < 2; ++report)
   {
     axis.observe(at(0.1 * report), 0.075 * report);
     EXPECT_FALSE(axis.fixedSpeed()) << report;
     axis.commanded(commanded[report], at(0.1 * report));
   }
-  axis.observe(at(0.3), 0.225);
+  axis.observe(at(0.2), 0.15);
   ASSERT_TRUE(axis.fixedSpeed());
   EXPECT_NEAR(axis.speed(), 0.75, 1e-9);
+  axis.commanded(0.1, at(0.2));
+  axis.observe(at(0.3), 0.225);
+  EXPECT_FALSE(axis.rejudged());
   // 0.275 rad from the target, more than a report and a half at its speed plus its coast: it moves on, untimed.
   TimedSteering::Step step = axis.step(0.1);
   EXPECT_NEAR(step.speed, 0.75, 1e-9);
@@ -101,4 +105,57 @@ TEST(TimedSteering, ItGivesUpWhereAnotherMoveCouldOnlyTakeItFarther)
   // 0.01 rad away, its smallest move 0.06: another would take it farther.
   EXPECT_TRUE(step.gave_up);
   EXPECT_EQ(step.speed, 0.0);
+}
+
+TEST(TimedSteering, ReportsHeldUpAndReadAtOnceAreNotTakenForAnAxisAtOneSpeed)
+{
+  TimedSteering axis(0.005, 3.0);
+  axis.startGoal(1.0);
+  // At the 0.5 rad/s it is given; the reports measured at 0.10 and 0.15 s reach the steering at 0.190 and 0.192 s.
+  axis.observe(at(0.0), 0.0);
+  axis.commanded(0.5, at(0.0));
+  axis.observe(at(0.05), 0.025);
+  axis.observe(at(0.19), 0.05);
+  axis.observe(at(0.192), 0.075);  // 12.5 rad/s over 2 ms: measured with the next
+  axis.observe(at(0.2), 0.1);
+  for (int report = 5; report < 20; ++report)
+  {
+    axis.observe(at(0.05 * report), 0.025 * report);
+  }
+  EXPECT_FALSE(axis.fixedSpeed());
+}
+
+TEST(TimedSteering, AnAxisAtOneSpeedStaysSoWhateverItIsGivenAndOneTakenForItWronglyIsJudgedAgain)
+{
+  TimedSteering axis(0.005, 3.0);
+  axis.startGoal(3.0);
+  axis.observe(at(0.0), 0.0);
+  axis.commanded(0.3, at(0.0));
+  axis.observe(at(0.1), 0.075);
+  axis.commanded(0.15, at(0.1));
+  axis.observe(at(0.2), 0.15);
+  ASSERT_TRUE(axis.fixedSpeed());
+  // Far from its target it is given what an axis that obeys would be; at one speed, it goes on at 0.75 rad/s.
+  EXPECT_NEAR(axis.step(0.1, 1.5).speed, 1.5, 1e-9);
+  axis.commanded(1.5, at(0.2));
+  double position = 0.15;
+  for (int report = 3; report < 20; ++report)
+  {
+    position += 0.075;
+    axis.observe(at(0.1 * report), position);
+  }
+  EXPECT_TRUE(axis.fixedSpeed());
+  EXPECT_FALSE(axis.rejudged());
+  // Now it goes at what it is given, 1.5 rad/s, once it had the time to reach it: it obeys after all.
+  axis.startGoal(6.0);
+  axis.observe(at(2.0), position);
+  axis.commanded(1.5, at(2.0));
+  for (int report = 21; report < 40 && axis.fixedSpeed(); ++report)
+  {
+    position += 0.15;
+    axis.observe(at(0.1 * report), position);
+  }
+  EXPECT_FALSE(axis.fixedSpeed());
+  EXPECT_TRUE(axis.rejudged());
+  EXPECT_FALSE(axis.rejudged());  // told once
 }

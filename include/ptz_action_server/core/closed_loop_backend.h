@@ -41,9 +41,12 @@ struct ClosedLoopConfig
  *
  * Some devices move at one speed whatever the magnitude they are given (cheap ONVIF cameras): slowing down as the
  * target nears does nothing, and a stop at a report overshoots by what the axis covers between two reports, back and
- * forth. Each steered axis learns that from its reports (TimedSteering: twice as fast as commanded, twice in a row),
- * says so once (takeWarnings()), and is from then on steered by timed moves: stopped by a timer on the process's
- * TimerThread when its speed has covered the distance left, less what it goes on after a stop (learnt as it goes).
+ * forth. Each steered axis learns that from its reports (TimedSteering: faster than an axis that obeys could go, over
+ * 0.15 s of reports; never from one report held up or bunched with the next), says so once (takeWarnings()), and is
+ * from then on steered by timed moves: stopped by a timer on the process's TimerThread when its speed has covered the
+ * distance left, less what it goes on after a stop (learnt as it goes). Far from the target it is given the speed an
+ * axis that obeys would get: one taken for such an axis wrongly, that then goes at the speed it is given, is judged
+ * again (and told) and steered on its speeds.
  * One that cannot come within the goal's tolerance stops where it is, and the goal ends with a fault naming it
  * (lastFault()), never with an endless swing about the target.
  *
