@@ -152,8 +152,8 @@ TEST(SpeedShaping, StreamsASlowMoveOnADeviceThatTakesNoSpeed)
       30.0));
   // The device's own stamps: from 0.1 to 0.5 rad it went at the goal's speed on average, not its own 1.5 rad/s.
   const double seconds = secondsBetween(reached(samples, 0.1), reached(samples, 0.5));
+  // No upper bound: on a busy machine the stream's steps may come late, which is wall-clock speed, not behaviour.
   EXPECT_GT(seconds, 0.4 / SPEED * 0.75) << "the device outran the shaped speed";
-  EXPECT_LT(seconds, 0.4 / SPEED * 4.0);
   std::vector<DiagnosticValue> values;
   shaping.diagnostics(values);
   bool counted = false;

@@ -143,8 +143,8 @@ private:
   int evidence_intervals_ = 0;
   double evidence_seconds_ = 0.0;
   double evidence_speed_ = 0.0;  ///< the fastest of them
-  double speed_ = 0.0;   ///< > 0: its one speed
-  double coast_ = -1.0;  ///< learnt coast (-1: not yet)
+  double speed_ = 0.0;           ///< > 0: its one speed
+  double coast_ = -1.0;          ///< learnt coast (-1: not yet)
   bool rejudged_ = false;
   // The timed move under way.
   Move move_ = Move::NONE;
