@@ -16,8 +16,10 @@ namespace
 {
 using namespace ptz_action_server;
 
-constexpr int ROUNDS = 200;        ///< stick deflections timed
-constexpr int WARM_UP_TRIES = 50;  ///< Joy messages (0.1 s apart) the teleop may need before it drives the node
+constexpr int ROUNDS = 200;  ///< stick deflections timed
+/// Joy messages (0.1 s apart) the teleop may need before it drives the node: its action client connects and the
+/// capabilities arrive in a few seconds on a busy machine (5 s was not always enough).
+constexpr int WARM_UP_TRIES = 300;
 
 /// Waits up to \p timeout s for \p counter to pass \p before.
 bool countPassed(const std::atomic<std::uint64_t>& counter, std::uint64_t before, double timeout)
@@ -73,7 +75,8 @@ Row teleopFigure(SharedCounters* counters)
   publisher.publish(joy(config, false, 0.0f));
   if (!driving)
   {
-    return { "joystick -> first backend command", "the teleop never drove the node", "p99 <= 5 ms" };
+    return { "joystick -> first backend command",
+             formatText("the teleop never drove the node in %.0f s", WARM_UP_TRIES * 0.1), "p99 <= 5 ms" };
   }
   ros::WallDuration(0.5).sleep();
 
