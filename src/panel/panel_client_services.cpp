@@ -62,22 +62,18 @@ void PanelClient::listPresets(const std::string& ns, std::uint64_t generation)
 
 void PanelClient::refreshPresets()
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  const std::string ns = ns_;
-  const std::uint64_t generation = generation_;
-  if (!ns.empty())
-  {
-    post([this, ns, generation] { listPresets(ns, generation); });
-  }
+  postForCamera([this](const std::string& ns, std::uint64_t generation) {
+    if (!ns.empty())
+    {
+      listPresets(ns, generation);
+    }
+  });
 }
 
 template <class Service>
 void PanelClient::changePreset(const std::string& service_name, const std::string& name)
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  const std::string ns = ns_;
-  const std::uint64_t generation = generation_;
-  post([this, ns, generation, service_name, name] {
+  postForCamera([this, service_name, name](const std::string& ns, std::uint64_t generation) {
     Service call;
     call.request.name = name;
     const std::string service = inNamespace(ns, "move_ptz/" + service_name);
@@ -98,10 +94,7 @@ void PanelClient::deletePreset(const std::string& name)
 
 void PanelClient::setLookAt(bool enabled)
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  const std::string ns = ns_;
-  const std::uint64_t generation = generation_;
-  post([this, ns, generation, enabled] {
+  postForCamera([this, enabled](const std::string& ns, std::uint64_t generation) {
     std_srvs::SetBool request;
     request.request.data = enabled;
     const std::string service = inNamespace(ns, LOOK_SERVICE);
@@ -116,6 +109,12 @@ void PanelClient::setLookAt(bool enabled)
                                  request.response.message);
     }
   });
+}
+
+void PanelClient::postForCamera(std::function<void(const std::string& ns, std::uint64_t generation)> job)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  post([job = std::move(job), ns = ns_, generation = generation_] { job(ns, generation); });
 }
 
 void PanelClient::post(std::function<void()> job)

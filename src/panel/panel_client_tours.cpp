@@ -139,21 +139,17 @@ void PanelClient::listTours(const std::string& ns, std::uint64_t generation)
 
 void PanelClient::refreshTours()
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  const std::string ns = ns_;
-  const std::uint64_t generation = generation_;
-  if (!ns.empty())
-  {
-    post([this, ns, generation] { listTours(ns, generation); });
-  }
+  postForCamera([this](const std::string& ns, std::uint64_t generation) {
+    if (!ns.empty())
+    {
+      listTours(ns, generation);
+    }
+  });
 }
 
 void PanelClient::deleteTour(const std::string& name)
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  const std::string ns = ns_;
-  const std::uint64_t generation = generation_;
-  post([this, ns, generation, name] {
+  postForCamera([this, name](const std::string& ns, std::uint64_t generation) {
     DeleteTour call;
     call.request.name = name;
     const std::string service = inNamespace(ns, "move_ptz/delete_tour");

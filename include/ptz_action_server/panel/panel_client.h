@@ -168,6 +168,8 @@ private:
   void onTourResult(std::uint64_t generation, const PtzTourActionResult::ConstPtr& result);
   /// Queues a job for the worker thread.
   void post(std::function<void()> job);
+  /// post() of a job for the camera shown now: it gets that camera's namespace and generation, read under mutex_.
+  void postForCamera(std::function<void(const std::string& ns, std::uint64_t generation)> job);
   void workerLoop();
   void discoveryLoop();
   /// The worker's preset list call for the camera in `ns`.
