@@ -5,14 +5,18 @@
  */
 #pragma once
 
-#include <cstddef>
+#include <cstdint>
+#include <list>
 #include <string>
+#include <utility>
 
 #include <actionlib/server/action_server.h>
 #include <actionlib_msgs/GoalStatusArray.h>
 #include <ros/ros.h>
 
+#include "ptz_action_server/core/goal/ended_goal_list.h"
 #include "ptz_action_server/ros/listened_publisher.h"
+#include "ptz_action_server/ros/status_list_message.h"
 
 namespace ptz_action_server
 {
@@ -41,9 +45,11 @@ public:
  * at once. Between holdStatus() and releaseStatus() the transitions' lists are held back to one, published at the
  * release: a goal that preempts another makes one list, not one for each goal.
  *
- * The list is built as actionlib's ActionServer::publishStatus() builds it (finished goals leave it
- * status_list_timeout after their handles go), on a publisher of the same topic. Thread-safe as actionlib is: under
- * the server's lock.
+ * The list says what actionlib's ActionServer::publishStatus() would (finished goals leave it status_list_timeout
+ * after their handles go), but an ended goal whose handles are gone leaves actionlib's list for an EndedGoalList:
+ * actionlib scans its list for every goal that arrives, and the list went out copied entry by entry, each a few
+ * hundred entries long under a storm of goals. A goal sent again with the id of such a goal is rejected (actionlib
+ * would ignore it while the id is in its list). Thread-safe as actionlib is: under the server's lock.
  */
 template <class Action>
 class NodeActionServer : public actionlib::ActionServer<Action>, public NodeActionServerBase
@@ -54,7 +60,10 @@ public:
 
   /// Not started (actionlib's auto_start false): start() it.
   NodeActionServer(const ros::NodeHandle& node_handle, const std::string& name, Callback goal, Callback cancel)
-    : actionlib::ActionServer<Action>(node_handle, name, goal, cancel, false), handle_(node_handle, name)
+    : actionlib::ActionServer<Action>(
+          node_handle, name, [this](GoalHandle handle) { onGoal(handle); }, cancel, false)
+    , handle_(node_handle, name)
+    , goal_(std::move(goal))
   {
   }
 
@@ -90,6 +99,28 @@ public:
   }
 
 private:
+  using StatusList = StatusListMessage<std::list<actionlib::StatusTracker<Action>>>;
+
+  void onGoal(GoalHandle handle)
+  {
+    const std::string id = handle.getGoalID().id;
+    {
+      boost::recursive_mutex::scoped_lock lock(this->lock_);
+      if (ended_.contains(id))
+      {
+        // Its entry gives way to this goal's, so the list names the id once.
+        ended_.remove(id);
+        const std::string text = "the goal id " + id +
+                                 " is that of a goal that ended less than status_list_timeout ago: a new goal needs "
+                                 "an id of its own";
+        ROS_WARN_THROTTLE(1.0, "%s: goal rejected: %s", handle_.getNamespace().c_str(), text.c_str());
+        handle.setRejected(typename actionlib::ActionServer<Action>::Result(), text);
+        return;
+      }
+    }
+    goal_(handle);
+  }
+
   /// actionlib calls this (under its lock) for every transition and at start().
   void publishStatus() override
   {
@@ -105,38 +136,50 @@ private:
       advertised_ = true;
       status_.advertise<actionlib_msgs::GoalStatusArray>(handle_, "status", 1, true, [this] { publishStatus(); });
     }
-    status_array_.header.stamp = ros::Time::now();
-    // Entries are assigned over the last list's, not cleared and copied anew: their strings keep their buffers (a
-    // storm's list of some hundred goals was a few hundred allocations and frees per list).
-    auto& list = status_array_.status_list;
-    std::size_t count = 0;
-    for (auto it = this->status_list_.begin(); it != this->status_list_.end(); ++count)
+    const ros::Time now = ros::Time::now();
+    ended_.expire(now.toSec());
+    for (auto it = this->status_list_.begin(); it != this->status_list_.end();)
     {
-      if (count < list.size())
-      {
-        list[count] = it->status_;
-      }
-      else
-      {
-        list.push_back(it->status_);
-      }
-      if (it->handle_destruction_time_ != ros::Time() &&
-          it->handle_destruction_time_ + this->status_list_timeout_ < status_array_.header.stamp)
-      {
-        it = this->status_list_.erase(it);
-      }
-      else
+      const ros::Time gone = it->handle_destruction_time_;  // zero while the goal has a handle
+      if (gone == ros::Time())
       {
         ++it;
+        continue;
       }
+      const ros::Time expires = gone + this->status_list_timeout_;
+      if (expires >= now && isTerminal(it->status_.status))
+      {
+        entry_.resize(ros::serialization::serializationLength(it->status_));
+        ros::serialization::OStream stream(reinterpret_cast<uint8_t*>(&entry_[0]), entry_.size());
+        ros::serialization::serialize(stream, it->status_);
+        ended_.add(it->status_.goal_id.id, entry_, expires.toSec());
+      }
+      if (expires >= now && !isTerminal(it->status_.status))
+      {
+        ++it;  // left without a handle before it ended: stays in actionlib's list, as actionlib keeps it
+        continue;
+      }
+      it = this->status_list_.erase(it);
     }
-    list.resize(count);
-    status_.publishAlways(status_array_);
+    StatusList list;
+    list.header.stamp = now;
+    list.ended = &ended_;
+    list.live = &this->status_list_;
+    status_.publishAlways(list);
+  }
+
+  static bool isTerminal(uint8_t status)
+  {
+    using actionlib_msgs::GoalStatus;
+    return status == GoalStatus::PREEMPTED || status == GoalStatus::SUCCEEDED || status == GoalStatus::ABORTED ||
+           status == GoalStatus::REJECTED || status == GoalStatus::RECALLED || status == GoalStatus::LOST;
   }
 
   ros::NodeHandle handle_;  ///< the action's namespace
+  Callback goal_;
   ListenedPublisher status_;
-  actionlib_msgs::GoalStatusArray status_array_;  ///< reused (under the lock)
+  EndedGoalList ended_;  ///< ended goals whose handles are gone (under the lock)
+  std::string entry_;    ///< one entry being serialized, reused (under the lock)
   bool advertised_ = false;
   int holds_ = 0;
   bool held_ = false;  ///< a transition wanted the list during a hold
