@@ -84,6 +84,7 @@ int runNode(SharedCounters* counters)
   ros::init(ros::M_string{ { "__ns", NODE_NAMESPACE } }, NODE_NAME);
   const ros::NodeHandle node_handle;  // held: roscpp shuts down when the last node handle goes
   const ros::NodeHandle private_handle("~");
+  MainSpinner spinner;  // as the ptz_action_server executable spins
   PtzNode node;
   node.setTickCosts(&counters->tick_costs);
   try
@@ -97,7 +98,7 @@ int runNode(SharedCounters* counters)
     ROS_FATAL("%s", error.what());
     return 1;
   }
-  spinUntilShutdown();  // as the ptz_action_server executable spins
+  spinner.spinUntilShutdown();
   return 0;
 }
 

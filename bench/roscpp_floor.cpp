@@ -46,7 +46,7 @@ int main(int argc, char** argv)
       }
     });
   }
-  while (ros::ok())  // as the node's spinUntilShutdown(): no wake-up until a callback comes
+  while (ros::ok())  // as the node's MainSpinner: no wake-up until a callback comes
   {
     ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(5.0));
   }

@@ -13,6 +13,7 @@ int main(int argc, char** argv)
   // Held for the whole run: when the last node handle goes, roscpp shuts down (and would drop the fatal message).
   const ros::NodeHandle node_handle;
   const ros::NodeHandle private_handle("~");
+  MainSpinner spinner;  // before the node: its timers run on this thread
   PtzNode node;
   try
   {
@@ -28,6 +29,6 @@ int main(int argc, char** argv)
     ROS_FATAL("backend error: %s", error.what());
     return 2;
   }
-  spinUntilShutdown();
+  spinner.spinUntilShutdown();
   return 0;
 }

@@ -1,11 +1,16 @@
 #include "ptz_action_server/ros/ptz_node.h"
 
+#include <algorithm>
+#include <chrono>
 #include <string>
 
+#include <boost/make_shared.hpp>
 #include <ros/callback_queue.h>
 
 #include "ptz_action_server/core/closed_loop_backend.h"
 #include "ptz_action_server/core/speed_shaping_backend.h"
+#include "ptz_action_server/ros/function_callback.h"
+#include "ptz_action_server/ros/queue_timer.h"
 #include "ptz_action_server/ros/sim_camera_publisher.h"
 
 namespace ptz_action_server
@@ -71,16 +76,35 @@ void PtzNode::start(const ros::NodeHandle& node_handle, const ros::NodeHandle& p
   }
 }
 
-void spinUntilShutdown()
+MainSpinner::MainSpinner()
+  : queue_(ros::getGlobalCallbackQueue()), timers_(std::make_shared<TimerThread>([queue = queue_] {
+    // Another thread armed an earlier timer: an empty call ends the wait, and the loop looks at the timers again.
+    queue->addCallback(boost::make_shared<FunctionCallback>([] {}));
+  }))
 {
-  // ros::spin() waits at most 0.1 s at a time to look at ros::ok(). The wait here is long: ros::shutdown() (from
-  // SIGINT through roscpp's poll thread, or from any thread) disables the queue, which wakes it at once; the timeout
-  // is only a backstop.
-  constexpr double WAIT = 5.0;  // s
-  ros::CallbackQueue& queue = *ros::getGlobalCallbackQueue();
-  while (ros::ok() && queue.isEnabled())  // a disabled queue returns at once: shutdown is under way
+  QueueTimer::scheduleOn(queue_, timers_);
+}
+
+MainSpinner::~MainSpinner()
+{
+  QueueTimer::scheduleOn(queue_, nullptr);
+}
+
+void MainSpinner::spinUntilShutdown()
+{
+  // ros::spin() waits at most 0.1 s at a time to look at ros::ok(). The wait here lasts until the next timer, or
+  // long: ros::shutdown() (from SIGINT through roscpp's poll thread, or from any thread) disables the queue, which
+  // wakes it at once; the timeout is only a backstop.
+  constexpr double WAIT = 5.0;              // s
+  while (ros::ok() && queue_->isEnabled())  // a disabled queue returns at once: shutdown is under way
   {
-    queue.callAvailable(ros::WallDuration(WAIT));
+    const TimerThread::Clock::time_point next = timers_->runDue();
+    double wait = WAIT;
+    if (next != TimerThread::Clock::time_point::max())
+    {
+      wait = std::clamp(std::chrono::duration<double>(next - TimerThread::Clock::now()).count(), 0.0, WAIT);
+    }
+    queue_->callAvailable(ros::WallDuration(wait));
   }
 }
 

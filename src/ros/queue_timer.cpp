@@ -1,5 +1,6 @@
 #include "ptz_action_server/ros/queue_timer.h"
 
+#include <map>
 #include <utility>
 
 #include <boost/make_shared.hpp>
@@ -12,7 +13,48 @@ TimerThread::Clock::duration toDuration(double seconds)
 {
   return std::chrono::duration_cast<TimerThread::Clock::duration>(std::chrono::duration<double>(seconds));
 }
+
+/// The queues whose spinning thread runs their timers (QueueTimer::scheduleOn()).
+struct QueueSchedules
+{
+  std::mutex mutex;
+  std::map<ros::CallbackQueueInterface*, std::shared_ptr<TimerThread>> schedules;
+};
+
+QueueSchedules& queueSchedules()
+{
+  static QueueSchedules schedules;
+  return schedules;
+}
 }  // namespace
+
+void QueueTimer::scheduleOn(ros::CallbackQueueInterface* queue, std::shared_ptr<TimerThread> schedule)
+{
+  QueueSchedules& schedules = queueSchedules();
+  std::lock_guard<std::mutex> lock(schedules.mutex);
+  if (schedule)
+  {
+    schedules.schedules[queue] = std::move(schedule);
+  }
+  else
+  {
+    schedules.schedules.erase(queue);
+  }
+}
+
+std::shared_ptr<TimerThread> QueueTimer::scheduleFor(ros::CallbackQueueInterface* queue)
+{
+  {
+    QueueSchedules& schedules = queueSchedules();
+    std::lock_guard<std::mutex> lock(schedules.mutex);
+    const auto found = schedules.schedules.find(queue);
+    if (found != schedules.schedules.end())
+    {
+      return found->second;
+    }
+  }
+  return TimerThread::shared();
+}
 
 class QueueTimer::QueuedCall : public ros::CallbackInterface
 {
@@ -33,7 +75,7 @@ private:
 QueueTimer::QueueTimer(ros::CallbackQueueInterface* queue, std::function<void()> callback)
   : queue_(queue)
   , callback_(std::move(callback))
-  , timer_(TimerThread::shared())
+  , timer_(scheduleFor(queue))
   , queued_call_(boost::make_shared<QueuedCall>(*this))
   , id_(timer_->at(TimePoint::max(), [this] { fire(); }))
 {

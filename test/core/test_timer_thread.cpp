@@ -221,6 +221,76 @@ TEST(TimerThread, ATickThatFellBehindSkipsToItsNextDueTimeInsteadOfBunching)
   EXPECT_GT(runs[3], released + 2 * period);
 }
 
+TEST(TimerThread, AScheduleItsOwnerRunsRunsOnlyWhatIsDueOnTheOwnersThread)
+{
+  std::atomic<int> wakes{ 0 };
+  TimerThread schedule([&] { ++wakes; });
+  std::vector<std::thread::id> ran_on;
+  EXPECT_EQ(schedule.runDue(), Clock::time_point::max());  // empty; this thread is now the one that runs it
+  const Clock::time_point later = Clock::now() + std::chrono::hours(1);
+  schedule.at(later, [&] { ran_on.push_back(std::this_thread::get_id()); });
+  EXPECT_EQ(schedule.runDue(), later);  // nothing due: the next deadline
+  EXPECT_TRUE(ran_on.empty());
+
+  const TimerThread::Id soon = schedule.at(Clock::now(), [&] { ran_on.push_back(std::this_thread::get_id()); });
+  EXPECT_EQ(wakes, 0);  // armed from the owner's own thread: it looks at the schedule again by itself
+  EXPECT_EQ(schedule.runDue(), later);
+  ASSERT_EQ(ran_on.size(), 1u);
+  EXPECT_EQ(ran_on[0], std::this_thread::get_id());
+  EXPECT_EQ(schedule.runDue(), later);  // a one-shot runs once per arming
+  EXPECT_EQ(ran_on.size(), 1u);
+
+  // Armed earlier than the earliest from another thread: the owner is woken, once.
+  std::thread([&] { schedule.move(soon, Clock::now()); }).join();
+  EXPECT_EQ(wakes, 1);
+  std::thread([&] { schedule.move(soon, Clock::now() + std::chrono::hours(2)); }).join();
+  EXPECT_EQ(wakes, 1);  // not the earliest: no wake
+  EXPECT_EQ(schedule.runDue(), later);
+  EXPECT_EQ(ran_on.size(), 1u);  // moved away before it ran
+}
+
+TEST(TimerThread, AScheduleItsOwnerRunsKeepsATicksPhaseAndCancelWaitsForItsRun)
+{
+  TimerThread schedule([] {});
+  std::atomic<int> ticks{ 0 };
+  Gate gate;
+  const Clock::time_point first = Clock::now();
+  const TimerThread::Id id = schedule.every(milliseconds(100), first, [&] {
+    if (++ticks == 2)
+    {
+      gate.pass();
+    }
+  });
+  EXPECT_EQ(schedule.runDue(), first + milliseconds(100));
+  EXPECT_EQ(ticks, 1);
+
+  // The owner's thread runs the second tick and blocks in it; a cancel from elsewhere waits for that run.
+  std::thread owner([&] {
+    while (ticks < 2)
+    {
+      const Clock::time_point next = schedule.runDue();
+      if (ticks < 2)
+      {
+        std::this_thread::sleep_until(next);
+      }
+    }
+  });
+  ASSERT_TRUE(waitUntil([&] { return gate.entered(); }, 30.0));
+  std::atomic<bool> cancel_returned{ false };
+  std::thread canceller([&] {
+    schedule.cancel(id);
+    cancel_returned = true;
+  });
+  EXPECT_FALSE(waitUntil([&] { return cancel_returned.load(); }, 0.2));
+  gate.open();
+  canceller.join();
+  owner.join();
+  EXPECT_TRUE(cancel_returned);
+  EXPECT_EQ(schedule.size(), 0u);
+  EXPECT_EQ(schedule.runDue(), Clock::time_point::max());
+  EXPECT_EQ(ticks, 2);
+}
+
 TEST(TimerThread, TheSharedThreadIsOneWhileHeldAndGoesWithTheLastHolder)
 {
   std::shared_ptr<TimerThread> first = TimerThread::shared();

@@ -6,6 +6,10 @@
  * A process with 64 cameras in one nodelet manager would otherwise run 64 timers through roscpp's timer manager
  * (whose cost grows with the timers of the process) and wake 64 spinner threads ten times a second. Here one thread
  * sleeps until the earliest deadline of all and runs what is due in place.
+ *
+ * The same schedule may instead be run by a thread its owner already has (TimerThread(wake) and runDue()): the
+ * ptz_action_server executable's main thread runs the timers of its own queue between callbacks, so a timer that
+ * puts a call in that queue (the status release after every goal of a storm) wakes one thread, not two.
  */
 #pragma once
 
@@ -31,6 +35,12 @@ public:
   static std::shared_ptr<TimerThread> shared();
 
   TimerThread();
+  /**
+   * \brief A schedule without a thread of its own: the owner's thread calls runDue() and sleeps until the time it
+   * returns. \p wake is called (without the schedule's lock) when another thread arms a deadline earlier than the
+   * earliest one, so that the owner's thread stops sleeping and calls runDue() again.
+   */
+  explicit TimerThread(std::function<void()> wake);
   /// Stops and joins the thread. Work still scheduled is dropped without running.
   ~TimerThread();
   TimerThread(const TimerThread&) = delete;
@@ -53,6 +63,10 @@ public:
   /// How many works are scheduled (for tests and diagnostics).
   std::size_t size() const;
 
+  /// A schedule without a thread (TimerThread(wake)): runs the works that are due, from the owner's thread, and
+  /// returns when the next one is due (Clock::time_point::max() if none is armed).
+  Clock::time_point runDue();
+
 private:
   struct Entry
   {
@@ -63,8 +77,12 @@ private:
   };
 
   void run();
-  /// Puts \p entry in the schedule at its due time. Call with mutex_ held.
-  void arm(Id id, Entry& entry);
+  /// Runs the earliest work, due by now. Call with \p lock (of mutex_) held; it is released while the work runs.
+  void runFirst(std::unique_lock<std::mutex>& lock);
+  /// Puts \p entry in the schedule at its due time; returns true if it is now the earliest. Call with mutex_ held.
+  bool arm(Id id, Entry& entry);
+  /// True if wake_ must be called (once mutex_ is released) after an arm() that returned \p earliest. With mutex_.
+  bool mustWake(bool earliest) const;
   /// Takes \p entry out of the schedule. Call with mutex_ held.
   void disarm(Entry& entry);
 
@@ -76,7 +94,9 @@ private:
   Id next_id_ = 1;
   Id running_ = 0;  ///< the work running now, 0 if none
   bool stopping_ = false;
-  std::thread thread_;  ///< last: starts once everything above exists
+  const std::function<void()> wake_;  ///< set: no thread, the owner runs runDue()
+  std::thread::id runner_;            ///< the thread that runs the works (with mutex_)
+  std::thread thread_;                ///< last: starts once everything above exists (none with wake_)
 };
 
 }  // namespace ptz_action_server

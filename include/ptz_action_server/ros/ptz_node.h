@@ -7,8 +7,10 @@
 #include <functional>
 #include <memory>
 
+#include <ros/callback_queue.h>
 #include <ros/node_handle.h>
 
+#include "ptz_action_server/core/timer_thread.h"
 #include "ptz_action_server/ros/backend_loader.h"
 #include "ptz_action_server/ros/ptz_action_server.h"
 #include "ptz_action_server/ros/tick_costs.h"
@@ -54,7 +56,25 @@ private:
 /**
  * \brief ros::spin() on the global queue, for a node's main thread, without its ten wake-ups a second: waits for a
  * callback until ros::shutdown() (which disables the queue, and so wakes the wait), running each as it comes.
+ *
+ * Made before the node starts, it also runs the timers of that queue (QueueTimer) between callbacks, on the same
+ * thread: a timer's call (the status release after every goal) then wakes the main thread only, where the process's
+ * TimerThread would wake and hand it over.
  */
-void spinUntilShutdown();
+class MainSpinner
+{
+public:
+  MainSpinner();
+  ~MainSpinner();
+  MainSpinner(const MainSpinner&) = delete;
+  MainSpinner& operator=(const MainSpinner&) = delete;
+
+  /// Runs callbacks and due timers until ros::shutdown().
+  void spinUntilShutdown();
+
+private:
+  ros::CallbackQueue* const queue_;
+  const std::shared_ptr<TimerThread> timers_;
+};
 
 }  // namespace ptz_action_server

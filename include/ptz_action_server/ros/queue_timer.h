@@ -25,12 +25,19 @@ namespace ptz_action_server
  * every goal of a storm). As with roscpp's timers, at most one call waits in the queue: a periodic timer whose queue
  * falls behind skips runs, it does not bunch them. start*() and stop() from any thread; once stop() returns the
  * callback does not start any more. The destructor also waits for a call running on another thread.
+ *
+ * A queue whose spinning thread runs its timers itself (scheduleOn(), the executable's MainSpinner) gets its timers'
+ * calls from that thread instead: no other thread wakes for them.
  */
 class QueueTimer
 {
 public:
   /// \p callback runs on \p queue (the node handle's), which must outlive the timer.
   QueueTimer(ros::CallbackQueueInterface* queue, std::function<void()> callback);
+
+  /// Timers made from now on for \p queue are run by \p schedule (a TimerThread without a thread of its own, run by
+  /// the thread that spins the queue) instead of the process's TimerThread; nullptr ends it for timers made after.
+  static void scheduleOn(ros::CallbackQueueInterface* queue, std::shared_ptr<TimerThread> schedule);
   ~QueueTimer();
   QueueTimer(const QueueTimer&) = delete;
   QueueTimer& operator=(const QueueTimer&) = delete;
@@ -45,6 +52,9 @@ public:
 
 private:
   class QueuedCall;
+
+  /// The schedule of \p queue's timers: the one scheduleOn() gave it, else the process's TimerThread.
+  static std::shared_ptr<TimerThread> scheduleFor(ros::CallbackQueueInterface* queue);
 
   void start(TimePoint first, TimerThread::Clock::duration period);
   /// On the timer thread: puts the call in the queue (unless one waits there) and arms the next period.
