@@ -140,6 +140,15 @@ private:
     ended_.expire(now.toSec());
     for (auto it = this->status_list_.begin(); it != this->status_list_.end();)
     {
+      if (it->status_.status == actionlib_msgs::GoalStatus::RECALLING && it->handle_tracker_.expired() &&
+          ended_.contains(it->status_.goal_id.id))
+      {
+        // A cancel of a goal that has ended (a client cancelling as its goal ends): not finding the goal in its
+        // list, actionlib kept the cancel for a goal yet to come, with no end. The goal is here; the cancel changes
+        // nothing, as actionlib's own cancel of an ended goal in its list does.
+        it = this->status_list_.erase(it);
+        continue;
+      }
       const ros::Time gone = it->handle_destruction_time_;  // zero while the goal has a handle
       if (gone == ros::Time())
       {
