@@ -18,6 +18,7 @@
 
 #include "ptz_action_server/PtzActionGoal.h"
 #include "ptz_action_server/PtzActionResult.h"
+#include "../core/wait_until.h"
 
 namespace
 {
@@ -68,19 +69,12 @@ protected:
   template <class Predicate>
   bool waitFor(const Predicate& predicate)
   {
-    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(WAIT);
-    while (ros::WallTime::now() < deadline)
-    {
-      {
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (predicate())
-        {
-          return true;
-        }
-      }
-      ros::WallDuration(0.01).sleep();
-    }
-    return false;
+    return ptz_action_server::waitUntil(
+        [&] {
+          std::lock_guard<std::mutex> lock(mutex_);
+          return predicate();
+        },
+        WAIT);
   }
 
   /// A relative goal of no length (it succeeds at once) with the id \p id.
