@@ -49,7 +49,8 @@ public:
  * after their handles go), but an ended goal whose handles are gone leaves actionlib's list for an EndedGoalList:
  * actionlib scans its list for every goal that arrives, and the list went out copied entry by entry, each a few
  * hundred entries long under a storm of goals. A goal sent again with the id of such a goal is rejected (actionlib
- * would ignore it while the id is in its list). Thread-safe as actionlib is: under the server's lock.
+ * would ignore it while the id is in its list); a cancel of it changes nothing, as in actionlib. Thread-safe as
+ * actionlib is: under the server's lock.
  */
 template <class Action>
 class NodeActionServer : public actionlib::ActionServer<Action>, public NodeActionServerBase
@@ -156,17 +157,17 @@ private:
         continue;
       }
       const ros::Time expires = gone + this->status_list_timeout_;
-      if (expires >= now && isTerminal(it->status_.status))
+      if (expires >= now)
       {
+        if (!isTerminal(it->status_.status))
+        {
+          ++it;  // left without a handle before it ended: stays in actionlib's list, as actionlib keeps it
+          continue;
+        }
         entry_.resize(ros::serialization::serializationLength(it->status_));
         ros::serialization::OStream stream(reinterpret_cast<uint8_t*>(&entry_[0]), entry_.size());
         ros::serialization::serialize(stream, it->status_);
         ended_.add(it->status_.goal_id.id, entry_, expires.toSec());
-      }
-      if (expires >= now && !isTerminal(it->status_.status))
-      {
-        ++it;  // left without a handle before it ended: stays in actionlib's list, as actionlib keeps it
-        continue;
       }
       it = this->status_list_.erase(it);
     }

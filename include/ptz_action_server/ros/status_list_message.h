@@ -37,32 +37,30 @@ namespace ros
 {
 namespace message_traits
 {
-template <class Trackers>
-struct MD5Sum<ptz_action_server::StatusListMessage<Trackers>> : MD5Sum<actionlib_msgs::GoalStatusArray>
+/// The trait \p Trait of GoalStatusArray, also answering for a \p Message (the status list on the wire).
+template <template <class> class Trait, class Message>
+struct AsGoalStatusArray : Trait<actionlib_msgs::GoalStatusArray>
 {
-  static const char* value(const ptz_action_server::StatusListMessage<Trackers>&)
+  using Trait<actionlib_msgs::GoalStatusArray>::value;
+  static const char* value(const Message&)
   {
-    return MD5Sum<actionlib_msgs::GoalStatusArray>::value();
+    return Trait<actionlib_msgs::GoalStatusArray>::value();
   }
-  using MD5Sum<actionlib_msgs::GoalStatusArray>::value;
 };
 template <class Trackers>
-struct DataType<ptz_action_server::StatusListMessage<Trackers>> : DataType<actionlib_msgs::GoalStatusArray>
+struct MD5Sum<ptz_action_server::StatusListMessage<Trackers>>
+  : AsGoalStatusArray<MD5Sum, ptz_action_server::StatusListMessage<Trackers>>
 {
-  static const char* value(const ptz_action_server::StatusListMessage<Trackers>&)
-  {
-    return DataType<actionlib_msgs::GoalStatusArray>::value();
-  }
-  using DataType<actionlib_msgs::GoalStatusArray>::value;
 };
 template <class Trackers>
-struct Definition<ptz_action_server::StatusListMessage<Trackers>> : Definition<actionlib_msgs::GoalStatusArray>
+struct DataType<ptz_action_server::StatusListMessage<Trackers>>
+  : AsGoalStatusArray<DataType, ptz_action_server::StatusListMessage<Trackers>>
 {
-  static const char* value(const ptz_action_server::StatusListMessage<Trackers>&)
-  {
-    return Definition<actionlib_msgs::GoalStatusArray>::value();
-  }
-  using Definition<actionlib_msgs::GoalStatusArray>::value;
+};
+template <class Trackers>
+struct Definition<ptz_action_server::StatusListMessage<Trackers>>
+  : AsGoalStatusArray<Definition, ptz_action_server::StatusListMessage<Trackers>>
+{
 };
 template <class Trackers>
 struct HasHeader<ptz_action_server::StatusListMessage<Trackers>> : TrueType
