@@ -86,6 +86,7 @@ void ViscaProtocol::onConnected()
   round_.broken();
   sequence_ = 0;
   wire_sequences_.clear();
+  overdue_sequences_.clear();
   inquiry_timeouts_ = 0;  // inquiry_answers_ stays: a camera that once answered an inquiry answers them
   probe_answered_ = false;
   reset_timeouts_ = 0;
@@ -151,6 +152,7 @@ void ViscaProtocol::write(const std::string& bytes)
     sequence_ = cycle > 0 && sequence_ >= cycle ? 1 : sequence_ + 1;
   }
   wire_sequences_.push_back(sequence_);  // every request of this protocol expects a reply
+  overdue_sequences_.clear();            // the channel awaits the overdue ones no more
   if (settings_.framing == ViscaFraming::RAW)
   {
     session_.write(bytes);
@@ -273,6 +275,7 @@ void ViscaProtocol::onReplyTimeout(const TransactionChannel::Request& lost)
 {
   // The channel dropped every request on the wire; the oldest is the one that was not answered.
   const std::uint32_t lost_sequence = wire_sequences_.empty() ? 0 : wire_sequences_.front();
+  overdue_sequences_ = std::move(wire_sequences_);
   wire_sequences_.clear();
   splitter_.reset();
   round_.broken();

@@ -68,13 +68,23 @@ void ViscaProtocol::updateSplitterCounters()
 std::optional<TransactionChannel::Request>
 ViscaProtocol::completeRequest(const std::function<bool(const TransactionChannel::Request&)>& answers)
 {
+  // Nothing on the wire since a timeout: an answer now is an overdue request's, taken late. complete() may send the
+  // next request at once (its sequence number joins wire_sequences_), so the answered one's is read before.
+  const bool late = wire_sequences_.empty();
+  const std::deque<std::uint32_t>& awaited = late ? overdue_sequences_ : wire_sequences_;
+  const std::optional<std::uint32_t> oldest =
+      awaited.empty() ? std::nullopt : std::optional<std::uint32_t>(awaited.front());
   std::optional<TransactionChannel::Request> answered = channel_.complete(answers);
-  if (!answered || wire_sequences_.empty())
+  if (!answered || !oldest)
   {
     return answered;
   }
-  const std::uint32_t sequence = wire_sequences_.front();
-  wire_sequences_.pop_front();
+  std::deque<std::uint32_t>& sequences = late ? overdue_sequences_ : wire_sequences_;
+  if (!sequences.empty() && sequences.front() == *oldest)
+  {
+    sequences.pop_front();  // (the next request's write cleared the overdue ones)
+  }
+  const std::uint32_t sequence = *oldest;
   if (settings_.framing == ViscaFraming::SONY_IP && answered->tag != SEQUENCE_RESET)
   {
     // Sony's cameras answer with the sequence number of the request; some others do not (NDI PTZ1: always 1).

@@ -228,6 +228,9 @@ private:
   std::uint32_t sequence_ = 0;
   /// VISCA over IP: the sequence numbers of the requests on the wire, oldest first (as the channel's).
   std::deque<std::uint32_t> wire_sequences_;
+  /// VISCA over IP: those of the requests that were on the wire at the last reply timeout, oldest first, while the
+  /// channel still awaits their late replies (until the next request goes out).
+  std::deque<std::uint32_t> overdue_sequences_;
   std::uint32_t reply_sequence_ = 0;  ///< VISCA over IP: the sequence number of the datagram being read
   // What the camera's dialect turned out to be, kept across reconnections (the camera stays the same). Atomic: read
   // by capabilities() and diagnostics() on other threads.
