@@ -5,8 +5,9 @@
  *
  * A device that answers every request in 120 ms, or as five PTZOptics G2 cameras did on the wire (pan-tilt positions in
  * 88 to 123 ms, zoom in 26 to 58 ms, ACKs in 28 to 89 ms), starts, keeps its link through goals and reaches them; the
- * deadlines it taught show in diagnostics; and once it goes silent its link is still lost, judged by a state deadline
- * that stays bounded. Before, its first answer later than 100 ms was dropped as late and the drain after it threw the
+ * deadlines it taught show in diagnostics; one request lost on the way does not lose its link (the state deadline is
+ * three reply deadlines and a poll period: under a loaded CI machine, one answer past the ceiling cost a goal when it
+ * was two); and once it goes silent its link is still lost, judged by a state deadline that stays bounded. Before, its first answer later than 100 ms was dropped as late and the drain after it threw the
  * next away: such a device never started ("no answer ... within 10.0 s"), or lost its link in the middle of goals.
  */
 #include <gtest/gtest.h>
@@ -42,6 +43,8 @@ public:
   /// How long the device thinks over each request (s): SimFaults::reply_delay.
   virtual void setReplyDelay(double seconds) = 0;
   virtual void setSilent(bool silent) = 0;
+  /// The next request is lost on its way to the device (it never answers it).
+  virtual void loseNextRequest() = 0;
   /// Zoom 2 where the device has a zoom.
   virtual AxisValues goal(double pan, double tilt) const = 0;
 };
@@ -80,6 +83,10 @@ public:
   void setSilent(bool silent) override
   {
     emulator_->port().setSilent(silent);
+  }
+  void loseNextRequest() override
+  {
+    emulator_->port().ignoreNextInputs(1);
   }
   AxisValues goal(double pan, double tilt) const override
   {
@@ -158,7 +165,7 @@ std::string startUp(DeviceBackend& backend)
 
 /**
  * \brief Checks what the backend learnt, against the bounds its diagnostics give: the reply deadline covers the
- * \p longest answer (s) and stays within its bounds (the floor, twice the floor), and the state deadline is two reply
+ * \p longest answer (s) and stays within its bounds (the floor, twice the floor), and the state deadline is three reply
  * deadlines and a poll period (never below the configured 0.25 s).
  */
 void expectLearnt(const DeviceBackend& backend, double longest)
@@ -174,9 +181,9 @@ void expectLearnt(const DeviceBackend& backend, double longest)
   const std::string answers = diagnosticValue(backend, "answer time median / longest (ms, latest answers)");
   EXPECT_GE(numberIn(answers, " / "), 1e3 * longest - 1.0) << answers;
   const DeviceSession& session = backend.session();
-  EXPECT_NEAR(session.stateDeadline(), std::max(0.25, 2.0 * learnt + session.config().poll_period), 0.01);
+  EXPECT_NEAR(session.stateDeadline(), std::max(0.25, 3.0 * learnt + session.config().poll_period), 0.01);
   EXPECT_NEAR(numberIn(diagnosticValue(backend, "state deadline (s)")), session.stateDeadline(), 1e-3);
-  EXPECT_LE(session.stateDeadline(), 2.0 * ceiling + session.config().poll_period + 2e-3);
+  EXPECT_LE(session.stateDeadline(), 3.0 * ceiling + session.config().poll_period + 3e-3);
 }
 
 class SlowDevices : public ::testing::TestWithParam<SlowCase>
@@ -197,6 +204,17 @@ TEST_P(SlowDevices, AnsweringEveryRequestIn120msItStartsReachesGoalsAndWhenSilen
   }
   EXPECT_EQ(backend->sample().link_losses, 0u) << backend->lastLinkLoss();
   expectLearnt(*backend, SLOW_ANSWER);
+
+  // One request lost on the way (a dropped datagram, a frame lost on the line): its reply deadline, the drain, a poll
+  // and the next answer pass without a word from the device, within the state deadline: the link stays up.
+  const auto timeouts = [&] { return numberIn(diagnosticValue(*backend, "reply timeouts")); };
+  const auto states = [&] { return numberIn(diagnosticValue(*backend, "state reports")); };
+  const double timeouts_before = timeouts();
+  device->loseNextRequest();
+  ASSERT_TRUE(waitUntil([&] { return timeouts() > timeouts_before; }, WAIT));
+  const double states_after_loss = states();
+  ASSERT_TRUE(waitUntil([&] { return states() >= states_after_loss + 3.0; }, WAIT));
+  EXPECT_EQ(backend->sample().link_losses, 0u) << "one lost request lost the link: " << backend->lastLinkLoss();
 
   // Gone silent: still lost, after the state deadline learnt (named in the loss), which stays bounded.
   const double deadline = backend->session().stateDeadline();

@@ -289,7 +289,7 @@ double DeviceSession::stateDeadline() const
 void DeviceSession::replyDeadlineChanged(double reply_deadline)
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  supervisor_.setStateTimeout(std::max(config_.state_timeout, 2.0 * reply_deadline + config_.poll_period));
+  supervisor_.setStateTimeout(std::max(config_.state_timeout, 3.0 * reply_deadline + config_.poll_period));
 }
 
 void DeviceSession::setCapabilities(const Capabilities& capabilities)

@@ -288,7 +288,7 @@ void PtyPort::run()
         arrived = std::move(input_.front());
         input_.pop_front();
       }
-      if (!silent())
+      if (takesInput())
       {
         handlers_.on_bytes(arrived.bytes.data(), arrived.bytes.size(), arrived.at);
       }

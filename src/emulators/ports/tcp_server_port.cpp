@@ -73,7 +73,7 @@ void TcpServerPort::read(const ClientPtr& client)
           close(client);
           return;
         }
-        if (!silent())
+        if (takesInput())
         {
           on(*client, [&] { handlers_.on_bytes(client->buffer.data(), size, SteadyClock::now()); });
         }

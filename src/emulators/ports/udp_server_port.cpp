@@ -39,7 +39,7 @@ void UdpServerPort::receive()
                                {
                                  return;
                                }
-                               if (!error && !silent())
+                               if (!error && takesInput())
                                {
                                  peer_ = sender_;
                                  has_peer_ = true;

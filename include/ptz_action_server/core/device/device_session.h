@@ -200,12 +200,13 @@ public:
   void reportAlive();
   /**
    * \brief The protocol's reply deadline is now \p reply_deadline s (TransactionChannel learns it from the device's
-   * answers): the state deadline becomes max(state_timeout, 2 * reply_deadline + poll_period).
+   * answers): the state deadline becomes max(state_timeout, 3 * reply_deadline + poll_period).
    *
-   * A request may take its reply deadline and, when it is overdue, the drain after it (as long again) before the next
-   * request goes out, and the next poll may wait a poll period: a device that answers within its reply deadline never
-   * loses its link. The shipped state_timeout of 0.25 s is exactly that for the 0.1 s reply deadline and 0.05 s poll
-   * period they ship with. Any thread (the channel's constructor, then the I/O thread).
+   * One answer lost outright (a dropped datagram, a frame lost on the line, an answer past the ceiling under load)
+   * costs its reply deadline, the drain after it (as long again, nothing goes out meanwhile), up to a poll period
+   * before the next request, and that request's answer (within a third reply deadline): such a loss never loses the
+   * link; a device silent for longer does. With two reply deadlines a single lost answer from a device answering in
+   * 120 ms lost the link (and the goal under way). Any thread (the channel's constructor, then the I/O thread).
    */
   void replyDeadlineChanged(double reply_deadline);
   /// The protocol's framing threw \p bytes received bytes away (too long, unframed, incomplete): counted.

@@ -112,6 +112,11 @@ public:
   {
     return silent_;
   }
+  /// The next \p count arrivals of bytes (a request each, as clients write them) are ignored: requests lost on the way.
+  void ignoreNextInputs(std::uint64_t count)
+  {
+    inputs_to_ignore_ = count;
+  }
   void setGarbleRatio(double ratio);
   std::uint64_t bytesGarbled() const
   {
@@ -131,11 +136,29 @@ public:
   }
 
 protected:
+  /// Whether the bytes that just arrived reach the device: not while silent, nor while inputs are to be ignored.
+  bool takesInput()
+  {
+    if (silent_)
+    {
+      return false;
+    }
+    std::uint64_t ignored = inputs_to_ignore_.load();
+    while (ignored > 0)
+    {
+      if (inputs_to_ignore_.compare_exchange_weak(ignored, ignored - 1))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
   /// Replaces the configured share of \p bytes with random ones. One thread at a time.
   void garble(std::uint8_t* bytes, std::size_t size);
 
 private:
   std::atomic<bool> silent_{ false };
+  std::atomic<std::uint64_t> inputs_to_ignore_{ 0 };
   std::atomic<double> garble_ratio_{ 0.0 };
   std::atomic<bool> endless_{ false };
   std::atomic<std::uint8_t> endless_filler_{ 'A' };
