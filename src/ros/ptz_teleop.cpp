@@ -71,52 +71,69 @@ void TeleopGoals::execute(const std::vector<TeleopCommand>& commands)
 {
   for (const TeleopCommand& command : commands)
   {
-    switch (command.type)
+    if (command.type != TeleopCommand::Type::STOP)
     {
-      case TeleopCommand::Type::VELOCITY:
-        if (!velocity_client_.isServerConnected())
-        {
-          ROS_WARN_THROTTLE(5.0, "ptz teleop: %s is not connected yet",
-                            node_handle_.resolveName("move_ptz/velocity").c_str());
-        }
-        velocity_client_.sendGoal(makePtzGoal(command.velocity[PAN], command.velocity[TILT], command.velocity[ZOOM]));
-        sent_stamp_ = ros::Time::now();
-        sent_ = Sent::VELOCITY;
-        last_command_ = formatText("velocity pan %+.2f tilt %+.2f zoom %+.2f", command.velocity[PAN],
-                                   command.velocity[TILT], command.velocity[ZOOM]);
-        break;
-      case TeleopCommand::Type::STOP:
-        // A stop often comes a millisecond after its goal, before the node's first status of it: cancelGoal() would
-        // put the handle where a status list sent before the goal reached the node reads as "goal LOST" (and its
-        // result then comes to a handle already DONE). A cancel by time leaves the handle waiting for its first
-        // status, and cancels the same goal (and only older ones, which it preempted).
-        if (sent_ == Sent::VELOCITY && !velocity_client_.getState().isDone())
-        {
-          velocity_client_.cancelGoalsAtAndBeforeTime(sent_stamp_);
-        }
-        else if (sent_ == Sent::PRESET && !preset_client_.getState().isDone())
-        {
-          preset_client_.cancelGoalsAtAndBeforeTime(sent_stamp_);
-        }
-        sent_ = Sent::NONE;
-        last_command_ = "stop";
-        break;
-      case TeleopCommand::Type::PRESET: {
-        PtzPresetGoal goal;
-        goal.name = command.name.empty() ? savedPreset(command.preset_index) : command.name;
-        if (goal.name.empty())
-        {
-          last_command_ = formatText("no saved preset %d", command.preset_index + 1);
-          break;
-        }
-        preset_client_.sendGoal(goal);
-        sent_stamp_ = ros::Time::now();
-        sent_ = Sent::PRESET;
-        last_command_ = "preset " + goal.name;
-        break;
-      }
+      send(command);
+      continue;
     }
+    held_.reset();
+    // A stop often comes a millisecond after its goal, before the node's first status of it: cancelGoal() would put
+    // the handle where a status list sent before the goal reached the node reads as "goal LOST" (and its result then
+    // comes to a handle already DONE). A cancel by time leaves the handle waiting for its first status, and cancels
+    // the same goal (and only older ones, which it preempted).
+    if (sent_ == Sent::VELOCITY && !velocity_client_.getState().isDone())
+    {
+      velocity_client_.cancelGoalsAtAndBeforeTime(sent_stamp_);
+    }
+    else if (sent_ == Sent::PRESET && !preset_client_.getState().isDone())
+    {
+      preset_client_.cancelGoalsAtAndBeforeTime(sent_stamp_);
+    }
+    sent_ = Sent::NONE;
+    last_command_ = "stop";
   }
+}
+
+void TeleopGoals::sendHeld()
+{
+  if (held_)
+  {
+    const TeleopCommand command = *held_;
+    send(command);
+  }
+}
+
+void TeleopGoals::send(const TeleopCommand& command)
+{
+  const bool velocity = command.type == TeleopCommand::Type::VELOCITY;
+  if (!(velocity ? velocity_client_.isServerConnected() : preset_client_.isServerConnected()))
+  {
+    held_ = command;
+    ROS_WARN_THROTTLE(5.0, "ptz teleop: %s is not connected yet: the command waits for it",
+                      node_handle_.resolveName(velocity ? "move_ptz/velocity" : "move_ptz/preset").c_str());
+    return;
+  }
+  held_.reset();
+  if (velocity)
+  {
+    velocity_client_.sendGoal(makePtzGoal(command.velocity[PAN], command.velocity[TILT], command.velocity[ZOOM]));
+    sent_stamp_ = ros::Time::now();
+    sent_ = Sent::VELOCITY;
+    last_command_ = formatText("velocity pan %+.2f tilt %+.2f zoom %+.2f", command.velocity[PAN],
+                               command.velocity[TILT], command.velocity[ZOOM]);
+    return;
+  }
+  PtzPresetGoal goal;
+  goal.name = command.name.empty() ? savedPreset(command.preset_index) : command.name;
+  if (goal.name.empty())
+  {
+    last_command_ = formatText("no saved preset %d", command.preset_index + 1);
+    return;
+  }
+  preset_client_.sendGoal(goal);
+  sent_stamp_ = ros::Time::now();
+  sent_ = Sent::PRESET;
+  last_command_ = "preset " + goal.name;
 }
 
 bool TeleopGoals::waitForServers(double timeout)
@@ -170,6 +187,7 @@ PtzTeleop::PtzTeleop(const ros::NodeHandle& node_handle, const TeleopConfig& con
   const double period = std::min(0.05, config.stale_timeout / 5.0);
   stale_timer_ = node_handle_.createSteadyTimer(ros::WallDuration(period), [this](const ros::SteadyTimerEvent&) {
     goals_.execute(controller_.onTick(clock_.now()));
+    goals_.sendHeld();
   });
 }
 

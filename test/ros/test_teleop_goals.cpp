@@ -1,9 +1,14 @@
 /**
  * \file
- * \brief TeleopGoals against the sim node, a stick tapped at 50 Hz: each goal's stop comes a moment after the goal,
- * before the node's first status of it, and no goal of the teleop's action client may go LOST for that.
+ * \brief TeleopGoals against the sim node: a stick deflected before the teleop's action client is connected drives
+ * the camera once it is; and a stick tapped at 50 Hz, each goal's stop coming a moment after the goal, before the
+ * node's first status of it, loses no goal of the teleop's action client (none goes LOST).
  */
 #include <atomic>
+#include <cmath>
+#include <functional>
+#include <mutex>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -11,10 +16,12 @@
 #include <ros/console.h>
 #include <ros/ros.h>
 
+#include "ptz_action_server/PtzState.h"
 #include "ptz_action_server/ros/ptz_teleop.h"
 
 namespace
 {
+using ptz_action_server::PtzState;
 using ptz_action_server::TeleopCommand;
 using ptz_action_server::TeleopGoals;
 
@@ -41,6 +48,50 @@ public:
   std::atomic<int> lost{ 0 };
   std::atomic<int> result_after_done{ 0 };
 };
+
+TEST(TeleopGoalsTest, AStickDeflectedBeforeTheActionClientIsConnectedDrivesOnceItIs)
+{
+  ros::CallbackQueue queue;
+  ros::NodeHandle node_handle;
+  node_handle.setCallbackQueue(&queue);
+  std::mutex mutex;
+  std::optional<double> pan;
+  const ros::Subscriber states = node_handle.subscribe<PtzState>("ptz_state", 10, [&](const PtzState::ConstPtr& state) {
+    std::lock_guard<std::mutex> lock(mutex);
+    pan = state->pan;
+  });
+  ros::AsyncSpinner spinner(1, &queue);
+  spinner.start();
+  const auto latestPan = [&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    return pan;
+  };
+  const auto waitFor = [](const std::function<bool()>& condition, double seconds, const std::function<void()>& tick) {
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
+    ros::WallRate rate(20.0);  // the teleop's stale-joystick timer
+    while (!condition() && ros::WallTime::now() < deadline)
+    {
+      tick();
+      rate.sleep();
+    }
+    return condition();
+  };
+  ASSERT_TRUE(waitFor([&] { return latestPan().has_value(); }, 60.0, [] {})) << "no ptz_state from the node";
+  const double start = *latestPan();
+
+  // The node is up, the joystick deflected: the teleop's fresh action client connects only a moment later. A goal
+  // published before then went nowhere, and a held stick sends nothing new, so the camera never moved.
+  TeleopGoals teleop(node_handle);
+  TeleopCommand move;
+  move.type = TeleopCommand::Type::VELOCITY;
+  move.velocity = { 0.3, 0.0, 0.0 };
+  teleop.execute({ move });
+  EXPECT_TRUE(waitFor([&] { return std::abs(*latestPan() - start) > 0.05; }, 30.0, [&] { teleop.sendHeld(); }))
+      << "the stick deflected before the connection never drove the camera (pan stayed at " << start << " rad)";
+  EXPECT_EQ(teleop.lastCommand(), "velocity pan +0.30 tilt +0.00 zoom +0.00");
+  teleop.execute({ TeleopCommand{} });
+  EXPECT_TRUE(teleop.waitUntilDone(30.0)) << "the stop never ended the goal";
+}
 
 TEST(TeleopGoalsTest, AStopRightAfterItsGoalLosesNoGoal)
 {

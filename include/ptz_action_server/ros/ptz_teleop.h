@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <actionlib/client/simple_action_client.h>
@@ -41,7 +42,14 @@ public:
   TeleopGoals(const TeleopGoals&) = delete;
   TeleopGoals& operator=(const TeleopGoals&) = delete;
 
+  /**
+   * \brief Sends \p commands in order. A velocity or preset command whose action server is not connected yet is held,
+   * not sent (a goal published before its subscriber connects is lost, and a held stick sends nothing new): sendHeld()
+   * sends it once the server is there; a later command replaces it, and a stop drops it.
+   */
   void execute(const std::vector<TeleopCommand>& commands);
+  /// Sends the command held by execute() if its action server is now connected (the teleop's 20 Hz timer calls it).
+  void sendHeld();
 
   /// Waits up to \p timeout s for both action servers; false if one is missing.
   bool waitForServers(double timeout);
@@ -57,6 +65,8 @@ public:
 private:
   /// The name of the preset_index-th saved preset, or "" (logged) if there is none.
   std::string savedPreset(int preset_index) const;
+  /// Sends \p command, or holds it while its action server is not connected (logged, throttled).
+  void send(const TeleopCommand& command);
 
   enum class Sent
   {
@@ -69,6 +79,7 @@ private:
   Sent sent_ = Sent::NONE;
   ros::Time sent_stamp_;  ///< the time sendGoal() of the last goal returned: its goal_id stamp is no later
   std::string last_command_;
+  std::optional<TeleopCommand> held_;  ///< a velocity or preset command waiting for its action server
   actionlib::SimpleActionClient<PtzAction> velocity_client_;
   actionlib::SimpleActionClient<PtzPresetAction> preset_client_;
 };
