@@ -7,8 +7,9 @@
  * 88 to 123 ms, zoom in 26 to 58 ms, ACKs in 28 to 89 ms), starts, keeps its link through goals and reaches them; the
  * deadlines it taught show in diagnostics; one request lost on the way does not lose its link (the state deadline is
  * three reply deadlines and a poll period: under a loaded CI machine, one answer past the ceiling cost a goal when it
- * was two); and once it goes silent its link is still lost, judged by a state deadline that stays bounded. Before, its first answer later than 100 ms was dropped as late and the drain after it threw the
- * next away: such a device never started ("no answer ... within 10.0 s"), or lost its link in the middle of goals.
+ * was two); and once it goes silent its link is still lost, judged by a state deadline that stays bounded. Before, its
+ * first answer later than 100 ms was dropped as late and the drain after it threw the next away: such a device never
+ * started ("no answer ... within 10.0 s"), or lost its link in the middle of goals.
  */
 #include <gtest/gtest.h>
 
